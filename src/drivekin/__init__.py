@@ -1,0 +1,17 @@
+"""drivekin: robot drivetrain kinematics with WPILib 2027 names and numbers, on typed
+Cython kernels.
+
+Units are SI throughout (m, m/s, m/s², rad, rad/s, rad/s², s); x forward, y left,
+angles counter-clockwise positive.
+"""
+from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Pose2d",
+    "Rotation2d",
+    "Transform2d",
+    "Translation2d",
+    "Twist2d",
+]

@@ -1,0 +1,252 @@
+# Kernels: `cdef inline ... noexcept nogil` on C doubles, defined here once so every
+# module that cimports them gets them inlined. No Python objects, no numpy.
+# Output parameters come last and are marked OUT. Formulas follow WPILib 2027
+# (see ../shared/reference/wpilib-kinematics.md); the comments say where they are subtle.
+
+from libc.math cimport atan2, cos, fabs, hypot, sin
+from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
+
+# ---------------------------------------------------------------------------------------
+# Java Math.max/min: NaN wins (C fmax/fmin would drop it and change which branch runs).
+
+cdef inline double jmax(double a, double b) noexcept nogil:
+    if a != a:
+        return a
+    if b != b:
+        return b
+    return a if a >= b else b
+
+cdef inline double jmin(double a, double b) noexcept nogil:
+    if a != a:
+        return a
+    if b != b:
+        return b
+    return a if a <= b else b
+
+# ---------------------------------------------------------------------------------------
+# Rotation2d
+
+cdef inline rot2_t rot_xy(double x, double y) noexcept nogil:
+    # Rotation2d(x, y): normalise; a vector shorter than 1e-6 (or NaN) gives the identity.
+    cdef rot2_t r
+    cdef double m = hypot(x, y)
+    if m > 1e-6:
+        r.c = x / m
+        r.s = y / m
+    else:
+        r.c = 1.0
+        r.s = 0.0
+    return r
+
+cdef inline rot2_t rot_rad(double theta) noexcept nogil:
+    cdef rot2_t r
+    r.c = cos(theta)
+    r.s = sin(theta)
+    return r
+
+cdef inline double rot_radians(rot2_t r) noexcept nogil:
+    return atan2(r.s, r.c)
+
+cdef inline rot2_t rot_plus(rot2_t a, rot2_t b) noexcept nogil:
+    # a.rotateBy(b), re-normalised through the (x, y) constructor as in WPILib.
+    return rot_xy(a.c * b.c - a.s * b.s, a.c * b.s + a.s * b.c)
+
+cdef inline rot2_t rot_neg(rot2_t a) noexcept nogil:
+    return rot_xy(a.c, -a.s)
+
+cdef inline rot2_t rot_minus(rot2_t a, rot2_t b) noexcept nogil:
+    return rot_plus(a, rot_neg(b))
+
+cdef inline rot2_t rot_times(rot2_t a, double k) noexcept nogil:
+    # Scales the *wrapped* angle (2027): 270 deg * 0.5 = -45 deg.
+    return rot_rad(rot_radians(a) * k)
+
+cdef inline rot2_t rot_interp(rot2_t a, rot2_t b, double t) noexcept nogil:
+    # Shortest way round, t not clamped (2027).
+    return rot_plus(a, rot_times(rot_minus(b, a), t))
+
+cdef inline bint rot_eq(rot2_t a, rot2_t b) noexcept nogil:
+    return hypot(a.c - b.c, a.s - b.s) < 1e-9
+
+# ---------------------------------------------------------------------------------------
+# Translation2d
+
+cdef inline vec2_t vec(double x, double y) noexcept nogil:
+    cdef vec2_t v
+    v.x = x
+    v.y = y
+    return v
+
+cdef inline vec2_t vec_rotate(vec2_t v, rot2_t r) noexcept nogil:
+    return vec(v.x * r.c - v.y * r.s, v.x * r.s + v.y * r.c)
+
+cdef inline bint vec_eq(vec2_t a, vec2_t b) noexcept nogil:
+    return fabs(a.x - b.x) < 1e-9 and fabs(a.y - b.y) < 1e-9
+
+# ---------------------------------------------------------------------------------------
+# Pose2d / Transform2d (both pose2_t)
+
+cdef inline pose2_t pose(vec2_t t, rot2_t r) noexcept nogil:
+    cdef pose2_t p
+    p.t = t
+    p.r = r
+    return p
+
+cdef inline pose2_t pose_transform_by(pose2_t p, pose2_t tr) noexcept nogil:
+    cdef vec2_t d = vec_rotate(tr.t, p.r)
+    return pose(vec(p.t.x + d.x, p.t.y + d.y), rot_plus(tr.r, p.r))
+
+cdef inline pose2_t pose_relative_to(pose2_t p, pose2_t o) noexcept nogil:
+    # Transform2d(o, p): the pose of p seen from o.
+    return pose(vec_rotate(vec(p.t.x - o.t.x, p.t.y - o.t.y), rot_neg(o.r)),
+                rot_minus(p.r, o.r))
+
+cdef inline pose2_t transform_inverse(pose2_t tr) noexcept nogil:
+    cdef rot2_t ninv = rot_neg(tr.r)
+    return pose(vec_rotate(vec(-tr.t.x, -tr.t.y), ninv), ninv)
+
+cdef inline pose2_t pose_times(pose2_t p, double k) noexcept nogil:
+    return pose(vec(p.t.x * k, p.t.y * k), rot_times(p.r, k))
+
+# ---------------------------------------------------------------------------------------
+# Twist2d.exp / Transform2d.log
+
+cdef inline pose2_t twist_exp(double dx, double dy, double dtheta) noexcept nogil:
+    cdef double st = sin(dtheta), ct = cos(dtheta), s, c
+    if fabs(dtheta) < 1e-9:
+        # Series: without it dtheta = 1e-10 would give c = 0 exactly (cos rounds to 1).
+        s = 1.0 - dtheta * dtheta / 6.0
+        c = 0.5 * dtheta
+    else:
+        s = st / dtheta
+        c = (1.0 - ct) / dtheta
+    return pose(vec(dx * s - dy * c, dx * c + dy * s), rot_xy(ct, st))
+
+cdef inline twist2_t transform_log(pose2_t tr) noexcept nogil:
+    cdef twist2_t tw
+    cdef double theta = rot_radians(tr.r)
+    cdef double h = 0.5 * theta
+    cdef double cm1 = tr.r.c - 1.0
+    cdef double k, m
+    # The branch tests cos - 1, not theta: active up to |theta| ~ 4.5e-5.
+    if fabs(cm1) < 1e-9:
+        k = 1.0 - theta * theta / 12.0
+    else:
+        k = -(h * tr.r.s) / cm1
+    # WPILib rotates by the normalised (k, -h) and then scales by its length.
+    m = hypot(k, h)
+    cdef vec2_t part = vec_rotate(tr.t, rot_xy(k, -h))
+    tw.dx = part.x * m
+    tw.dy = part.y * m
+    tw.dtheta = theta
+    return tw
+
+# ---------------------------------------------------------------------------------------
+# ChassisVelocities
+
+cdef inline vec3_t chassis_discretize(double vx, double vy, double omega, double dt) noexcept nogil:
+    # omega*dt goes through a Rotation2d, so it is wrapped; dt = 0 divides by zero (as WPILib).
+    cdef vec3_t out
+    cdef twist2_t tw = transform_log(pose(vec(vx * dt, vy * dt), rot_rad(omega * dt)))
+    out.x = tw.dx / dt
+    out.y = tw.dy / dt
+    out.z = tw.dtheta / dt
+    return out
+
+# ---------------------------------------------------------------------------------------
+# Swerve module loops. Module i sits at (rx[i], ry[i]) relative to the centre of rotation.
+# Headings (hc, hs) are the kinematics object's heading memory, read and written here.
+
+cdef inline void swerve_ik(Py_ssize_t n, const double* rx, const double* ry,
+                           double vx, double vy, double omega,
+                           double* hc, double* hs,                  # IN/OUT heading memory
+                           double* speed, double* oc, double* os    # OUT
+                           ) noexcept nogil:
+    cdef Py_ssize_t i
+    cdef double x, y, v
+    cdef rot2_t r
+    if vx == 0.0 and vy == 0.0 and omega == 0.0:
+        # Exact zero: report the remembered headings and leave them alone.
+        for i in range(n):
+            speed[i] = 0.0
+            oc[i] = hc[i]
+            os[i] = hs[i]
+        return
+    for i in range(n):
+        # Row pair of the 2N x 3 matrix [1, 0, -ry; 0, 1, rx], summed in matrix order so
+        # that a non-finite input spreads exactly as it does in WPILib (0 * inf = NaN).
+        x = vx + 0.0 * vy + (-ry[i]) * omega
+        y = 0.0 * vx + vy + rx[i] * omega
+        v = hypot(x, y)
+        if v > 1e-6:
+            r = rot_xy(x, y)
+            hc[i] = r.c
+            hs[i] = r.s
+        speed[i] = v
+        oc[i] = hc[i]
+        os[i] = hs[i]
+
+cdef inline void swerve_ik_accel(Py_ssize_t n, const double* rx, const double* ry,
+                                 double ax, double ay, double omega, double alpha,
+                                 double* acc, double* oc, double* os   # OUT
+                                 ) noexcept nogil:
+    cdef Py_ssize_t i
+    cdef double x, y, a, w2 = omega * omega
+    cdef rot2_t r
+    if ax == 0.0 and ay == 0.0 and alpha == 0.0:
+        # WPILib skips the centripetal term here even when omega != 0.
+        for i in range(n):
+            acc[i] = 0.0
+            oc[i] = 1.0
+            os[i] = 0.0
+        return
+    for i in range(n):
+        # Rows [1, 0, -rx, -ry; 0, 1, -ry, rx] times [ax, ay, omega^2, alpha].
+        x = ax + 0.0 * ay + (-rx[i]) * w2 + (-ry[i]) * alpha
+        y = 0.0 * ax + ay + (-ry[i]) * w2 + rx[i] * alpha
+        a = hypot(x, y)
+        acc[i] = a
+        if a > 1e-6:
+            r = rot_xy(x, y)
+            oc[i] = r.c
+            os[i] = r.s
+        else:
+            # No heading memory for accelerations: zero magnitude points along +x.
+            oc[i] = 1.0
+            os[i] = 0.0
+
+cdef inline void forward_solve(Py_ssize_t rows, Py_ssize_t n, const double* f,
+                               const double* mag, const double* c, const double* s,
+                               double* out                               # OUT, rows values
+                               ) noexcept nogil:
+    # out = F . w with w = [mag_i cos_i, mag_i sin_i, ...]; F is rows x 2n, row-major
+    # (the pseudo-inverse of the inverse-kinematics matrix, fixed at CoR = 0).
+    cdef Py_ssize_t k, i
+    cdef double acc
+    cdef const double* row
+    for k in range(rows):
+        row = f + k * 2 * n
+        acc = 0.0
+        for i in range(n):
+            acc = acc + row[2 * i] * (mag[i] * c[i])
+            acc = acc + row[2 * i + 1] * (mag[i] * s[i])
+        out[k] = acc
+
+cdef inline double max_abs(Py_ssize_t n, const double* v, Py_ssize_t stride) noexcept nogil:
+    # max |v_i| from 0 with Java Math.max semantics (a NaN speed makes the result NaN).
+    cdef Py_ssize_t i
+    cdef double r = 0.0
+    for i in range(n):
+        r = jmax(r, fabs(v[i * stride]))
+    return r
+
+cdef inline double desaturate_scale5(double real_max, double dvx, double dvy, double domega,
+                                     double max_module, double max_trans, double max_rot) noexcept nogil:
+    # Joystick normalisation: may scale down even when no module is saturated.
+    # Returns the multiplier (1.0 = unchanged).
+    if max_trans == 0.0 or max_rot == 0.0 or real_max == 0.0:
+        return 1.0
+    cdef double kt = hypot(dvx, dvy) / max_trans
+    cdef double kr = fabs(domega) / max_rot
+    cdef double k = jmax(kt, kr)
+    return jmin(k * max_module / real_max, 1.0)

@@ -1,0 +1,27 @@
+# Plain C value types shared by every kernel and value class. SI units throughout:
+# metres, seconds, radians. Frame: x forward, y left, angles counter-clockwise positive.
+
+cdef struct vec2_t:
+    double x                    # m (or m/s, m/s^2 when it holds a velocity/acceleration)
+    double y                    # m
+
+cdef struct rot2_t:
+    # A rotation is kept as its unit vector, as WPILib 2027 does; the angle is derived.
+    double c                    # cos(angle)
+    double s                    # sin(angle)
+
+cdef struct pose2_t:
+    # Used both for poses and for transforms (same layout, different meaning).
+    vec2_t t                    # translation, m
+    rot2_t r                    # rotation
+
+cdef struct twist2_t:
+    double dx                   # m, along the start frame's x
+    double dy                   # m, along the start frame's y
+    double dtheta               # rad
+
+cdef struct vec3_t:
+    # Chassis-level 3-vector: (vx m/s, vy m/s, omega rad/s) or (ax, ay m/s^2, alpha rad/s^2).
+    double x
+    double y
+    double z

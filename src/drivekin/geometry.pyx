@@ -1,0 +1,682 @@
+# cython: freethreading_compatible = False
+"""2-D geometry with WPILib 2027 semantics: Translation2d, Rotation2d, Pose2d,
+Transform2d and Twist2d.
+
+Units: metres and radians. Frame: x forward, y left, angles counter-clockwise positive.
+All classes except :class:`Twist2d` are immutable. Equality uses WPILib's tolerances
+(1e-9), so the immutable classes are deliberately unhashable.
+"""
+cimport cython
+from libc.math cimport M_PI, fabs, hypot
+
+import numpy as np
+
+from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t
+from drivekin._kernels cimport (
+    pose, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
+    rot_neg, rot_plus, rot_rad, rot_radians, rot_times, rot_xy, transform_inverse,
+    transform_log, twist_exp, vec, vec_eq, vec_rotate,
+)
+from drivekin._format import f2
+
+cdef extern from *:
+    """
+    /* Cython extension types are static types whose dict cannot be assigned from
+       Python; WPILib's constants (Rotation2d.kZero, ...) are added here once. */
+    static int drivekin_set_type_attr(PyObject *t, PyObject *name, PyObject *v) {
+        int r = PyDict_SetItem(((PyTypeObject *)t)->tp_dict, name, v);
+        PyType_Modified((PyTypeObject *)t);
+        return r;
+    }
+    """
+    int drivekin_set_type_attr(object t, object name, object v) except -1
+
+cdef double DEG = 180.0 / M_PI
+
+
+# ---------------------------------------------------------------------------------------
+@cython.freelist(64)
+cdef class Translation2d:
+    """Translation2d(x=0.0, y=0.0) or Translation2d(distance, angle)
+
+    A point or vector in the plane, in metres.
+
+    ``Translation2d(x, y)`` takes the components in m; ``Translation2d(distance, angle)``
+    takes a length in m and a :class:`Rotation2d` direction. Immutable; ``==`` compares
+    each component within 1e-9 m.
+    """
+
+    def __init__(self, double x=0.0, y=0.0):
+        cdef Rotation2d a
+        if isinstance(y, Rotation2d):
+            a = <Rotation2d>y
+            self.v = vec(x * a.r.c, x * a.r.s)
+        else:
+            self.v = vec(x, y)
+
+    @property
+    def x(self):
+        """X component, m."""
+        return self.v.x
+
+    @property
+    def y(self):
+        """Y component, m."""
+        return self.v.y
+
+    def getX(self):
+        """Return the x component, m."""
+        return self.v.x
+
+    def getY(self):
+        """Return the y component, m."""
+        return self.v.y
+
+    def getNorm(self):
+        """Return the distance from the origin, m."""
+        return hypot(self.v.x, self.v.y)
+
+    def getSquaredNorm(self):
+        """Return the squared distance from the origin, m²."""
+        return self.v.x * self.v.x + self.v.y * self.v.y
+
+    def getDistance(self, Translation2d other not None):
+        """Return the distance to ``other``, m."""
+        return hypot(other.v.x - self.v.x, other.v.y - self.v.y)
+
+    def getSquaredDistance(self, Translation2d other not None):
+        """Return the squared distance to ``other``, m²."""
+        cdef double dx = other.v.x - self.v.x, dy = other.v.y - self.v.y
+        return dx * dx + dy * dy
+
+    def getAngle(self):
+        """Return the direction of this vector as a Rotation2d, or ``None`` when its
+        length is 1e-6 m or less (WPILib 2027 returns an empty Optional)."""
+        if hypot(self.v.x, self.v.y) > 1e-6:
+            return new_rotation(rot_xy(self.v.x, self.v.y))
+        return None
+
+    def rotateBy(self, Rotation2d other not None):
+        """Return this vector rotated counter-clockwise by ``other`` about the origin."""
+        return new_translation(vec_rotate(self.v, other.r))
+
+    def rotateAround(self, Translation2d other not None, Rotation2d rot not None):
+        """Return this point rotated by ``rot`` about the point ``other``."""
+        cdef vec2_t d = vec_rotate(vec(self.v.x - other.v.x, self.v.y - other.v.y), rot.r)
+        return new_translation(vec(d.x + other.v.x, d.y + other.v.y))
+
+    def plus(self, Translation2d other not None):
+        """Return the component-wise sum, m."""
+        return new_translation(vec(self.v.x + other.v.x, self.v.y + other.v.y))
+
+    def minus(self, Translation2d other not None):
+        """Return the component-wise difference, m."""
+        return new_translation(vec(self.v.x - other.v.x, self.v.y - other.v.y))
+
+    def unaryMinus(self):
+        """Return the vector pointing the other way."""
+        return new_translation(vec(-self.v.x, -self.v.y))
+
+    def times(self, double scalar):
+        """Return the vector scaled by ``scalar``."""
+        return new_translation(vec(self.v.x * scalar, self.v.y * scalar))
+
+    def div(self, double scalar):
+        """Return the vector divided by ``scalar`` (no zero guard, as in WPILib)."""
+        return new_translation(vec(self.v.x / scalar, self.v.y / scalar))
+
+    def dot(self, Translation2d other not None):
+        """Return the dot product, m²."""
+        return self.v.x * other.v.x + self.v.y * other.v.y
+
+    def cross(self, Translation2d other not None):
+        """Return the z component of the cross product, m² (x·other.y − y·other.x)."""
+        return self.v.x * other.v.y - self.v.y * other.v.x
+
+    def nearest(self, translations):
+        """Return the element of ``translations`` closest to this point (first on ties)."""
+        return min(translations, key=self.getDistance)
+
+    def interpolate(self, Translation2d endValue not None, double t):
+        """Return the linear interpolation towards ``endValue``; ``t`` is not clamped."""
+        return new_translation(vec(self.v.x + (endValue.v.x - self.v.x) * t,
+                                   self.v.y + (endValue.v.y - self.v.y) * t))
+
+    def toVector(self):
+        """Return ``numpy.array([x, y])``."""
+        return np.array([self.v.x, self.v.y])
+
+    def __add__(self, other):
+        if isinstance(other, Translation2d):
+            return self.plus(other)
+        return NotImplemented
+
+    def __sub__(self, other):
+        if isinstance(other, Translation2d):
+            return self.minus(other)
+        return NotImplemented
+
+    def __neg__(self):
+        return self.unaryMinus()
+
+    def __mul__(self, other):
+        try:
+            return self.times(other)
+        except TypeError:
+            return NotImplemented
+
+    def __rmul__(self, other):
+        return self.__mul__(other)
+
+    def __truediv__(self, other):
+        try:
+            return self.div(other)
+        except TypeError:
+            return NotImplemented
+
+    def __eq__(self, other):
+        if isinstance(other, Translation2d):
+            return vec_eq(self.v, (<Translation2d>other).v)
+        return NotImplemented
+
+    __hash__ = None
+
+    def __iter__(self):
+        yield self.v.x
+        yield self.v.y
+
+    def __reduce__(self):
+        return (Translation2d, (self.v.x, self.v.y))
+
+    def __repr__(self):
+        return f"Translation2d(x={self.v.x!r}, y={self.v.y!r})"
+
+    def __str__(self):
+        return f"Translation2d(X: {f2(self.v.x)}, Y: {f2(self.v.y)})"
+
+
+# ---------------------------------------------------------------------------------------
+@cython.freelist(128)
+cdef class Rotation2d:
+    """Rotation2d(value=0.0) or Rotation2d(x, y)
+
+    A rotation in the plane, stored as its unit vector (cos, sin) as in WPILib 2027.
+
+    ``Rotation2d(value)`` takes an angle in radians. ``Rotation2d(x, y)`` takes any
+    vector and normalises it; a vector of length 1e-6 or less gives the identity
+    (WPILib reports an error there; drivekin returns the identity silently).
+    The constructor angle is not remembered: ``Rotation2d(3π/2).getDegrees()`` is −90.
+    """
+
+    def __init__(self, double value=0.0, y=None):
+        if y is None:
+            self.r = rot_rad(value)
+        else:
+            self.r = rot_xy(value, y)
+
+    @staticmethod
+    def fromRadians(double radians):
+        """Return the rotation of ``radians`` rad."""
+        return new_rotation(rot_rad(radians))
+
+    @staticmethod
+    def fromDegrees(double degrees):
+        """Return the rotation of ``degrees`` degrees."""
+        return new_rotation(rot_rad(degrees / DEG))
+
+    @staticmethod
+    def fromRotations(double rotations):
+        """Return the rotation of ``rotations`` full turns."""
+        return new_rotation(rot_rad(rotations * 2.0 * M_PI))
+
+    def getRadians(self):
+        """Return the angle in rad, in [−π, π] (atan2 of the stored unit vector)."""
+        return rot_radians(self.r)
+
+    def getDegrees(self):
+        """Return the angle in degrees, in [−180, 180]."""
+        return rot_radians(self.r) * DEG
+
+    def getRotations(self):
+        """Return the angle in turns, in [−0.5, 0.5]."""
+        return rot_radians(self.r) / (2.0 * M_PI)
+
+    def getCos(self):
+        """Return the cosine of the angle."""
+        return self.r.c
+
+    def getSin(self):
+        """Return the sine of the angle."""
+        return self.r.s
+
+    def getTan(self):
+        """Return the tangent of the angle (sin / cos; ±inf or NaN at ±90°)."""
+        return self.r.s / self.r.c
+
+    def rotateBy(self, Rotation2d other not None):
+        """Return this rotation followed by ``other`` (angles add)."""
+        return new_rotation(rot_plus(self.r, other.r))
+
+    def plus(self, Rotation2d other not None):
+        """Same as :meth:`rotateBy`."""
+        return new_rotation(rot_plus(self.r, other.r))
+
+    def minus(self, Rotation2d other not None):
+        """Return the rotation whose angle is this angle minus ``other``'s (wrapped)."""
+        return new_rotation(rot_minus(self.r, other.r))
+
+    def relativeTo(self, Rotation2d other not None):
+        """Return this rotation seen from ``other`` (same as :meth:`minus`)."""
+        return new_rotation(rot_minus(self.r, other.r))
+
+    def unaryMinus(self):
+        """Return the inverse rotation."""
+        return new_rotation(rot_neg(self.r))
+
+    def times(self, double scalar):
+        """Return the rotation by ``getRadians() * scalar``; the *wrapped* angle is scaled
+        (270° × 0.5 = −45° in WPILib 2027)."""
+        return new_rotation(rot_times(self.r, scalar))
+
+    def div(self, double scalar):
+        """Return ``times(1 / scalar)``."""
+        return new_rotation(rot_times(self.r, 1.0 / scalar))
+
+    def interpolate(self, Rotation2d endValue not None, double t):
+        """Return ``self + (endValue − self) · t``, the short way round; ``t`` is not
+        clamped (2027)."""
+        return new_rotation(rot_interp(self.r, endValue.r, t))
+
+    def toMatrix(self):
+        """Return the 2×2 rotation matrix ``[[cos, −sin], [sin, cos]]``."""
+        return np.array([[self.r.c, -self.r.s], [self.r.s, self.r.c]])
+
+    def __add__(self, other):
+        if isinstance(other, Rotation2d):
+            return self.plus(other)
+        return NotImplemented
+
+    def __sub__(self, other):
+        if isinstance(other, Rotation2d):
+            return self.minus(other)
+        return NotImplemented
+
+    def __neg__(self):
+        return self.unaryMinus()
+
+    def __mul__(self, other):
+        try:
+            return self.times(other)
+        except TypeError:
+            return NotImplemented
+
+    def __rmul__(self, other):
+        return self.__mul__(other)
+
+    def __truediv__(self, other):
+        try:
+            return self.div(other)
+        except TypeError:
+            return NotImplemented
+
+    def __eq__(self, other):
+        if isinstance(other, Rotation2d):
+            return rot_eq(self.r, (<Rotation2d>other).r)
+        return NotImplemented
+
+    __hash__ = None
+
+    def __reduce__(self):
+        return (_rotation_from_cos_sin, (self.r.c, self.r.s))
+
+    def __repr__(self):
+        return f"Rotation2d(radians={rot_radians(self.r)!r})"
+
+    def __str__(self):
+        cdef double rad = rot_radians(self.r)
+        return f"Rotation2d(Rads: {f2(rad)}, Deg: {f2(rad * DEG)})"
+
+
+def _rotation_from_cos_sin(double c, double s):
+    """Rebuild a Rotation2d from its stored (cos, sin) exactly (used by pickle)."""
+    cdef rot2_t r
+    r.c = c
+    r.s = s
+    return new_rotation(r)
+
+
+# ---------------------------------------------------------------------------------------
+cdef pose2_t _pose_args(object a, object b, object c, str cls) except *:
+    """Parse (), (Translation2d, Rotation2d) or (x, y, Rotation2d)."""
+    cdef double x, y
+    if a is None and b is None and c is None:
+        return pose(vec(0.0, 0.0), rot_xy(1.0, 0.0))
+    if c is None and isinstance(a, Translation2d) and isinstance(b, Rotation2d):
+        return pose((<Translation2d>a).v, (<Rotation2d>b).r)
+    if isinstance(c, Rotation2d) and a is not None and b is not None:
+        x = a
+        y = b
+        return pose(vec(x, y), (<Rotation2d>c).r)
+    raise TypeError(
+        f"{cls}() takes (), (Translation2d, Rotation2d) or (x: float, y: float, Rotation2d); "
+        f"got ({type(a).__name__}, {type(b).__name__}, {type(c).__name__})")
+
+
+@cython.freelist(64)
+cdef class Pose2d:
+    """Pose2d() or Pose2d(translation, rotation) or Pose2d(x, y, rotation)
+
+    A robot pose on the field: position in m and heading as a :class:`Rotation2d`.
+    Immutable; ``==`` compares translation within 1e-9 m and rotation within 1e-9.
+    """
+
+    def __init__(self, a=None, b=None, c=None):
+        self.p = _pose_args(a, b, c, "Pose2d")
+
+    @property
+    def x(self):
+        """X position, m."""
+        return self.p.t.x
+
+    @property
+    def y(self):
+        """Y position, m."""
+        return self.p.t.y
+
+    def getX(self):
+        """Return the x position, m."""
+        return self.p.t.x
+
+    def getY(self):
+        """Return the y position, m."""
+        return self.p.t.y
+
+    def getTranslation(self):
+        """Return the position as a Translation2d, m."""
+        return new_translation(self.p.t)
+
+    def getRotation(self):
+        """Return the heading as a Rotation2d."""
+        return new_rotation(self.p.r)
+
+    def transformBy(self, Transform2d other not None):
+        """Return this pose moved by ``other``, expressed in this pose's frame."""
+        return new_pose(pose_transform_by(self.p, other.p))
+
+    def plus(self, Transform2d other not None):
+        """Same as :meth:`transformBy`."""
+        return new_pose(pose_transform_by(self.p, other.p))
+
+    def minus(self, Pose2d other not None):
+        """Return the Transform2d that maps ``other`` onto this pose."""
+        return new_transform(pose_relative_to(self.p, other.p))
+
+    def relativeTo(self, Pose2d other not None):
+        """Return this pose expressed in the frame of ``other``."""
+        return new_pose(pose_relative_to(self.p, other.p))
+
+    def rotateBy(self, Rotation2d other not None):
+        """Return the pose rotated about the field origin (position and heading)."""
+        return new_pose(pose(vec_rotate(self.p.t, other.r), rot_plus(self.p.r, other.r)))
+
+    def rotateAround(self, Translation2d point not None, Rotation2d rot not None):
+        """Return the pose rotated by ``rot`` about ``point``; the heading turns by ``rot``."""
+        cdef vec2_t d = vec_rotate(vec(self.p.t.x - point.v.x, self.p.t.y - point.v.y), rot.r)
+        return new_pose(pose(vec(d.x + point.v.x, d.y + point.v.y), rot_plus(self.p.r, rot.r)))
+
+    def times(self, double scalar):
+        """Return (translation · scalar, rotation.times(scalar))."""
+        return new_pose(pose_times(self.p, scalar))
+
+    def div(self, double scalar):
+        """Return ``times(1 / scalar)``."""
+        return new_pose(pose_times(self.p, 1.0 / scalar))
+
+    def exp(self, Twist2d twist not None):
+        """Return ``self.plus(twist.exp())`` in one call (the WPILib 2026 ``Pose2d.exp``;
+        2027 spells it ``pose.plus(twist.exp())`` and both give the same numbers)."""
+        return new_pose(pose_transform_by(self.p, twist_exp(twist.dx, twist.dy, twist.dtheta)))
+
+    def log(self, Pose2d end not None):
+        """Return ``end.minus(self).log()`` (the WPILib 2026 ``Pose2d.log``)."""
+        cdef twist2_t tw = transform_log(pose_relative_to(end.p, self.p))
+        return new_twist(tw.dx, tw.dy, tw.dtheta)
+
+    def nearest(self, poses):
+        """Return the pose in ``poses`` closest to this one: smallest translation distance,
+        ties broken by the smallest heading difference."""
+        cdef Pose2d best = None, q
+        cdef double bd = 0.0, ba = 0.0, d, a
+        for q in poses:
+            d = hypot(q.p.t.x - self.p.t.x, q.p.t.y - self.p.t.y)
+            a = fabs(rot_radians(rot_minus(self.p.r, q.p.r)))
+            if best is None or d < bd or (d == bd and a < ba):
+                best, bd, ba = q, d, a
+        if best is None:
+            raise ValueError("nearest() of an empty sequence")
+        return best
+
+    def interpolate(self, Pose2d endValue not None, double t):
+        """Interpolate along the constant-curvature arc to ``endValue``.
+
+        ``t < 0`` returns this pose and ``t ≥ 1`` returns ``endValue`` (WPILib's clamp)."""
+        if t < 0.0:
+            return self
+        if t >= 1.0:
+            return endValue
+        cdef twist2_t tw = transform_log(pose_relative_to(endValue.p, self.p))
+        return new_pose(pose_transform_by(self.p, twist_exp(tw.dx * t, tw.dy * t, tw.dtheta * t)))
+
+    def toMatrix(self):
+        """Return the 3×3 homogeneous matrix of this pose."""
+        return np.array([[self.p.r.c, -self.p.r.s, self.p.t.x],
+                         [self.p.r.s, self.p.r.c, self.p.t.y],
+                         [0.0, 0.0, 1.0]])
+
+    def __add__(self, other):
+        if isinstance(other, Transform2d):
+            return self.plus(other)
+        return NotImplemented
+
+    def __sub__(self, other):
+        if isinstance(other, Pose2d):
+            return self.minus(other)
+        return NotImplemented
+
+    def __mul__(self, other):
+        try:
+            return self.times(other)
+        except TypeError:
+            return NotImplemented
+
+    def __rmul__(self, other):
+        return self.__mul__(other)
+
+    def __truediv__(self, other):
+        try:
+            return self.div(other)
+        except TypeError:
+            return NotImplemented
+
+    def __eq__(self, other):
+        if isinstance(other, Pose2d):
+            return vec_eq(self.p.t, (<Pose2d>other).p.t) and rot_eq(self.p.r, (<Pose2d>other).p.r)
+        return NotImplemented
+
+    __hash__ = None
+
+    def __reduce__(self):
+        return (Pose2d, (new_translation(self.p.t), new_rotation(self.p.r)))
+
+    def __repr__(self):
+        return (f"Pose2d(x={self.p.t.x!r}, y={self.p.t.y!r}, "
+                f"rotation=Rotation2d(radians={rot_radians(self.p.r)!r}))")
+
+    def __str__(self):
+        return f"Pose2d({new_translation(self.p.t)}, {new_rotation(self.p.r)})"
+
+
+# ---------------------------------------------------------------------------------------
+@cython.freelist(64)
+cdef class Transform2d:
+    """Transform2d() or Transform2d(translation, rotation) or Transform2d(x, y, rotation)
+    or Transform2d(initial, last)
+
+    A rigid motion: a translation in m followed by a rotation, expressed in the frame it
+    is applied to. ``Transform2d(initial, last)`` with two :class:`Pose2d` gives the
+    transform that maps ``initial`` onto ``last``. Immutable; ``==`` as for Pose2d.
+    """
+
+    def __init__(self, a=None, b=None, c=None):
+        if c is None and isinstance(a, Pose2d) and isinstance(b, Pose2d):
+            self.p = pose_relative_to((<Pose2d>b).p, (<Pose2d>a).p)
+        else:
+            self.p = _pose_args(a, b, c, "Transform2d")
+
+    @property
+    def x(self):
+        """X component of the translation, m."""
+        return self.p.t.x
+
+    @property
+    def y(self):
+        """Y component of the translation, m."""
+        return self.p.t.y
+
+    def getX(self):
+        """Return the x component of the translation, m."""
+        return self.p.t.x
+
+    def getY(self):
+        """Return the y component of the translation, m."""
+        return self.p.t.y
+
+    def getTranslation(self):
+        """Return the translation part, m."""
+        return new_translation(self.p.t)
+
+    def getRotation(self):
+        """Return the rotation part."""
+        return new_rotation(self.p.r)
+
+    def inverse(self):
+        """Return the transform that undoes this one."""
+        return new_transform(transform_inverse(self.p))
+
+    def plus(self, Transform2d other not None):
+        """Return this transform followed by ``other``."""
+        return new_transform(pose_transform_by(self.p, other.p))
+
+    def times(self, double scalar):
+        """Return (translation · scalar, rotation.times(scalar))."""
+        return new_transform(pose_times(self.p, scalar))
+
+    def div(self, double scalar):
+        """Return ``times(1 / scalar)``."""
+        return new_transform(pose_times(self.p, 1.0 / scalar))
+
+    def log(self):
+        """Return the Twist2d whose :meth:`Twist2d.exp` is this transform (the
+        constant-curvature arc; the inverse of exp)."""
+        cdef twist2_t tw = transform_log(self.p)
+        return new_twist(tw.dx, tw.dy, tw.dtheta)
+
+    def toMatrix(self):
+        """Return the 3×3 homogeneous matrix of this transform."""
+        return np.array([[self.p.r.c, -self.p.r.s, self.p.t.x],
+                         [self.p.r.s, self.p.r.c, self.p.t.y],
+                         [0.0, 0.0, 1.0]])
+
+    def __add__(self, other):
+        if isinstance(other, Transform2d):
+            return self.plus(other)
+        return NotImplemented
+
+    def __mul__(self, other):
+        try:
+            return self.times(other)
+        except TypeError:
+            return NotImplemented
+
+    def __rmul__(self, other):
+        return self.__mul__(other)
+
+    def __truediv__(self, other):
+        try:
+            return self.div(other)
+        except TypeError:
+            return NotImplemented
+
+    def __eq__(self, other):
+        if isinstance(other, Transform2d):
+            return (vec_eq(self.p.t, (<Transform2d>other).p.t)
+                    and rot_eq(self.p.r, (<Transform2d>other).p.r))
+        return NotImplemented
+
+    __hash__ = None
+
+    def __reduce__(self):
+        return (Transform2d, (new_translation(self.p.t), new_rotation(self.p.r)))
+
+    def __repr__(self):
+        return (f"Transform2d(x={self.p.t.x!r}, y={self.p.t.y!r}, "
+                f"rotation=Rotation2d(radians={rot_radians(self.p.r)!r}))")
+
+    def __str__(self):
+        return f"Transform2d({new_translation(self.p.t)}, {new_rotation(self.p.r)})"
+
+
+# ---------------------------------------------------------------------------------------
+@cython.freelist(64)
+cdef class Twist2d:
+    """Twist2d(dx=0.0, dy=0.0, dtheta=0.0)
+
+    A motion along a constant-curvature arc: ``dx``, ``dy`` in m (in the start frame) and
+    ``dtheta`` in rad. Mutable, like WPILib's public fields; ``==`` compares each field
+    within 1e-9, so instances are unhashable.
+    """
+
+    def __init__(self, double dx=0.0, double dy=0.0, double dtheta=0.0):
+        self.dx = dx
+        self.dy = dy
+        self.dtheta = dtheta
+
+    def exp(self):
+        """Return the Transform2d reached by following this arc from the origin.
+
+        Uses the series form when ``|dtheta| < 1e-9``."""
+        return new_transform(twist_exp(self.dx, self.dy, self.dtheta))
+
+    def __eq__(self, other):
+        cdef Twist2d o
+        if isinstance(other, Twist2d):
+            o = <Twist2d>other
+            return (fabs(self.dx - o.dx) < 1e-9 and fabs(self.dy - o.dy) < 1e-9
+                    and fabs(self.dtheta - o.dtheta) < 1e-9)
+        return NotImplemented
+
+    __hash__ = None
+
+    def __reduce__(self):
+        return (Twist2d, (self.dx, self.dy, self.dtheta))
+
+    def __repr__(self):
+        return f"Twist2d(dx={self.dx!r}, dy={self.dy!r}, dtheta={self.dtheta!r})"
+
+    def __str__(self):
+        return f"Twist2d(dX: {f2(self.dx)}, dY: {f2(self.dy)}, dTheta: {f2(self.dtheta)})"
+
+
+# WPILib's named constants.
+for _name, _value in (("kZero", Translation2d()),):
+    drivekin_set_type_attr(Translation2d, _name, _value)
+for _name, _value in (
+    ("kZero", Rotation2d()),
+    ("kCW_Pi_2", Rotation2d(-M_PI / 2)), ("kCW_90deg", Rotation2d(-M_PI / 2)),
+    ("kCCW_Pi_2", Rotation2d(M_PI / 2)), ("kCCW_90deg", Rotation2d(M_PI / 2)),
+    ("kPi", Rotation2d(M_PI)), ("k180deg", Rotation2d(M_PI)),
+):
+    drivekin_set_type_attr(Rotation2d, _name, _value)
+drivekin_set_type_attr(Pose2d, "kZero", Pose2d())
+drivekin_set_type_attr(Transform2d, "kZero", Transform2d())
+del _name, _value
