@@ -5,10 +5,24 @@ Units are SI throughout (m, m/s, m/s², rad, rad/s, rad/s², s); x forward, y le
 angles counter-clockwise positive.
 """
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
+from drivekin.kinematics import (
+    ChassisAccelerations,
+    ChassisVelocities,
+    SwerveDriveKinematics,
+    SwerveModuleAcceleration,
+    SwerveModulePosition,
+    SwerveModuleVelocity,
+)
 
 __version__ = "0.1.0"
 
 __all__ = [
+    "ChassisAccelerations",
+    "ChassisVelocities",
+    "SwerveDriveKinematics",
+    "SwerveModuleAcceleration",
+    "SwerveModulePosition",
+    "SwerveModuleVelocity",
     "Pose2d",
     "Rotation2d",
     "Transform2d",

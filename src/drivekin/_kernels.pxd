@@ -4,7 +4,7 @@
 # (see ../shared/reference/wpilib-kinematics.md); the comments say where they are subtle.
 
 from libc.math cimport atan2, cos, fabs, hypot, sin
-from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
+from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 
 # ---------------------------------------------------------------------------------------
 # Java Math.max/min: NaN wins (C fmax/fmin would drop it and change which branch runs).
@@ -240,13 +240,22 @@ cdef inline double max_abs(Py_ssize_t n, const double* v, Py_ssize_t stride) noe
         r = jmax(r, fabs(v[i * stride]))
     return r
 
-cdef inline double desaturate_scale5(double real_max, double dvx, double dvy, double domega,
-                                     double max_module, double max_trans, double max_rot) noexcept nogil:
-    # Joystick normalisation: may scale down even when no module is saturated.
-    # Returns the multiplier (1.0 = unchanged).
-    if max_trans == 0.0 or max_rot == 0.0 or real_max == 0.0:
-        return 1.0
-    cdef double kt = hypot(dvx, dvy) / max_trans
-    cdef double kr = fabs(domega) / max_rot
-    cdef double k = jmax(kt, kr)
-    return jmin(k * max_module / real_max, 1.0)
+cdef inline void desaturate_factors(double real_max, const desat_t* p,
+                                    double* div, double* mul     # OUT: v' = v / div * mul
+                                    ) noexcept nogil:
+    # real_max = max |v_i| (jmax from 0, so a NaN speed disables scaling, as in Java).
+    cdef double kt, kr
+    div[0] = 1.0
+    mul[0] = 1.0
+    if not p.five:
+        if real_max > p.max_speed:
+            # WPILib's order of operations: v / realMax * attainableMax.
+            div[0] = real_max
+            mul[0] = p.max_speed
+        return
+    # Joystick normalisation: may slow wheels that are not saturated.
+    if p.max_trans == 0.0 or p.max_rot == 0.0 or real_max == 0.0:
+        return
+    kt = hypot(p.desired.x, p.desired.y) / p.max_trans
+    kr = fabs(p.desired.z) / p.max_rot
+    mul[0] = jmin(jmax(kt, kr) * p.max_module / real_max, 1.0)

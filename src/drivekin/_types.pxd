@@ -25,3 +25,12 @@ cdef struct vec3_t:
     double x
     double y
     double z
+
+cdef struct desat_t:
+    # Arguments of the two desaturateWheelVelocities overloads.
+    bint five                   # True for the five-argument (joystick) form
+    double max_speed            # attainableMaxSpeed, m/s (one-limit form)
+    vec3_t desired              # desired chassis velocity (vx, vy m/s, omega rad/s)
+    double max_module           # attainableMaxModuleSpeed, m/s
+    double max_trans            # attainableMaxTranslationalSpeed, m/s
+    double max_rot              # attainableMaxRotationalVelocity, rad/s

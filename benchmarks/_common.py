@@ -1,0 +1,205 @@
+"""Shared set-up for the drivekin benchmarks: the fixed robot, the fixed inputs, the
+prebuilt robotpy / drivekin argument objects, the loop compiler and the machine description.
+
+Used by ``conftest.py`` (pytest-benchmark) and by ``ratio_table.py`` (stand-alone timer), so
+both measure exactly the same statements on exactly the same inputs.
+
+drivekin is imported from an installed copy if there is one, else from ``<repo>/src``
+(the in-tree build), so ``PYTHONPATH=src`` is optional when running from the repository.
+"""
+from __future__ import annotations
+
+import itertools
+import os
+import platform
+import sys
+import time
+from dataclasses import dataclass
+from importlib import metadata
+from pathlib import Path
+from types import SimpleNamespace
+
+REPO = Path(__file__).resolve().parent.parent
+
+try:  # prefer whatever the caller put on sys.path (PYTHONPATH=src, or an installed wheel)
+    import drivekin  # noqa: F401
+except ImportError:  # pragma: no cover - depends on how the script is launched
+    sys.path.insert(0, str(REPO / "src"))
+
+# Calls per benchmarked body. Every call under test is sub-microsecond, so each timed body
+# runs the statement INNER times in a local loop; the same count is used for every variant.
+INNER = 100
+
+
+# ---------------------------------------------------------------------------------------
+# The fixed robot and inputs (same numbers as shared/reference/perf-floor.md)
+
+@dataclass(frozen=True)
+class Inputs:
+    modules: tuple = ((0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3))  # FL, FR, BL, BR, m
+    vx: float = 1.5          # m/s
+    vy: float = -0.7         # m/s
+    omega: float = 2.0       # rad/s
+    dt: float = 0.02         # s
+    robot_angle: float = 0.5  # rad (gyro heading for the field-relative conversion)
+    # single-argument desaturate: module speeds from IK are 0.91 .. 2.47 m/s, so 1.0 scales
+    max_speed: float = 1.0
+    # five-argument desaturate: kT = |(vx, vy)|/3 = 0.55, kR = 2/6 = 0.33, scale = 0.89 < 1
+    max_module: float = 4.0
+    max_translation: float = 3.0
+    max_rotation: float = 6.0
+    pose: tuple = (1.0, 2.0, 0.5)         # x m, y m, heading rad
+    twist: tuple = (0.02, 0.01, 0.03)     # dx m, dy m, dtheta rad
+
+
+INPUTS = Inputs()
+
+
+def build_robotpy(inp: Inputs = INPUTS) -> SimpleNamespace:
+    """robotpy-wpimath 2026 objects; every argument object is prebuilt (as in perf-floor)."""
+    from wpimath import geometry as g, kinematics as k
+
+    kin = k.SwerveDrive4Kinematics(*(g.Translation2d(x, y) for x, y in inp.modules))
+    cs = k.ChassisSpeeds(inp.vx, inp.vy, inp.omega)
+    return SimpleNamespace(
+        g=g, k=k,
+        Kinematics=k.SwerveDrive4Kinematics,
+        ChassisSpeeds=k.ChassisSpeeds,
+        kin=kin,
+        cs=cs,
+        states=kin.toSwerveModuleStates(cs),          # tuple of 4 SwerveModuleState
+        rot=g.Rotation2d(inp.robot_angle),
+        pose=g.Pose2d(inp.pose[0], inp.pose[1], g.Rotation2d(inp.pose[2])),
+        twist=g.Twist2d(*inp.twist),
+    )
+
+
+def build_drivekin_geometry(inp: Inputs = INPUTS) -> SimpleNamespace:
+    from drivekin import geometry as g
+
+    return SimpleNamespace(
+        g=g,
+        rot=g.Rotation2d(inp.robot_angle),
+        pose=g.Pose2d(inp.pose[0], inp.pose[1], g.Rotation2d(inp.pose[2])),
+        twist=g.Twist2d(*inp.twist),
+    )
+
+
+def kinematics_available() -> bool:
+    try:
+        import drivekin.kinematics  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def build_drivekin(inp: Inputs = INPUTS) -> SimpleNamespace:
+    """drivekin objects. Needs drivekin.kinematics (ImportError otherwise)."""
+    from drivekin import kinematics as k
+
+    ns = build_drivekin_geometry(inp)
+    kin = k.SwerveDriveKinematics(*(ns.g.Translation2d(x, y) for x, y in inp.modules))
+    cv = k.ChassisVelocities(inp.vx, inp.vy, inp.omega)
+    ns.k = k
+    ns.Kinematics = k.SwerveDriveKinematics
+    ns.ChassisVelocities = k.ChassisVelocities
+    ns.SwerveModuleVelocity = k.SwerveModuleVelocity
+    ns.kin = kin
+    ns.cv = cv
+    ns.states = kin.toSwerveModuleVelocities(cv)    # tuple of 4 SwerveModuleVelocity
+    return ns
+
+
+def fresh_states(dk: SimpleNamespace) -> list:
+    """A new list of N SwerveModuleVelocity equal to dk.states (for in-place variants)."""
+    return [dk.SwerveModuleVelocity(s.velocity, s.angle) for s in dk.states]
+
+
+def states_array(dk: SimpleNamespace):
+    """dk.states as a float64 C-contiguous (N, 2) array [velocity m/s, angle rad]."""
+    import numpy as np
+
+    return np.array([[s.velocity, s.angle.getRadians()] for s in dk.states], dtype=np.float64)
+
+
+# ---------------------------------------------------------------------------------------
+# Loop compiler: the statement runs in a local loop with every name bound as a default
+# argument, so each name is a LOAD_FAST (same technique as timeit's `setup`).
+
+def _check_names(env: dict) -> list:
+    names = sorted(env)
+    for n in names:
+        if not n.isidentifier() or n.startswith("_"):
+            raise ValueError(f"bad benchmark local name {n!r}")
+    return names
+
+
+def compile_body(stmt: str, env: dict, inner: int = INNER):
+    """Return a zero-argument function that executes ``stmt`` ``inner`` times."""
+    names = _check_names(env)
+    params = "".join(f"{n}={n}, " for n in names)
+    src = (f"def _body({params}_rep=_rep, _inner={inner}):\n"
+           f"    for _ in _rep(None, _inner):\n"
+           f"        {stmt}\n")
+    ns = dict(env, _rep=itertools.repeat)
+    exec(compile(src, f"<bench: {stmt}>", "exec"), ns)
+    return ns["_body"]
+
+
+def compile_timer(stmt: str, env: dict):
+    """Return ``timer(n) -> seconds`` that executes ``stmt`` n times (timeit-style)."""
+    names = _check_names(env)
+    params = "".join(f"{n}={n}, " for n in names)
+    src = (f"def _timer(_n, {params}_rep=_rep, _clock=_clock):\n"
+           f"    _it = _rep(None, _n)\n"
+           f"    _t0 = _clock()\n"
+           f"    for _ in _it:\n"
+           f"        {stmt}\n"
+           f"    return _clock() - _t0\n")
+    ns = dict(env, _rep=itertools.repeat, _clock=time.perf_counter)
+    exec(compile(src, f"<timer: {stmt}>", "exec"), ns)
+    return ns["_timer"]
+
+
+# ---------------------------------------------------------------------------------------
+# Machine description
+
+def _version(dist: str) -> str:
+    try:
+        return metadata.version(dist)
+    except metadata.PackageNotFoundError:
+        return "not installed"
+
+
+def cpu_model() -> str:
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or "unknown"
+
+
+def machine_description() -> list[str]:
+    import numpy
+
+    try:
+        import drivekin
+        dk = f"{getattr(drivekin, '__version__', '?')} from {Path(drivekin.__file__).parent}"
+    except ImportError:
+        dk = "not importable"
+    try:
+        cpus = sorted(os.sched_getaffinity(0))
+    except AttributeError:  # pragma: no cover - not Linux
+        cpus = []
+    return [
+        f"CPU: {cpu_model()} ({os.cpu_count()} logical CPUs; this process pinned to "
+        f"{','.join(map(str, cpus)) or '?'})",
+        f"OS: {platform.platform()}",
+        f"Python: {platform.python_implementation()} {platform.python_version()} "
+        f"({platform.python_compiler()})",
+        f"robotpy-wpimath: {_version('robotpy-wpimath')}; numpy {numpy.__version__}; "
+        f"Cython {_version('Cython')}; drivekin {dk}",
+    ]

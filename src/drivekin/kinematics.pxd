@@ -1,0 +1,84 @@
+# Chassis-level and swerve value types, and SwerveDriveKinematics. The value classes hold
+# C doubles by value (the angle of a module value is a rot2_t, not a Rotation2d object),
+# so results can be written in place without creating Python objects.
+cimport cython
+from drivekin._types cimport rot2_t, vec2_t, vec3_t
+from drivekin.geometry cimport Translation2d
+
+
+cdef class _ChassisVector:
+    cdef vec3_t v                # (vx, vy, omega) or (ax, ay, alpha)
+    cdef _ChassisVector _new(self, double x, double y, double z)
+    cdef _rotated_into(self, rot2_t r, _ChassisVector out)
+    cdef _check(self, _ChassisVector other)
+
+@cython.final
+cdef class ChassisVelocities(_ChassisVector):
+    pass
+
+@cython.final
+cdef class ChassisAccelerations(_ChassisVector):
+    pass
+
+
+cdef class _ModuleVector:
+    cdef double m                # velocity m/s, distance m or acceleration m/s^2
+    cdef rot2_t a                # module angle
+    cdef _ModuleVector _new(self, double m, rot2_t a)
+    cdef _ModuleVector _lerp(self, _ModuleVector end, double t)
+
+@cython.final
+cdef class SwerveModuleVelocity(_ModuleVector):
+    pass
+
+@cython.final
+cdef class SwerveModulePosition(_ModuleVector):
+    pass
+
+@cython.final
+cdef class SwerveModuleAcceleration(_ModuleVector):
+    pass
+
+
+cdef inline ChassisVelocities new_chassis_velocities(double vx, double vy, double omega):
+    cdef ChassisVelocities o = ChassisVelocities.__new__(ChassisVelocities)
+    o.v.x = vx
+    o.v.y = vy
+    o.v.z = omega
+    return o
+
+cdef inline SwerveModuleVelocity new_module_velocity(double v, rot2_t a):
+    cdef SwerveModuleVelocity o = SwerveModuleVelocity.__new__(SwerveModuleVelocity)
+    o.m = v
+    o.a = a
+    return o
+
+cdef inline SwerveModulePosition new_module_position(double d, rot2_t a):
+    cdef SwerveModulePosition o = SwerveModulePosition.__new__(SwerveModulePosition)
+    o.m = d
+    o.a = a
+    return o
+
+
+@cython.final
+cdef class SwerveDriveKinematics:
+    cdef Py_ssize_t n            # number of modules
+    cdef double* buf             # one allocation holding every array below
+    cdef double* mx              # module x, m (robot frame)
+    cdef double* my              # module y, m
+    cdef double* rx              # module x minus centre of rotation, m
+    cdef double* ry              # module y minus centre of rotation, m
+    cdef double* hc              # heading memory, cos
+    cdef double* hs              # heading memory, sin
+    cdef double* f1              # 3 x 2n pseudo-inverse of the velocity matrix (CoR 0)
+    cdef double* f2              # 4 x 2n pseudo-inverse of the acceleration matrix (CoR 0)
+    cdef double* s0              # scratch, n
+    cdef double* s1              # scratch, n
+    cdef double* s2              # scratch, n
+    cdef vec2_t cor              # centre of rotation the rx/ry rows were built for, m
+    cdef tuple modules           # the Translation2d objects, constructor order
+
+    cdef void _set_cor(self, vec2_t cor) noexcept
+    cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1
+    cdef int _deltas(self, object start, object end) except -1
+    cdef int _read(self, object states, type cls, str what) except -1

@@ -1,0 +1,983 @@
+"""Chassis velocities/accelerations and N-module swerve kinematics (WPILib 2027).
+
+Units: m, m/s, m/s², rad, rad/s, rad/s², s. Robot frame: x forward, y left, CCW positive.
+
+Every hot operation has two forms: an object-returning façade with WPILib's name, and an
+allocation-free ``...Into`` / ``...InPlace`` form that writes into objects or numpy buffers
+owned by the caller. Kinematics objects carry heading memory and are not thread-safe
+(as in WPILib); every method runs with the GIL held, so a call is never interleaved.
+"""
+cimport cython
+cimport numpy as cnp
+from cpython.mem cimport PyMem_Free, PyMem_Malloc
+from libc.string cimport memset
+from cpython.ref cimport Py_INCREF, PyObject
+from cpython.sequence cimport PySequence_Fast, PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
+from cpython.tuple cimport PyTuple_New, PyTuple_SET_ITEM
+from libc.math cimport M_PI, atan2, cos, fabs, signbit, sin
+
+import numpy as np
+
+from drivekin._types cimport desat_t, rot2_t, vec2_t, vec3_t
+from drivekin._kernels cimport (
+    chassis_discretize, desaturate_factors, forward_solve, jmax, jmin, max_abs, rot_eq,
+    rot_interp, rot_minus, rot_neg, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
+    vec, vec_eq, vec_rotate,
+)
+from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
+from drivekin._format import f2
+
+cnp.import_array()
+
+cdef rot2_t IDENTITY
+IDENTITY.c = 1.0
+IDENTITY.s = 0.0
+cdef Translation2d ORIGIN = Translation2d()
+
+
+cdef inline bint java_equals(double a, double b) noexcept:
+    # Double.compare(a, b) == 0: NaN equals NaN, 0.0 differs from -0.0.
+    if a != a or b != b:
+        return a != a and b != b
+    return a == b and signbit(a) == signbit(b)
+
+
+# ---------------------------------------------------------------------------------------
+# Chassis vectors
+
+# Freelists live on the two base classes: Cython only lets the base manage them, and the
+# subclasses add no fields, so they share it.
+@cython.freelist(64)
+cdef class _ChassisVector:
+    """Shared arithmetic of ChassisVelocities and ChassisAccelerations (x, y, angular)."""
+
+    cdef _ChassisVector _new(self, double x, double y, double z):
+        raise NotImplementedError
+
+    cdef _rotated_into(self, rot2_t r, _ChassisVector out):
+        cdef vec2_t t = vec_rotate(vec(self.v.x, self.v.y), r)
+        out.v.x = t.x
+        out.v.y = t.y
+        out.v.z = self.v.z
+
+    def toRobotRelative(self, Rotation2d robotAngle not None):
+        """Convert field-relative values to robot-relative ones.
+
+        ``robotAngle`` is the robot heading on the field; x and y are rotated by
+        −robotAngle, the angular component is unchanged."""
+        out = self._new(0.0, 0.0, 0.0)
+        self._rotated_into(rot_neg(robotAngle.r), out)
+        return out
+
+    def toFieldRelative(self, Rotation2d robotAngle not None):
+        """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
+        out = self._new(0.0, 0.0, 0.0)
+        self._rotated_into(robotAngle.r, out)
+        return out
+
+    def toRobotRelativeInto(self, Rotation2d robotAngle not None, _ChassisVector out not None):
+        """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
+        same class; may be ``self``)."""
+        if type(out) is not type(self):
+            raise TypeError(f"out must be a {type(self).__name__}, got {type(out).__name__}")
+        self._rotated_into(rot_neg(robotAngle.r), out)
+
+    def toFieldRelativeInto(self, Rotation2d robotAngle not None, _ChassisVector out not None):
+        """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
+        same class; may be ``self``)."""
+        if type(out) is not type(self):
+            raise TypeError(f"out must be a {type(self).__name__}, got {type(out).__name__}")
+        self._rotated_into(robotAngle.r, out)
+
+    def plus(self, _ChassisVector other not None):
+        """Return the component-wise sum."""
+        self._check(other)
+        return self._new(self.v.x + other.v.x, self.v.y + other.v.y, self.v.z + other.v.z)
+
+    def minus(self, _ChassisVector other not None):
+        """Return the component-wise difference."""
+        self._check(other)
+        return self._new(self.v.x - other.v.x, self.v.y - other.v.y, self.v.z - other.v.z)
+
+    def unaryMinus(self):
+        """Return the negation of every component."""
+        return self._new(-self.v.x, -self.v.y, -self.v.z)
+
+    def times(self, double scalar):
+        """Return every component multiplied by ``scalar``."""
+        return self._new(self.v.x * scalar, self.v.y * scalar, self.v.z * scalar)
+
+    def div(self, double scalar):
+        """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
+        return self._new(self.v.x / scalar, self.v.y / scalar, self.v.z / scalar)
+
+    def interpolate(self, _ChassisVector endValue not None, double t):
+        """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
+        ``endValue`` (the objects themselves, as WPILib does)."""
+        self._check(endValue)
+        if t <= 0.0:
+            return self
+        if t >= 1.0:
+            return endValue
+        return self._new(self.v.x + t * (endValue.v.x - self.v.x),
+                         self.v.y + t * (endValue.v.y - self.v.y),
+                         self.v.z + t * (endValue.v.z - self.v.z))
+
+    cdef _check(self, _ChassisVector other):
+        if type(other) is not type(self):
+            raise TypeError(f"expected a {type(self).__name__}, got {type(other).__name__}")
+
+    def __add__(self, other):
+        if type(other) is type(self):
+            return self.plus(other)
+        return NotImplemented
+
+    def __sub__(self, other):
+        if type(other) is type(self):
+            return self.minus(other)
+        return NotImplemented
+
+    def __neg__(self):
+        return self.unaryMinus()
+
+    def __mul__(self, other):
+        try:
+            return self.times(other)
+        except TypeError:
+            return NotImplemented
+
+    def __rmul__(self, other):
+        return self.__mul__(other)
+
+    def __truediv__(self, other):
+        try:
+            return self.div(other)
+        except TypeError:
+            return NotImplemented
+
+    __hash__ = None  # mutable
+
+    def __reduce__(self):
+        return (type(self), (self.v.x, self.v.y, self.v.z))
+
+
+cdef class ChassisVelocities(_ChassisVector):
+    """ChassisVelocities(vx=0.0, vy=0.0, omega=0.0)
+
+    Robot velocity: ``vx`` forward and ``vy`` left in m/s, ``omega`` counter-clockwise in
+    rad/s. Robot-relative unless stated otherwise. Fields are mutable; ``==`` compares
+    each field exactly (0.0 == −0.0, NaN != NaN), as WPILib does.
+    """
+
+    def __init__(self, double vx=0.0, double vy=0.0, double omega=0.0):
+        self.v.x = vx
+        self.v.y = vy
+        self.v.z = omega
+
+    cdef _ChassisVector _new(self, double x, double y, double z):
+        return new_chassis_velocities(x, y, z)
+
+    @property
+    def vx(self):
+        """Forward velocity, m/s."""
+        return self.v.x
+
+    @vx.setter
+    def vx(self, double value):
+        self.v.x = value
+
+    @property
+    def vy(self):
+        """Leftward velocity, m/s."""
+        return self.v.y
+
+    @vy.setter
+    def vy(self, double value):
+        self.v.y = value
+
+    @property
+    def omega(self):
+        """Angular velocity, rad/s, counter-clockwise positive."""
+        return self.v.z
+
+    @omega.setter
+    def omega(self, double value):
+        self.v.z = value
+
+    def toTwist2d(self, double dt):
+        """Return the Twist2d ``(vx·dt, vy·dt, omega·dt)`` travelled in ``dt`` seconds."""
+        return new_twist(self.v.x * dt, self.v.y * dt, self.v.z * dt)
+
+    def discretize(self, double dt):
+        """Return the velocities that, held constant for ``dt`` s along a straight line in
+        the rotating frame, end at the pose this constant twist would reach.
+
+        This removes the drift of swerve/mecanum drives that translate while turning.
+        ``omega·dt`` passes through a Rotation2d, so it is wrapped to [−π, π]
+        (omega = 4, dt = 1 gives omega' = 4 − 2π); ``dt = 0`` divides by zero (NaN/inf),
+        as in WPILib."""
+        cdef vec3_t d = chassis_discretize(self.v.x, self.v.y, self.v.z, dt)
+        return new_chassis_velocities(d.x, d.y, d.z)
+
+    def discretizeInto(self, double dt, ChassisVelocities out not None):
+        """Allocation-free :meth:`discretize`: write the result into ``out`` (may be self)."""
+        out.v = chassis_discretize(self.v.x, self.v.y, self.v.z, dt)
+
+    def __eq__(self, other):
+        cdef ChassisVelocities o
+        if isinstance(other, ChassisVelocities):
+            o = <ChassisVelocities>other
+            return self.v.x == o.v.x and self.v.y == o.v.y and self.v.z == o.v.z
+        return NotImplemented
+
+    def __repr__(self):
+        return f"ChassisVelocities(vx={self.v.x!r}, vy={self.v.y!r}, omega={self.v.z!r})"
+
+    def __str__(self):
+        return (f"ChassisVelocities(Vx: {f2(self.v.x)} m/s, Vy: {f2(self.v.y)} m/s, "
+                f"Omega: {f2(self.v.z)} rad/s)")
+
+
+cdef class ChassisAccelerations(_ChassisVector):
+    """ChassisAccelerations(ax=0.0, ay=0.0, alpha=0.0)
+
+    Robot acceleration: ``ax`` forward and ``ay`` left in m/s², ``alpha`` counter-clockwise
+    in rad/s². Fields are mutable; ``==`` follows Java ``Double.compare`` (NaN == NaN,
+    0.0 != −0.0).
+    """
+
+    def __init__(self, double ax=0.0, double ay=0.0, double alpha=0.0):
+        self.v.x = ax
+        self.v.y = ay
+        self.v.z = alpha
+
+    cdef _ChassisVector _new(self, double x, double y, double z):
+        cdef ChassisAccelerations o = ChassisAccelerations.__new__(ChassisAccelerations)
+        o.v.x = x
+        o.v.y = y
+        o.v.z = z
+        return o
+
+    @property
+    def ax(self):
+        """Forward acceleration, m/s²."""
+        return self.v.x
+
+    @ax.setter
+    def ax(self, double value):
+        self.v.x = value
+
+    @property
+    def ay(self):
+        """Leftward acceleration, m/s²."""
+        return self.v.y
+
+    @ay.setter
+    def ay(self, double value):
+        self.v.y = value
+
+    @property
+    def alpha(self):
+        """Angular acceleration, rad/s², counter-clockwise positive."""
+        return self.v.z
+
+    @alpha.setter
+    def alpha(self, double value):
+        self.v.z = value
+
+    def __eq__(self, other):
+        cdef ChassisAccelerations o
+        if isinstance(other, ChassisAccelerations):
+            o = <ChassisAccelerations>other
+            return (java_equals(self.v.x, o.v.x) and java_equals(self.v.y, o.v.y)
+                    and java_equals(self.v.z, o.v.z))
+        return NotImplemented
+
+    def __repr__(self):
+        return f"ChassisAccelerations(ax={self.v.x!r}, ay={self.v.y!r}, alpha={self.v.z!r})"
+
+    def __str__(self):
+        return (f"ChassisAccelerations(Ax: {f2(self.v.x)} m/s², Ay: {f2(self.v.y)} m/s², "
+                f"Alpha: {f2(self.v.z)} rad/s²)")
+
+
+# ---------------------------------------------------------------------------------------
+# Module values: one scalar plus an angle
+
+cdef rot2_t _angle_arg(object angle) except *:
+    if angle is None:
+        return IDENTITY
+    if isinstance(angle, Rotation2d):
+        return (<Rotation2d>angle).r
+    raise TypeError(f"angle must be a Rotation2d, got {type(angle).__name__}")
+
+
+@cython.freelist(128)
+cdef class _ModuleVector:
+    """Shared behaviour of the swerve module values: a scalar and an angle."""
+
+    cdef _ModuleVector _new(self, double m, rot2_t a):
+        raise NotImplementedError
+
+    @property
+    def angle(self):
+        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
+        return new_rotation(self.a)
+
+    @angle.setter
+    def angle(self, Rotation2d value not None):
+        self.a = value.r
+
+    def compareTo(self, _ModuleVector other not None):
+        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
+        cdef double a = self.m, b = other.m
+        if a < b:
+            return -1
+        if a > b:
+            return 1
+        if java_equals(a, b):
+            return 0
+        # Double.compare orders -0.0 before 0.0 and NaN after everything.
+        if a != a:
+            return 1
+        if b != b:
+            return -1
+        return -1 if signbit(a) else 1
+
+    cdef _ModuleVector _lerp(self, _ModuleVector end, double t):
+        if type(end) is not type(self):
+            raise TypeError(f"expected a {type(self).__name__}, got {type(end).__name__}")
+        return self._new(self.m + (end.m - self.m) * t, rot_interp(self.a, end.a, t))
+
+    def __eq__(self, other):
+        cdef _ModuleVector o
+        if type(other) is type(self):
+            o = <_ModuleVector>other
+            return fabs(self.m - o.m) < 1e-9 and rot_eq(self.a, o.a)
+        return NotImplemented
+
+    __hash__ = None  # mutable, tolerant equality
+
+    def __reduce__(self):
+        return (type(self), (self.m, new_rotation(self.a)))
+
+    def __iter__(self):
+        yield self.m
+        yield new_rotation(self.a)
+
+
+cdef class SwerveModuleVelocity(_ModuleVector):
+    """SwerveModuleVelocity(velocity=0.0, angle=Rotation2d())
+
+    The velocity of one swerve module: wheel ``velocity`` in m/s (may be negative) and the
+    module ``angle``. Mutable; ``==`` compares velocity within 1e-9 m/s and the angle
+    within 1e-9. (WPILib 2026: ``SwerveModuleState(speed, angle)``.)
+    """
+
+    def __init__(self, double velocity=0.0, angle=None):
+        self.m = velocity
+        self.a = _angle_arg(angle)
+
+    cdef _ModuleVector _new(self, double m, rot2_t a):
+        return new_module_velocity(m, a)
+
+    @property
+    def velocity(self):
+        """Wheel velocity, m/s."""
+        return self.m
+
+    @velocity.setter
+    def velocity(self, double value):
+        self.m = value
+
+    def optimize(self, Rotation2d currentAngle not None):
+        """Return the equivalent velocity that turns the module by at most 90°.
+
+        If the target angle is more than 90° from ``currentAngle``, the result drives the
+        wheel backwards at the angle + 180°. Returns a new object (2027)."""
+        cdef rot2_t d = rot_minus(self.a, currentAngle.r)
+        if fabs(rot_radians(d) * (180.0 / M_PI)) > 90.0:
+            return new_module_velocity(-self.m, rot_plus(self.a, rot_rad(M_PI)))
+        return new_module_velocity(self.m, self.a)
+
+    def cosineScale(self, Rotation2d currentAngle not None):
+        """Return the velocity scaled by cos(angle − currentAngle), so a module that is
+        still turning does not push sideways. Returns a new object (2027)."""
+        return new_module_velocity(self.m * rot_minus(self.a, currentAngle.r).c, self.a)
+
+    def interpolate(self, SwerveModuleVelocity endValue not None, double t):
+        """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
+        [0, 1]."""
+        return self._lerp(endValue, jmax(0.0, jmin(t, 1.0)))
+
+    def __repr__(self):
+        return f"SwerveModuleVelocity(velocity={self.m!r}, angle={new_rotation(self.a)!r})"
+
+    def __str__(self):
+        return f"SwerveModuleVelocity(Velocity: {f2(self.m)} m/s, Angle: {new_rotation(self.a)})"
+
+
+cdef class SwerveModulePosition(_ModuleVector):
+    """SwerveModulePosition(distance=0.0, angle=Rotation2d())
+
+    The position of one swerve module: distance driven by the wheel in m and the module
+    ``angle``. Mutable; ``==`` compares distance within 1e-9 m and the angle within 1e-9.
+    """
+
+    def __init__(self, double distance=0.0, angle=None):
+        self.m = distance
+        self.a = _angle_arg(angle)
+
+    cdef _ModuleVector _new(self, double m, rot2_t a):
+        return new_module_position(m, a)
+
+    @property
+    def distance(self):
+        """Distance driven by the wheel, m."""
+        return self.m
+
+    @distance.setter
+    def distance(self, double value):
+        self.m = value
+
+    def copy(self):
+        """Return an independent copy."""
+        return new_module_position(self.m, self.a)
+
+    def interpolate(self, SwerveModulePosition endValue not None, double t):
+        """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
+        return self._lerp(endValue, t)
+
+    def __repr__(self):
+        return f"SwerveModulePosition(distance={self.m!r}, angle={new_rotation(self.a)!r})"
+
+    def __str__(self):
+        return f"SwerveModulePosition(Distance: {f2(self.m)} m, Angle: {new_rotation(self.a)})"
+
+
+cdef class SwerveModuleAcceleration(_ModuleVector):
+    """SwerveModuleAcceleration(acceleration=0.0, angle=Rotation2d())
+
+    The acceleration of one swerve module: magnitude in m/s² and the direction ``angle``
+    of the acceleration vector. Mutable; ``==`` compares within 1e-9.
+    """
+
+    def __init__(self, double acceleration=0.0, angle=None):
+        self.m = acceleration
+        self.a = _angle_arg(angle)
+
+    cdef _ModuleVector _new(self, double m, rot2_t a):
+        cdef SwerveModuleAcceleration o = SwerveModuleAcceleration.__new__(SwerveModuleAcceleration)
+        o.m = m
+        o.a = a
+        return o
+
+    @property
+    def acceleration(self):
+        """Acceleration magnitude, m/s²."""
+        return self.m
+
+    @acceleration.setter
+    def acceleration(self, double value):
+        self.m = value
+
+    def interpolate(self, SwerveModuleAcceleration endValue not None, double t):
+        """Interpolate the magnitude linearly and the angle the short way; ``t`` is
+        clamped to [0, 1]."""
+        return self._lerp(endValue, jmax(0.0, jmin(t, 1.0)))
+
+    def __repr__(self):
+        return (f"SwerveModuleAcceleration(acceleration={self.m!r}, "
+                f"angle={new_rotation(self.a)!r})")
+
+    def __str__(self):
+        # WPILib's toString says "Accelerations" (plural); kept for identical logs.
+        return (f"SwerveModuleAccelerations(Acceleration: {f2(self.m)} m/s², "
+                f"Angle: {new_rotation(self.a)})")
+
+
+# ---------------------------------------------------------------------------------------
+# Argument helpers shared by the kinematics classes
+
+cdef double* module_array(object arr, Py_ssize_t n, bint writable, str name) except NULL:
+    """Validate a (n, 2) float64 C-contiguous native-endian array and return its data."""
+    if not cnp.PyArray_Check(arr):
+        raise TypeError(f"{name} must be a sequence of {n} module objects or a numpy array "
+                        f"of shape ({n}, 2), got {type(arr).__name__}")
+    cdef cnp.ndarray a = <cnp.ndarray>arr
+    if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
+        raise TypeError(f"{name} must have dtype float64 (native byte order), got {a.dtype}")
+    if cnp.PyArray_NDIM(a) != 2 or a.shape[0] != n or a.shape[1] != 2:
+        raise ValueError(f"{name} must have shape ({n}, 2), got {(<object>a).shape}")
+    if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
+        raise ValueError(f"{name} must be C-contiguous and aligned")
+    if writable and not cnp.PyArray_ISWRITEABLE(a):
+        raise ValueError(f"{name} must be writeable")
+    return <double*>cnp.PyArray_DATA(a)
+
+
+cdef object as_fast(object seq, str what):
+    """Return a list/tuple view of ``seq`` (no copy for lists and tuples)."""
+    try:
+        return PySequence_Fast(seq, "")
+    except TypeError:
+        raise TypeError(f"{what} must be a sequence, got {type(seq).__name__}") from None
+
+
+cdef object varargs(tuple args, type cls):
+    """WPILib methods take Java varargs: accept f(a, b, c) or f([a, b, c])."""
+    if len(args) == 1 and type(args[0]) is not cls:
+        return args[0]
+    return args
+
+
+cdef inline _ModuleVector item(PyObject** items, Py_ssize_t i, type cls, str what):
+    cdef object o = <object>items[i]
+    if type(o) is not cls:
+        raise TypeError(f"{what}[{i}] must be a {cls.__name__}, got {type(o).__name__}")
+    return <_ModuleVector>o
+
+
+cdef object module_tuple(Py_ssize_t n, const double* m, const double* c, const double* s,
+                         type cls):
+    """Build a tuple of n new module values (drawn from the freelists)."""
+    cdef object t = PyTuple_New(n)
+    cdef _ModuleVector o
+    cdef Py_ssize_t i
+    cdef rot2_t a
+    for i in range(n):
+        a.c = c[i]
+        a.s = s[i]
+        if cls is SwerveModuleVelocity:
+            o = new_module_velocity(m[i], a)
+        elif cls is SwerveModulePosition:
+            o = new_module_position(m[i], a)
+        else:
+            o = SwerveModuleAcceleration.__new__(SwerveModuleAcceleration)
+            o.m = m[i]
+            o.a = a
+        Py_INCREF(o)
+        PyTuple_SET_ITEM(t, i, o)
+    return t
+
+
+cdef int write_modules(object out, Py_ssize_t n, const double* m, const double* c,
+                       const double* s, type cls, str what) except -1:
+    """Store n (scalar, angle) results into caller-owned objects or an (n, 2) array."""
+    cdef Py_ssize_t i
+    cdef double* d
+    cdef _ModuleVector o
+    cdef object fast
+    cdef PyObject** items
+    if cnp.PyArray_Check(out):
+        d = module_array(out, n, True, what)
+        for i in range(n):
+            d[2 * i] = m[i]
+            d[2 * i + 1] = atan2(s[i], c[i])
+        return 0
+    fast = as_fast(out, what)
+    if PySequence_Fast_GET_SIZE(fast) != n:
+        raise ValueError(f"{what} must hold {n} {cls.__name__} objects, "
+                         f"got {PySequence_Fast_GET_SIZE(fast)}")
+    items = PySequence_Fast_ITEMS(fast)
+    for i in range(n):
+        item(items, i, cls, what)
+    for i in range(n):
+        o = <_ModuleVector>items[i]
+        o.m = m[i]
+        o.a.c = c[i]
+        o.a.s = s[i]
+    return 0
+
+
+# ---------------------------------------------------------------------------------------
+cdef class SwerveDriveKinematics:
+    """SwerveDriveKinematics(*moduleTranslations)
+
+    Kinematics of a swerve drive with N ≥ 2 modules at the given robot-relative
+    positions (Translation2d, m), in the order used by every method. Pass the
+    translations as separate arguments or as one sequence.
+
+    Inverse kinematics remembers each module's last heading: when the commanded chassis
+    velocity is exactly zero, or a module's own speed is at most 1e-6 m/s, the module keeps
+    its previous angle instead of snapping to 0. The heading memory lives in this object.
+    The forward (pseudo-inverse) matrices are computed once for a centre of rotation at
+    the robot origin and never change; a ``centerOfRotation`` passed to inverse kinematics
+    only moves the inverse rows, and stays in effect until a different one is passed
+    (compared within 1e-9 m).
+    """
+
+    def __cinit__(self, *moduleTranslations):
+        self.buf = NULL
+
+    def __init__(self, *moduleTranslations):
+        mods = tuple(varargs(moduleTranslations, Translation2d))
+        cdef Py_ssize_t n = len(mods), i, k
+        if n < 2:
+            raise ValueError(f"a swerve drive needs at least 2 modules, got {n}")
+        for i, t in enumerate(mods):
+            if not isinstance(t, Translation2d):
+                raise TypeError(f"module {i} must be a Translation2d, got {type(t).__name__}")
+        if self.buf != NULL:
+            raise RuntimeError("SwerveDriveKinematics is already initialised")
+        self.buf = <double*>PyMem_Malloc(sizeof(double) * (9 * n + 14 * n))
+        if self.buf == NULL:
+            raise MemoryError()
+        self.n = n
+        self.modules = mods
+        self.mx = self.buf
+        self.my = self.mx + n
+        self.rx = self.my + n
+        self.ry = self.rx + n
+        self.hc = self.ry + n
+        self.hs = self.hc + n
+        self.s0 = self.hs + n
+        self.s1 = self.s0 + n
+        self.s2 = self.s1 + n
+        self.f1 = self.s2 + n            # 3 x 2n
+        self.f2 = self.f1 + 6 * n        # 4 x 2n
+        for i in range(n):
+            self.mx[i] = (<Translation2d>mods[i]).v.x
+            self.my[i] = (<Translation2d>mods[i]).v.y
+            self.rx[i] = self.mx[i]
+            self.ry[i] = self.my[i]
+            self.hc[i] = 1.0
+            self.hs[i] = 0.0
+        self.cor = vec(0.0, 0.0)
+        # Forward kinematics is the least-squares inverse of the inverse-kinematics
+        # matrices at CoR = 0. It is built once, so numpy's SVD pseudo-inverse (the same
+        # as WPILib Java's EJML pinv, rank-deficient layouts included) costs nothing later.
+        xs = np.array([self.mx[i] for i in range(n)])
+        ys = np.array([self.my[i] for i in range(n)])
+        m1 = np.zeros((2 * n, 3))
+        m1[0::2, 0] = 1.0
+        m1[1::2, 1] = 1.0
+        m1[0::2, 2] = -ys
+        m1[1::2, 2] = xs
+        m2 = np.zeros((2 * n, 4))
+        m2[0::2, 0] = 1.0
+        m2[1::2, 1] = 1.0
+        m2[0::2, 2] = -xs
+        m2[0::2, 3] = -ys
+        m2[1::2, 2] = -ys
+        m2[1::2, 3] = xs
+        cdef double[:, ::1] p1 = np.ascontiguousarray(np.linalg.pinv(m1))
+        cdef double[:, ::1] p2 = np.ascontiguousarray(np.linalg.pinv(m2))
+        for i in range(2 * n):
+            for k in range(3):
+                self.f1[k * 2 * n + i] = p1[k, i]
+            for k in range(4):
+                self.f2[k * 2 * n + i] = p2[k, i]
+
+    def __dealloc__(self):
+        PyMem_Free(self.buf)
+
+    def __reduce__(self):
+        return (SwerveDriveKinematics, self.modules)
+
+    def __repr__(self):
+        return f"SwerveDriveKinematics({', '.join(repr(m) for m in self.modules)})"
+
+    def getModules(self):
+        """Return the module positions (tuple of Translation2d, m), constructor order."""
+        return self.modules
+
+    def getNumModules(self):
+        """Return the number of modules N."""
+        return self.n
+
+    def resetHeadings(self, *moduleHeadings):
+        """Replace the remembered module headings (N Rotation2d, as arguments or one
+        sequence); used when the chassis velocity is zero or a module is on the CoR."""
+        cdef object fast = as_fast(varargs(moduleHeadings, Rotation2d), "moduleHeadings")
+        cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fast)
+        if k != self.n:
+            raise ValueError(f"expected {self.n} module headings (one per module), got {k}")
+        cdef PyObject** items = PySequence_Fast_ITEMS(fast)
+        for i in range(k):
+            if not isinstance(<object>items[i], Rotation2d):
+                raise TypeError(f"moduleHeadings[{i}] must be a Rotation2d, "
+                                f"got {type(<object>items[i]).__name__}")
+        for i in range(k):
+            self.hc[i] = (<Rotation2d>items[i]).r.c
+            self.hs[i] = (<Rotation2d>items[i]).r.s
+
+    cdef void _set_cor(self, vec2_t cor) noexcept:
+        cdef Py_ssize_t i
+        if not vec_eq(cor, self.cor):
+            for i in range(self.n):
+                self.rx[i] = self.mx[i] - cor.x
+                self.ry[i] = self.my[i] - cor.y
+            self.cor = cor
+
+    cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1:
+        # Exact zero returns the remembered headings without looking at the CoR.
+        if not (cv.v.x == 0.0 and cv.v.y == 0.0 and cv.v.z == 0.0):
+            self._set_cor(cor.v)
+        swerve_ik(self.n, self.rx, self.ry, cv.v.x, cv.v.y, cv.v.z, self.hc, self.hs,
+                  self.s0, self.s1, self.s2)
+        return 0
+
+    def toSwerveModuleVelocities(self, ChassisVelocities chassisVelocities not None,
+                                 Translation2d centerOfRotation not None=ORIGIN):
+        """Return the N module velocities (tuple of SwerveModuleVelocity) that produce
+        ``chassisVelocities`` (robot-relative, m/s and rad/s), rotating about
+        ``centerOfRotation`` (robot frame, m). Module speeds are ≥ 0; the angles follow the
+        heading-memory rules in the class docstring. Not desaturated."""
+        self._ik(chassisVelocities, centerOfRotation)
+        return module_tuple(self.n, self.s0, self.s1, self.s2, SwerveModuleVelocity)
+
+    def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
+        """Same as :meth:`toSwerveModuleVelocities` about the robot origin."""
+        self._ik(chassisVelocities, ORIGIN)
+        return module_tuple(self.n, self.s0, self.s1, self.s2, SwerveModuleVelocity)
+
+    def toSwerveModuleVelocitiesInto(self, ChassisVelocities chassisVelocities not None, out,
+                                     Translation2d centerOfRotation not None=ORIGIN):
+        """Allocation-free :meth:`toSwerveModuleVelocities`.
+
+        ``out`` is either a list/tuple of N SwerveModuleVelocity objects, updated in place,
+        or a float64 C-contiguous writeable numpy array of shape (N, 2) that receives
+        ``[velocity m/s, angle rad]`` per module. Returns None."""
+        self._ik(chassisVelocities, centerOfRotation)
+        write_modules(out, self.n, self.s0, self.s1, self.s2, SwerveModuleVelocity, "out")
+
+    cdef int _read(self, object states, type cls, str what) except -1:
+        """Load N (scalar, cos, sin) from objects or an (N, 2) array into the scratch."""
+        cdef Py_ssize_t i, n = self.n
+        cdef const double* d
+        cdef _ModuleVector o
+        cdef object fast
+        cdef PyObject** items
+        if cnp.PyArray_Check(states):
+            d = module_array(states, n, False, what)
+            for i in range(n):
+                self.s0[i] = d[2 * i]
+                self.s1[i] = cos(d[2 * i + 1])
+                self.s2[i] = sin(d[2 * i + 1])
+            return 0
+        fast = as_fast(states, what)
+        if PySequence_Fast_GET_SIZE(fast) != n:
+            raise ValueError(f"expected {n} {cls.__name__} objects (one per module), "
+                             f"got {PySequence_Fast_GET_SIZE(fast)}")
+        items = PySequence_Fast_ITEMS(fast)
+        for i in range(n):
+            o = item(items, i, cls, what)
+            self.s0[i] = o.m
+            self.s1[i] = o.a.c
+            self.s2[i] = o.a.s
+        return 0
+
+    def toChassisVelocities(self, *moduleVelocities):
+        """Return the least-squares ChassisVelocities (robot-relative) for N measured
+        module velocities (SwerveModuleVelocity, as arguments or one sequence)."""
+        cdef double r[3]
+        self._read(varargs(moduleVelocities, SwerveModuleVelocity), SwerveModuleVelocity,
+                   "moduleVelocities")
+        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
+        return new_chassis_velocities(r[0], r[1], r[2])
+
+    def toChassisVelocitiesInto(self, moduleVelocities, ChassisVelocities out not None):
+        """Allocation-free :meth:`toChassisVelocities`: ``moduleVelocities`` is a sequence
+        of N SwerveModuleVelocity or an (N, 2) float64 array ``[velocity m/s, angle rad]``;
+        the result is written into ``out``. Returns None."""
+        self._read(moduleVelocities, SwerveModuleVelocity, "moduleVelocities")
+        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, &out.v.x)
+
+    def toTwist2d(self, *args):
+        """toTwist2d(*moduleDeltas) or toTwist2d(start, end)
+
+        Return the Twist2d (m, rad) of the robot for N module position deltas
+        (SwerveModulePosition: distance driven since the last update and the current
+        angle). With two sequences ``start`` and ``end``, the deltas are
+        ``end.distance − start.distance`` at the **end** angle, as in WPILib."""
+        cdef double r[3]
+        if len(args) == 2 and type(args[0]) is not SwerveModulePosition:
+            self._deltas(args[0], args[1])
+        else:
+            self._read(varargs(args, SwerveModulePosition), SwerveModulePosition,
+                       "moduleDeltas")
+        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
+        return new_twist(r[0], r[1], r[2])
+
+    cdef int _deltas(self, object start, object end) except -1:
+        cdef object fs = as_fast(start, "start"), fe = as_fast(end, "end")
+        cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fs)
+        if PySequence_Fast_GET_SIZE(fe) != k:
+            raise ValueError(f"Inconsistent number of modules: start has {k}, "
+                             f"end has {PySequence_Fast_GET_SIZE(fe)}")
+        if k != self.n:
+            raise ValueError(f"expected {self.n} SwerveModulePosition objects (one per module), "
+                             f"got {k}")
+        cdef PyObject** a = PySequence_Fast_ITEMS(fs)
+        cdef PyObject** b = PySequence_Fast_ITEMS(fe)
+        cdef _ModuleVector p, q
+        for i in range(k):
+            p = item(a, i, SwerveModulePosition, "start")
+            q = item(b, i, SwerveModulePosition, "end")
+            self.s0[i] = q.m - p.m
+            self.s1[i] = q.a.c
+            self.s2[i] = q.a.s
+        return 0
+
+    def toTwist2dInto(self, moduleDeltas, Twist2d out not None):
+        """Allocation-free :meth:`toTwist2d` for N deltas (SwerveModulePosition objects or an
+        (N, 2) float64 array ``[distance m, angle rad]``), written into ``out``."""
+        cdef double r[3]
+        self._read(moduleDeltas, SwerveModulePosition, "moduleDeltas")
+        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
+        out.dx = r[0]
+        out.dy = r[1]
+        out.dtheta = r[2]
+
+    def interpolate(self, startValue, endValue, double t):
+        """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
+        cdef object fs = as_fast(startValue, "startValue"), fe = as_fast(endValue, "endValue")
+        cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fs)
+        if PySequence_Fast_GET_SIZE(fe) != k:
+            raise ValueError(f"Inconsistent number of modules: start has {k}, "
+                             f"end has {PySequence_Fast_GET_SIZE(fe)}")
+        return tuple([(<SwerveModulePosition?>fs[i]).interpolate(fe[i], t) for i in range(k)])
+
+    def copy(self, positions):
+        """Return independent copies of the module positions (tuple)."""
+        return tuple([(<SwerveModulePosition?>p).copy() for p in positions])
+
+    def copyInto(self, positions, output):
+        """Copy each position's fields into the matching object of ``output``."""
+        cdef object fs = as_fast(positions, "positions"), fo = as_fast(output, "output")
+        cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fs)
+        if PySequence_Fast_GET_SIZE(fo) != k:
+            raise ValueError(f"Inconsistent number of modules: positions has {k}, "
+                             f"output has {PySequence_Fast_GET_SIZE(fo)}")
+        cdef PyObject** a = PySequence_Fast_ITEMS(fs)
+        cdef PyObject** b = PySequence_Fast_ITEMS(fo)
+        for i in range(k):
+            item(a, i, SwerveModulePosition, "positions")
+            item(b, i, SwerveModulePosition, "output")
+        for i in range(k):
+            (<_ModuleVector>b[i]).m = (<_ModuleVector>a[i]).m
+            (<_ModuleVector>b[i]).a = (<_ModuleVector>a[i]).a
+
+    def toSwerveModuleAccelerations(self, ChassisAccelerations chassisAccelerations not None,
+                                    double angularVelocity=0.0,
+                                    Translation2d centerOfRotation not None=ORIGIN):
+        """Return the N module accelerations (SwerveModuleAcceleration: magnitude m/s² and
+        direction) for ``chassisAccelerations`` while turning at ``angularVelocity`` rad/s
+        about ``centerOfRotation`` (m): a_i = a + α × r_i − ω² r_i.
+
+        WPILib's rules are kept: an exactly zero ``chassisAccelerations`` gives all-zero
+        results even when ``angularVelocity`` ≠ 0, and a module whose acceleration is at
+        most 1e-6 gets angle 0 (there is no heading memory for accelerations)."""
+        cdef ChassisAccelerations ca = chassisAccelerations
+        if not (ca.v.x == 0.0 and ca.v.y == 0.0 and ca.v.z == 0.0):
+            self._set_cor(centerOfRotation.v)
+        swerve_ik_accel(self.n, self.rx, self.ry, ca.v.x, ca.v.y, angularVelocity, ca.v.z,
+                        self.s0, self.s1, self.s2)
+        return module_tuple(self.n, self.s0, self.s1, self.s2, SwerveModuleAcceleration)
+
+    def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None):
+        """Same as :meth:`toSwerveModuleAccelerations` with zero angular velocity about
+        the robot origin."""
+        return self.toSwerveModuleAccelerations(chassisAccelerations, 0.0, ORIGIN)
+
+    def toChassisAccelerations(self, *moduleAccelerations):
+        """Return the least-squares ChassisAccelerations for N module accelerations
+        (as arguments or one sequence). The ω² estimate of the solve is discarded."""
+        cdef double r[4]
+        self._read(varargs(moduleAccelerations, SwerveModuleAcceleration),
+                   SwerveModuleAcceleration, "moduleAccelerations")
+        forward_solve(4, self.n, self.f2, self.s0, self.s1, self.s2, r)
+        return ChassisAccelerations(r[0], r[1], r[3])
+
+    @staticmethod
+    def desaturateWheelVelocities(moduleVelocities, *args):
+        """desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed) or
+        desaturateWheelVelocities(moduleVelocities, desiredChassisVelocity,
+        attainableMaxModuleSpeed, attainableMaxTranslationalSpeed,
+        attainableMaxRotationalVelocity)
+
+        Return new module velocities (tuple) scaled down so no wheel exceeds its limit,
+        keeping their ratios and angles. The one-limit form scales only when the fastest
+        wheel is above ``attainableMaxSpeed`` (m/s). The five-argument form also scales by
+        how hard the driver asks (``desiredChassisVelocity`` against the translational m/s
+        and rotational rad/s limits), so it can slow unsaturated wheels; it leaves the
+        velocities unchanged if either chassis limit or every wheel speed is zero. The
+        input is not modified (2027)."""
+        cdef object fast = as_fast(moduleVelocities, "moduleVelocities")
+        cdef Py_ssize_t i, n = PySequence_Fast_GET_SIZE(fast)
+        cdef PyObject** items = PySequence_Fast_ITEMS(fast)
+        cdef double div, mul
+        desat_objects(items, n, args, &div, &mul)
+        cdef object t = PyTuple_New(n)
+        cdef _ModuleVector o
+        for i in range(n):
+            o = <_ModuleVector>items[i]
+            o = new_module_velocity(o.m / div * mul, o.a)
+            Py_INCREF(o)
+            PyTuple_SET_ITEM(t, i, o)
+        return t
+
+    @staticmethod
+    def desaturateWheelVelocitiesInPlace(moduleVelocities, *args):
+        """Allocation-free :meth:`desaturateWheelVelocities` (same two forms) that rescales
+        the caller's N SwerveModuleVelocity objects, or column 0 of an (N, 2) float64
+        array ``[velocity m/s, angle rad]``, in place. Returns None."""
+        cdef Py_ssize_t i, n
+        cdef double* d
+        cdef double div, mul
+        cdef desat_t p
+        cdef object fast
+        cdef PyObject** items
+        if cnp.PyArray_Check(moduleVelocities):
+            n = cnp.PyArray_DIM(<cnp.ndarray>moduleVelocities, 0) if cnp.PyArray_NDIM(
+                <cnp.ndarray>moduleVelocities) == 2 else -1
+            d = module_array(moduleVelocities, n, True, "moduleVelocities")
+            p = parse_desat(args)
+            desaturate_factors(max_abs(n, d, 2), &p, &div, &mul)
+            for i in range(n):
+                d[2 * i] = d[2 * i] / div * mul
+            return
+        fast = as_fast(moduleVelocities, "moduleVelocities")
+        n = PySequence_Fast_GET_SIZE(fast)
+        items = PySequence_Fast_ITEMS(fast)
+        desat_objects(items, n, args, &div, &mul)
+        for i in range(n):
+            (<_ModuleVector>items[i]).m = (<_ModuleVector>items[i]).m / div * mul
+
+
+# ---------------------------------------------------------------------------------------
+# Desaturation: parse the two Java overloads once, then one kernel decides the factors.
+
+cdef desat_t parse_desat(tuple args) except *:
+    cdef desat_t p
+    memset(&p, 0, sizeof(p))
+    if len(args) == 1:
+        p.five = False
+        p.max_speed = args[0]
+        return p
+    if len(args) != 4:
+        raise TypeError("desaturateWheelVelocities takes (moduleVelocities, attainableMaxSpeed) "
+                        "or (moduleVelocities, desiredChassisVelocity, attainableMaxModuleSpeed, "
+                        "attainableMaxTranslationalSpeed, attainableMaxRotationalVelocity)")
+    if not isinstance(args[0], ChassisVelocities):
+        raise TypeError(f"desiredChassisVelocity must be a ChassisVelocities, "
+                        f"got {type(args[0]).__name__}")
+    p.five = True
+    p.desired = (<ChassisVelocities>args[0]).v
+    p.max_module = args[1]
+    p.max_trans = args[2]
+    p.max_rot = args[3]
+    return p
+
+
+cdef int desat_objects(PyObject** items, Py_ssize_t n, tuple args,
+                       double* div, double* mul) except -1:
+    """Check the N objects and compute the factors v' = v / div * mul."""
+    cdef Py_ssize_t i
+    cdef double r = 0.0
+    cdef desat_t p = parse_desat(args)
+    for i in range(n):
+        r = jmax(r, fabs(item(items, i, SwerveModuleVelocity, "moduleVelocities").m))
+    desaturate_factors(r, &p, div, mul)
+    return 0

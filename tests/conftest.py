@@ -1,0 +1,64 @@
+"""Shared pytest configuration for the drivekin test suite.
+
+* Hypothesis profiles: ``dev`` (default, quick) and ``ci`` (more examples). Pick one with
+  the environment variable ``HYPOTHESIS_PROFILE``.
+* ``tests/`` is put on ``sys.path`` so test modules in sub-directories can
+  ``import strategies`` (there are no ``__init__.py`` files in the test tree).
+* The robotpy-wpimath oracle is optional: ``wpimath_kin`` / ``wpimath_geo`` fixtures and
+  :func:`require_wpimath` skip cleanly when it is not installed.
+"""
+from __future__ import annotations
+
+import os
+import sys
+import types
+
+import pytest
+from hypothesis import HealthCheck, settings
+
+_TESTS_DIR = os.path.dirname(os.path.abspath(__file__))
+if _TESTS_DIR not in sys.path:
+    sys.path.insert(0, _TESTS_DIR)
+
+# Layout strategies reject ill-conditioned module sets, and a few tests build many
+# objects per example; neither should trip hypothesis' speed heuristics.
+_COMMON_SUPPRESS = [HealthCheck.too_slow, HealthCheck.filter_too_much]
+
+settings.register_profile(
+    "dev",
+    max_examples=100,
+    deadline=None,
+    suppress_health_check=_COMMON_SUPPRESS,
+)
+settings.register_profile(
+    "ci",
+    max_examples=500,
+    deadline=None,
+    suppress_health_check=_COMMON_SUPPRESS,
+    print_blob=True,
+    database=None,
+)
+settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "dev"))
+
+
+def require_wpimath() -> types.SimpleNamespace:
+    """Import robotpy-wpimath (the 2026 oracle) or skip the calling test/module.
+
+    Returns a namespace with ``geometry`` and ``kinematics`` sub-modules.
+    """
+    pytest.importorskip("wpimath")
+    geometry = pytest.importorskip("wpimath.geometry")
+    kinematics = pytest.importorskip("wpimath.kinematics")
+    return types.SimpleNamespace(geometry=geometry, kinematics=kinematics)
+
+
+@pytest.fixture(scope="session")
+def wpimath_kin():
+    """``wpimath.kinematics`` (robotpy 2026 names); skips when robotpy is absent."""
+    return require_wpimath().kinematics
+
+
+@pytest.fixture(scope="session")
+def wpimath_geo():
+    """``wpimath.geometry`` (robotpy 2026 names); skips when robotpy is absent."""
+    return require_wpimath().geometry
