@@ -3,7 +3,7 @@
 # Output parameters come last and are marked OUT. Formulas follow WPILib 2027
 # (see ../shared/reference/wpilib-kinematics.md); the comments say where they are subtle.
 
-from libc.math cimport atan2, cos, fabs, hypot, sin
+from libc.math cimport M_PI, atan2, cos, fabs, hypot, sin, sqrt
 from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 
 # ---------------------------------------------------------------------------------------
@@ -38,6 +38,20 @@ cdef inline rot2_t rot_xy(double x, double y) noexcept nogil:
         r.s = 0.0
     return r
 
+cdef inline rot2_t rot_unit(double x, double y) noexcept nogil:
+    # rot_xy for vectors that are unit length up to rounding (products of rotations):
+    # the same result, but sqrt(x² + y²) is inlined where libm hypot is a call that
+    # guards against overflow these inputs cannot reach.
+    cdef rot2_t r
+    cdef double m = sqrt(x * x + y * y)
+    if m > 1e-6:
+        r.c = x / m
+        r.s = y / m
+    else:
+        r.c = 1.0
+        r.s = 0.0
+    return r
+
 cdef inline rot2_t rot_rad(double theta) noexcept nogil:
     cdef rot2_t r
     r.c = cos(theta)
@@ -49,10 +63,10 @@ cdef inline double rot_radians(rot2_t r) noexcept nogil:
 
 cdef inline rot2_t rot_plus(rot2_t a, rot2_t b) noexcept nogil:
     # a.rotateBy(b), re-normalised through the (x, y) constructor as in WPILib.
-    return rot_xy(a.c * b.c - a.s * b.s, a.c * b.s + a.s * b.c)
+    return rot_unit(a.c * b.c - a.s * b.s, a.c * b.s + a.s * b.c)
 
 cdef inline rot2_t rot_neg(rot2_t a) noexcept nogil:
-    return rot_xy(a.c, -a.s)
+    return rot_unit(a.c, -a.s)
 
 cdef inline rot2_t rot_minus(rot2_t a, rot2_t b) noexcept nogil:
     return rot_plus(a, rot_neg(b))
@@ -120,26 +134,28 @@ cdef inline pose2_t twist_exp(double dx, double dy, double dtheta) noexcept nogi
     else:
         s = st / dtheta
         c = (1.0 - ct) / dtheta
-    return pose(vec(dx * s - dy * c, dx * c + dy * s), rot_xy(ct, st))
+    return pose(vec(dx * s - dy * c, dx * c + dy * s), rot_unit(ct, st))
 
-cdef inline twist2_t transform_log(pose2_t tr) noexcept nogil:
+cdef inline twist2_t transform_log_angle(pose2_t tr, double theta) noexcept nogil:
+    # theta must equal atan2(tr.r.s, tr.r.c); callers that already know it skip the atan2.
     cdef twist2_t tw
-    cdef double theta = rot_radians(tr.r)
     cdef double h = 0.5 * theta
     cdef double cm1 = tr.r.c - 1.0
-    cdef double k, m
+    cdef double k
     # The branch tests cos - 1, not theta: active up to |theta| ~ 4.5e-5.
     if fabs(cm1) < 1e-9:
         k = 1.0 - theta * theta / 12.0
     else:
         k = -(h * tr.r.s) / cm1
-    # WPILib rotates by the normalised (k, -h) and then scales by its length.
-    m = hypot(k, h)
-    cdef vec2_t part = vec_rotate(tr.t, rot_xy(k, -h))
-    tw.dx = part.x * m
-    tw.dy = part.y * m
+    # WPILib rotates by the normalised (k, -h) and rescales by hypot(k, h); that is the
+    # linear map below up to rounding (k >= 0 here, so the normalisation never degenerates).
+    tw.dx = k * tr.t.x + h * tr.t.y
+    tw.dy = -h * tr.t.x + k * tr.t.y
     tw.dtheta = theta
     return tw
+
+cdef inline twist2_t transform_log(pose2_t tr) noexcept nogil:
+    return transform_log_angle(tr, rot_radians(tr.r))
 
 # ---------------------------------------------------------------------------------------
 # ChassisVelocities
@@ -147,7 +163,12 @@ cdef inline twist2_t transform_log(pose2_t tr) noexcept nogil:
 cdef inline vec3_t chassis_discretize(double vx, double vy, double omega, double dt) noexcept nogil:
     # omega*dt goes through a Rotation2d, so it is wrapped; dt = 0 divides by zero (as WPILib).
     cdef vec3_t out
-    cdef twist2_t tw = transform_log(pose(vec(vx * dt, vy * dt), rot_rad(omega * dt)))
+    cdef double theta = omega * dt
+    cdef pose2_t tr = pose(vec(vx * dt, vy * dt), rot_rad(theta))
+    # atan2(sin θ, cos θ) returns θ itself (to rounding) inside (−π, π); only outside it
+    # does the wrap change anything, so the atan2 is paid only there.
+    cdef twist2_t tw = transform_log_angle(
+        tr, theta if fabs(theta) < 3.0 else rot_radians(tr.r))
     out.x = tw.dx / dt
     out.y = tw.dy / dt
     out.z = tw.dtheta / dt
@@ -164,7 +185,6 @@ cdef inline void swerve_ik(Py_ssize_t n, const double* rx, const double* ry,
                            ) noexcept nogil:
     cdef Py_ssize_t i
     cdef double x, y, v
-    cdef rot2_t r
     if vx == 0.0 and vy == 0.0 and omega == 0.0:
         # Exact zero: report the remembered headings and leave them alone.
         for i in range(n):
@@ -179,9 +199,9 @@ cdef inline void swerve_ik(Py_ssize_t n, const double* rx, const double* ry,
         y = 0.0 * vx + vy + rx[i] * omega
         v = hypot(x, y)
         if v > 1e-6:
-            r = rot_xy(x, y)
-            hc[i] = r.c
-            hs[i] = r.s
+            # Rotation2d(x, y) normalises by this same hypot.
+            hc[i] = x / v
+            hs[i] = y / v
         speed[i] = v
         oc[i] = hc[i]
         os[i] = hs[i]
@@ -192,7 +212,6 @@ cdef inline void swerve_ik_accel(Py_ssize_t n, const double* rx, const double* r
                                  ) noexcept nogil:
     cdef Py_ssize_t i
     cdef double x, y, a, w2 = omega * omega
-    cdef rot2_t r
     if ax == 0.0 and ay == 0.0 and alpha == 0.0:
         # WPILib skips the centripetal term here even when omega != 0.
         for i in range(n):
@@ -207,9 +226,8 @@ cdef inline void swerve_ik_accel(Py_ssize_t n, const double* rx, const double* r
         a = hypot(x, y)
         acc[i] = a
         if a > 1e-6:
-            r = rot_xy(x, y)
-            oc[i] = r.c
-            os[i] = r.s
+            oc[i] = x / a
+            os[i] = y / a
         else:
             # No heading memory for accelerations: zero magnitude points along +x.
             oc[i] = 1.0
@@ -222,15 +240,14 @@ cdef inline void forward_solve(Py_ssize_t rows, Py_ssize_t n, const double* f,
     # out = F . w with w = [mag_i cos_i, mag_i sin_i, ...]; F is rows x 2n, row-major
     # (the pseudo-inverse of the inverse-kinematics matrix, fixed at CoR = 0).
     cdef Py_ssize_t k, i
-    cdef double acc
-    cdef const double* row
+    cdef double wx, wy
     for k in range(rows):
-        row = f + k * 2 * n
-        acc = 0.0
-        for i in range(n):
-            acc = acc + row[2 * i] * (mag[i] * c[i])
-            acc = acc + row[2 * i + 1] * (mag[i] * s[i])
-        out[k] = acc
+        out[k] = 0.0
+    for i in range(n):
+        wx = mag[i] * c[i]
+        wy = mag[i] * s[i]
+        for k in range(rows):
+            out[k] = out[k] + f[k * 2 * n + 2 * i] * wx + f[k * 2 * n + 2 * i + 1] * wy
 
 cdef inline double max_abs(Py_ssize_t n, const double* v, Py_ssize_t stride) noexcept nogil:
     # max |v_i| from 0 with Java Math.max semantics (a NaN speed makes the result NaN).

@@ -13,7 +13,8 @@ from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from libc.string cimport memset
 from cpython.ref cimport Py_INCREF, PyObject
 from cpython.sequence cimport PySequence_Fast, PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
-from cpython.tuple cimport PyTuple_New, PyTuple_SET_ITEM
+from cpython.list cimport PyList_CheckExact
+from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, atan2, cos, fabs, signbit, sin
 
 import numpy as np
@@ -516,26 +517,39 @@ cdef double* module_array(object arr, Py_ssize_t n, bint writable, str name) exc
     return <double*>cnp.PyArray_DATA(a)
 
 
-cdef object as_fast(object seq, str what):
+cdef extern from *:
+    """
+    static inline int drivekin_exact(PyObject *o, PyObject *t) {
+        return Py_TYPE(o) == (PyTypeObject *)t;
+    }
+    """
+    # Exact type test on a borrowed pointer: no reference counting on the hot loops.
+    bint exact_type "drivekin_exact"(PyObject* o, PyObject* t) noexcept
+
+
+cdef inline object as_fast(object seq, str what):
     """Return a list/tuple view of ``seq`` (no copy for lists and tuples)."""
+    if PyTuple_CheckExact(seq) or PyList_CheckExact(seq):
+        return seq
     try:
         return PySequence_Fast(seq, "")
     except TypeError:
         raise TypeError(f"{what} must be a sequence, got {type(seq).__name__}") from None
 
 
-cdef object varargs(tuple args, type cls):
-    """WPILib methods take Java varargs: accept f(a, b, c) or f([a, b, c])."""
-    if len(args) == 1 and type(args[0]) is not cls:
-        return args[0]
-    return args
+cdef object varargs(object first, tuple more, type cls):
+    """WPILib methods take Java varargs: accept f(a, b, c) or f([a, b, c]). Taking the
+    first argument by name keeps the common one-sequence call free of tuple packing."""
+    if not more and type(first) is not cls:
+        return first
+    return (first,) + more
 
 
 cdef inline _ModuleVector item(PyObject** items, Py_ssize_t i, type cls, str what):
-    cdef object o = <object>items[i]
-    if type(o) is not cls:
-        raise TypeError(f"{what}[{i}] must be a {cls.__name__}, got {type(o).__name__}")
-    return <_ModuleVector>o
+    if not exact_type(items[i], <PyObject*>cls):
+        raise TypeError(f"{what}[{i}] must be a {cls.__name__}, "
+                        f"got {type(<object>items[i]).__name__}")
+    return <_ModuleVector>items[i]
 
 
 cdef object module_tuple(Py_ssize_t n, const double* m, const double* c, const double* s,
@@ -611,7 +625,9 @@ cdef class SwerveDriveKinematics:
         self.buf = NULL
 
     def __init__(self, *moduleTranslations):
-        mods = tuple(varargs(moduleTranslations, Translation2d))
+        if not moduleTranslations:
+            raise ValueError("a swerve drive needs at least 2 modules, got 0")
+        mods = tuple(varargs(moduleTranslations[0], moduleTranslations[1:], Translation2d))
         cdef Py_ssize_t n = len(mods), i, k
         if n < 2:
             raise ValueError(f"a swerve drive needs at least 2 modules, got {n}")
@@ -686,10 +702,10 @@ cdef class SwerveDriveKinematics:
         """Return the number of modules N."""
         return self.n
 
-    def resetHeadings(self, *moduleHeadings):
+    def resetHeadings(self, moduleHeadings, *more):
         """Replace the remembered module headings (N Rotation2d, as arguments or one
         sequence); used when the chassis velocity is zero or a module is on the CoR."""
-        cdef object fast = as_fast(varargs(moduleHeadings, Rotation2d), "moduleHeadings")
+        cdef object fast = as_fast(varargs(moduleHeadings, more, Rotation2d), "moduleHeadings")
         cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fast)
         if k != self.n:
             raise ValueError(f"expected {self.n} module headings (one per module), got {k}")
@@ -762,17 +778,18 @@ cdef class SwerveDriveKinematics:
                              f"got {PySequence_Fast_GET_SIZE(fast)}")
         items = PySequence_Fast_ITEMS(fast)
         for i in range(n):
-            o = item(items, i, cls, what)
-            self.s0[i] = o.m
-            self.s1[i] = o.a.c
-            self.s2[i] = o.a.s
+            if not exact_type(items[i], <PyObject*>cls):
+                item(items, i, cls, what)       # raises the TypeError
+            self.s0[i] = (<_ModuleVector>items[i]).m
+            self.s1[i] = (<_ModuleVector>items[i]).a.c
+            self.s2[i] = (<_ModuleVector>items[i]).a.s
         return 0
 
-    def toChassisVelocities(self, *moduleVelocities):
+    def toChassisVelocities(self, moduleVelocities, *more):
         """Return the least-squares ChassisVelocities (robot-relative) for N measured
         module velocities (SwerveModuleVelocity, as arguments or one sequence)."""
         cdef double r[3]
-        self._read(varargs(moduleVelocities, SwerveModuleVelocity), SwerveModuleVelocity,
+        self._read(varargs(moduleVelocities, more, SwerveModuleVelocity), SwerveModuleVelocity,
                    "moduleVelocities")
         forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
         return new_chassis_velocities(r[0], r[1], r[2])
@@ -784,7 +801,7 @@ cdef class SwerveDriveKinematics:
         self._read(moduleVelocities, SwerveModuleVelocity, "moduleVelocities")
         forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, &out.v.x)
 
-    def toTwist2d(self, *args):
+    def toTwist2d(self, first, *more):
         """toTwist2d(*moduleDeltas) or toTwist2d(start, end)
 
         Return the Twist2d (m, rad) of the robot for N module position deltas
@@ -792,10 +809,10 @@ cdef class SwerveDriveKinematics:
         angle). With two sequences ``start`` and ``end``, the deltas are
         ``end.distance − start.distance`` at the **end** angle, as in WPILib."""
         cdef double r[3]
-        if len(args) == 2 and type(args[0]) is not SwerveModulePosition:
-            self._deltas(args[0], args[1])
+        if len(more) == 1 and type(first) is not SwerveModulePosition:
+            self._deltas(first, more[0])
         else:
-            self._read(varargs(args, SwerveModulePosition), SwerveModulePosition,
+            self._read(varargs(first, more, SwerveModulePosition), SwerveModulePosition,
                        "moduleDeltas")
         forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
         return new_twist(r[0], r[1], r[2])
@@ -881,17 +898,20 @@ cdef class SwerveDriveKinematics:
         the robot origin."""
         return self.toSwerveModuleAccelerations(chassisAccelerations, 0.0, ORIGIN)
 
-    def toChassisAccelerations(self, *moduleAccelerations):
+    def toChassisAccelerations(self, moduleAccelerations, *more):
         """Return the least-squares ChassisAccelerations for N module accelerations
         (as arguments or one sequence). The ω² estimate of the solve is discarded."""
         cdef double r[4]
-        self._read(varargs(moduleAccelerations, SwerveModuleAcceleration),
+        self._read(varargs(moduleAccelerations, more, SwerveModuleAcceleration),
                    SwerveModuleAcceleration, "moduleAccelerations")
         forward_solve(4, self.n, self.f2, self.s0, self.s1, self.s2, r)
         return ChassisAccelerations(r[0], r[1], r[3])
 
     @staticmethod
-    def desaturateWheelVelocities(moduleVelocities, *args):
+    def desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed,
+                                  attainableMaxModuleSpeed=None,
+                                  attainableMaxTranslationalSpeed=None,
+                                  attainableMaxRotationalVelocity=None):
         """desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed) or
         desaturateWheelVelocities(moduleVelocities, desiredChassisVelocity,
         attainableMaxModuleSpeed, attainableMaxTranslationalSpeed,
@@ -903,12 +923,16 @@ cdef class SwerveDriveKinematics:
         how hard the driver asks (``desiredChassisVelocity`` against the translational m/s
         and rotational rad/s limits), so it can slow unsaturated wheels; it leaves the
         velocities unchanged if either chassis limit or every wheel speed is zero. The
-        input is not modified (2027)."""
+        input is not modified (2027). In the five-argument form the second parameter is
+        the desired ChassisVelocities."""
+        cdef desat_t p = parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
+                                     attainableMaxTranslationalSpeed,
+                                     attainableMaxRotationalVelocity)
         cdef object fast = as_fast(moduleVelocities, "moduleVelocities")
         cdef Py_ssize_t i, n = PySequence_Fast_GET_SIZE(fast)
         cdef PyObject** items = PySequence_Fast_ITEMS(fast)
         cdef double div, mul
-        desat_objects(items, n, args, &div, &mul)
+        desat_objects(items, n, &p, &div, &mul)
         cdef object t = PyTuple_New(n)
         cdef _ModuleVector o
         for i in range(n):
@@ -919,21 +943,25 @@ cdef class SwerveDriveKinematics:
         return t
 
     @staticmethod
-    def desaturateWheelVelocitiesInPlace(moduleVelocities, *args):
+    def desaturateWheelVelocitiesInPlace(moduleVelocities, attainableMaxSpeed,
+                                         attainableMaxModuleSpeed=None,
+                                         attainableMaxTranslationalSpeed=None,
+                                         attainableMaxRotationalVelocity=None):
         """Allocation-free :meth:`desaturateWheelVelocities` (same two forms) that rescales
         the caller's N SwerveModuleVelocity objects, or column 0 of an (N, 2) float64
         array ``[velocity m/s, angle rad]``, in place. Returns None."""
         cdef Py_ssize_t i, n
         cdef double* d
         cdef double div, mul
-        cdef desat_t p
+        cdef desat_t p = parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
+                                     attainableMaxTranslationalSpeed,
+                                     attainableMaxRotationalVelocity)
         cdef object fast
         cdef PyObject** items
         if cnp.PyArray_Check(moduleVelocities):
             n = cnp.PyArray_DIM(<cnp.ndarray>moduleVelocities, 0) if cnp.PyArray_NDIM(
                 <cnp.ndarray>moduleVelocities) == 2 else -1
             d = module_array(moduleVelocities, n, True, "moduleVelocities")
-            p = parse_desat(args)
             desaturate_factors(max_abs(n, d, 2), &p, &div, &mul)
             for i in range(n):
                 d[2 * i] = d[2 * i] / div * mul
@@ -941,7 +969,7 @@ cdef class SwerveDriveKinematics:
         fast = as_fast(moduleVelocities, "moduleVelocities")
         n = PySequence_Fast_GET_SIZE(fast)
         items = PySequence_Fast_ITEMS(fast)
-        desat_objects(items, n, args, &div, &mul)
+        desat_objects(items, n, &p, &div, &mul)
         for i in range(n):
             (<_ModuleVector>items[i]).m = (<_ModuleVector>items[i]).m / div * mul
 
@@ -949,35 +977,36 @@ cdef class SwerveDriveKinematics:
 # ---------------------------------------------------------------------------------------
 # Desaturation: parse the two Java overloads once, then one kernel decides the factors.
 
-cdef desat_t parse_desat(tuple args) except *:
+cdef desat_t parse_desat(object first, object mm, object mt, object mr) except *:
     cdef desat_t p
     memset(&p, 0, sizeof(p))
-    if len(args) == 1:
+    if type(first) is not ChassisVelocities:
+        if mm is not None or mt is not None or mr is not None:
+            raise TypeError("the five-argument desaturateWheelVelocities form takes a "
+                            f"ChassisVelocities second, got {type(first).__name__}")
         p.five = False
-        p.max_speed = args[0]
+        p.max_speed = first
         return p
-    if len(args) != 4:
-        raise TypeError("desaturateWheelVelocities takes (moduleVelocities, attainableMaxSpeed) "
-                        "or (moduleVelocities, desiredChassisVelocity, attainableMaxModuleSpeed, "
-                        "attainableMaxTranslationalSpeed, attainableMaxRotationalVelocity)")
-    if not isinstance(args[0], ChassisVelocities):
-        raise TypeError(f"desiredChassisVelocity must be a ChassisVelocities, "
-                        f"got {type(args[0]).__name__}")
+    if mm is None or mt is None or mr is None:
+        raise TypeError("desaturateWheelVelocities(moduleVelocities, desiredChassisVelocity, "
+                        "attainableMaxModuleSpeed, attainableMaxTranslationalSpeed, "
+                        "attainableMaxRotationalVelocity) needs all three limits")
     p.five = True
-    p.desired = (<ChassisVelocities>args[0]).v
-    p.max_module = args[1]
-    p.max_trans = args[2]
-    p.max_rot = args[3]
+    p.desired = (<ChassisVelocities>first).v
+    p.max_module = mm
+    p.max_trans = mt
+    p.max_rot = mr
     return p
 
 
-cdef int desat_objects(PyObject** items, Py_ssize_t n, tuple args,
+cdef int desat_objects(PyObject** items, Py_ssize_t n, const desat_t* p,
                        double* div, double* mul) except -1:
     """Check the N objects and compute the factors v' = v / div * mul."""
     cdef Py_ssize_t i
     cdef double r = 0.0
-    cdef desat_t p = parse_desat(args)
     for i in range(n):
-        r = jmax(r, fabs(item(items, i, SwerveModuleVelocity, "moduleVelocities").m))
-    desaturate_factors(r, &p, div, mul)
+        if not exact_type(items[i], <PyObject*>SwerveModuleVelocity):
+            item(items, i, SwerveModuleVelocity, "moduleVelocities")  # raises the TypeError
+        r = jmax(r, fabs((<_ModuleVector>items[i]).m))
+    desaturate_factors(r, p, div, mul)
     return 0
