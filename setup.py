@@ -31,7 +31,7 @@ if trace:
 # exactly as in WPILib.
 compile_args = ["-O3", "-fno-math-errno"] if os.name != "nt" else []
 
-modules = ["geometry", "kinematics"]
+modules = ["geometry", "kinematics", "_wheels", "differential", "mecanum", "odometry"]
 extensions = [
     Extension(
         f"drivekin.{name}",

@@ -4,6 +4,12 @@ Cython kernels.
 Units are SI throughout (m, m/s, m/s², rad, rad/s, rad/s², s); x forward, y left,
 angles counter-clockwise positive.
 """
+from drivekin.differential import (
+    DifferentialDriveKinematics,
+    DifferentialDriveWheelAccelerations,
+    DifferentialDriveWheelPositions,
+    DifferentialDriveWheelVelocities,
+)
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.kinematics import (
     ChassisAccelerations,
@@ -13,18 +19,40 @@ from drivekin.kinematics import (
     SwerveModulePosition,
     SwerveModuleVelocity,
 )
+from drivekin.mecanum import (
+    MecanumDriveKinematics,
+    MecanumDriveWheelAccelerations,
+    MecanumDriveWheelPositions,
+    MecanumDriveWheelVelocities,
+)
+from drivekin.odometry import (
+    DifferentialDriveOdometry,
+    MecanumDriveOdometry,
+    SwerveDriveOdometry,
+)
 
 __version__ = "0.1.0"
 
 __all__ = [
     "ChassisAccelerations",
     "ChassisVelocities",
+    "DifferentialDriveKinematics",
+    "DifferentialDriveOdometry",
+    "DifferentialDriveWheelAccelerations",
+    "DifferentialDriveWheelPositions",
+    "DifferentialDriveWheelVelocities",
+    "MecanumDriveKinematics",
+    "MecanumDriveOdometry",
+    "MecanumDriveWheelAccelerations",
+    "MecanumDriveWheelPositions",
+    "MecanumDriveWheelVelocities",
+    "Pose2d",
+    "Rotation2d",
     "SwerveDriveKinematics",
+    "SwerveDriveOdometry",
     "SwerveModuleAcceleration",
     "SwerveModulePosition",
     "SwerveModuleVelocity",
-    "Pose2d",
-    "Rotation2d",
     "Transform2d",
     "Translation2d",
     "Twist2d",

@@ -23,6 +23,10 @@ cdef inline double jmin(double a, double b) noexcept nogil:
         return b
     return a if a <= b else b
 
+cdef inline double clamp01(double t) noexcept nogil:
+    # MathUtil.clamp(t, 0, 1); NaN stays NaN.
+    return jmax(0.0, jmin(t, 1.0))
+
 # ---------------------------------------------------------------------------------------
 # Rotation2d
 
@@ -276,3 +280,25 @@ cdef inline void desaturate_factors(double real_max, const desat_t* p,
     kt = hypot(p.desired.x, p.desired.y) / p.max_trans
     kr = fabs(p.desired.z) / p.max_rot
     mul[0] = jmin(jmax(kt, kr) * p.max_module / real_max, 1.0)
+
+# ---------------------------------------------------------------------------------------
+# Small dense products (mecanum, differential) and the odometry step
+
+cdef inline void mat_vec(Py_ssize_t rows, Py_ssize_t cols, const double* m, const double* x,
+                         double* out                                  # OUT, rows values
+                         ) noexcept nogil:
+    # Row-major m; summed left to right like EJML, so 0 * inf spreads NaN as in WPILib.
+    cdef Py_ssize_t r, c
+    cdef double acc
+    for r in range(rows):
+        acc = m[r * cols] * x[0]
+        for c in range(1, cols):
+            acc = acc + m[r * cols + c] * x[c]
+        out[r] = acc
+
+cdef inline void odometry_step(pose2_t* p, rot2_t* prev_gyro,          # IN/OUT
+                               double dx, double dy, rot2_t gyro) noexcept nogil:
+    # The heading change always comes from the gyro, wrapped: 170° -> -170° is +20°.
+    cdef double dtheta = rot_radians(rot_minus(gyro, prev_gyro[0]))
+    p[0] = pose_transform_by(p[0], twist_exp(dx, dy, dtheta))
+    prev_gyro[0] = gyro

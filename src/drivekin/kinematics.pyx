@@ -21,7 +21,7 @@ import numpy as np
 
 from drivekin._types cimport desat_t, rot2_t, vec2_t, vec3_t
 from drivekin._kernels cimport (
-    chassis_discretize, desaturate_factors, forward_solve, jmax, jmin, max_abs, rot_eq,
+    chassis_discretize, clamp01, desaturate_factors, forward_solve, jmax, jmin, max_abs, rot_eq,
     rot_interp, rot_minus, rot_neg, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
     vec, vec_eq, vec_rotate,
 )
@@ -409,7 +409,7 @@ cdef class SwerveModuleVelocity(_ModuleVector):
     def interpolate(self, SwerveModuleVelocity endValue not None, double t):
         """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
         [0, 1]."""
-        return self._lerp(endValue, jmax(0.0, jmin(t, 1.0)))
+        return self._lerp(endValue, clamp01(t))
 
     def __repr__(self):
         return f"SwerveModuleVelocity(velocity={self.m!r}, angle={new_rotation(self.a)!r})"
@@ -485,7 +485,7 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
     def interpolate(self, SwerveModuleAcceleration endValue not None, double t):
         """Interpolate the magnitude linearly and the angle the short way; ``t`` is
         clamped to [0, 1]."""
-        return self._lerp(endValue, jmax(0.0, jmin(t, 1.0)))
+        return self._lerp(endValue, clamp01(t))
 
     def __repr__(self):
         return (f"SwerveModuleAcceleration(acceleration={self.m!r}, "

@@ -1,0 +1,10 @@
+# Shared base of the per-wheel value classes (mecanum: 4 wheels, differential: 2).
+cdef class _WheelValues:
+    cdef double w[4]             # wheel values in the drivetrain's order (m/s, m or m/s^2)
+    cdef Py_ssize_t k            # number of wheels used (2 or 4)
+    cdef _WheelValues _new(self)
+    cdef _WheelValues _check(self, object other)
+    cdef _WheelValues _lerp(self, _WheelValues end, double t)
+    cdef void _desaturate(self, double attainable, _WheelValues out) noexcept
+    cdef bint _close(self, _WheelValues o) noexcept
+    cdef str _fmt(self, str name, tuple labels, str unit)

@@ -1,0 +1,117 @@
+"""Shared behaviour of the mecanum and differential wheel value classes."""
+cimport cython
+from libc.math cimport fabs
+
+from drivekin._kernels cimport max_abs
+from drivekin._format import f2
+
+
+@cython.freelist(64)
+cdef class _WheelValues:
+    """Per-wheel values with component-wise arithmetic (operators + - * / and unary -)."""
+
+    cdef _WheelValues _new(self):
+        raise NotImplementedError
+
+    cdef _WheelValues _check(self, object other):
+        if type(other) is not type(self):
+            raise TypeError(f"expected a {type(self).__name__}, got {type(other).__name__}")
+        return <_WheelValues>other
+
+    cdef _WheelValues _lerp(self, _WheelValues end, double t):
+        cdef _WheelValues o = self._new()
+        cdef Py_ssize_t i
+        self._check(end)
+        for i in range(self.k):
+            o.w[i] = self.w[i] + (end.w[i] - self.w[i]) * t
+        return o
+
+    cdef void _desaturate(self, double attainable, _WheelValues out) noexcept:
+        # Scale every wheel by attainable / max|w| if the fastest exceeds it, keeping ratios.
+        cdef double real_max = max_abs(self.k, self.w, 1)
+        cdef Py_ssize_t i
+        for i in range(self.k):
+            out.w[i] = self.w[i] / real_max * attainable if real_max > attainable else self.w[i]
+
+    cdef bint _close(self, _WheelValues o) noexcept:
+        cdef Py_ssize_t i
+        for i in range(self.k):
+            if not fabs(self.w[i] - o.w[i]) < 1e-9:
+                return False
+        return True
+
+    cdef str _fmt(self, str name, tuple labels, str unit):
+        return f"{name}({', '.join(f'{lab}: {f2(self.w[i])} {unit}' for i, lab in enumerate(labels))})"
+
+    def plus(self, other):
+        """Return the wheel-by-wheel sum."""
+        cdef _WheelValues o = self._check(other), out = self._new()
+        cdef Py_ssize_t i
+        for i in range(self.k):
+            out.w[i] = self.w[i] + o.w[i]
+        return out
+
+    def minus(self, other):
+        """Return the wheel-by-wheel difference."""
+        cdef _WheelValues o = self._check(other), out = self._new()
+        cdef Py_ssize_t i
+        for i in range(self.k):
+            out.w[i] = self.w[i] - o.w[i]
+        return out
+
+    def unaryMinus(self):
+        """Return every wheel negated."""
+        return self.times(-1.0)
+
+    def times(self, double scalar):
+        """Return every wheel multiplied by ``scalar``."""
+        cdef _WheelValues out = self._new()
+        cdef Py_ssize_t i
+        for i in range(self.k):
+            out.w[i] = self.w[i] * scalar
+        return out
+
+    def div(self, double scalar):
+        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+        cdef _WheelValues out = self._new()
+        cdef Py_ssize_t i
+        for i in range(self.k):
+            out.w[i] = self.w[i] / scalar
+        return out
+
+    def __add__(self, other):
+        if type(other) is type(self):
+            return self.plus(other)
+        return NotImplemented
+
+    def __sub__(self, other):
+        if type(other) is type(self):
+            return self.minus(other)
+        return NotImplemented
+
+    def __neg__(self):
+        return self.unaryMinus()
+
+    def __mul__(self, other):
+        try:
+            return self.times(other)
+        except TypeError:
+            return NotImplemented
+
+    def __rmul__(self, other):
+        return self.__mul__(other)
+
+    def __truediv__(self, other):
+        try:
+            return self.div(other)
+        except TypeError:
+            return NotImplemented
+
+    def __iter__(self):
+        cdef Py_ssize_t i
+        for i in range(self.k):
+            yield self.w[i]
+
+    def __reduce__(self):
+        return (type(self), tuple([self.w[i] for i in range(self.k)]))
+

@@ -1,0 +1,229 @@
+"""Differential (tank) drive kinematics, WPILib 2027.
+
+Units: m, m/s, m/s², rad, rad/s, rad/s². The model is the same as Road Runner's
+``TankKinematics``: v_left = vx − ω·W/2, v_right = vx + ω·W/2, with W the trackwidth.
+"""
+cimport cython
+from libc.math cimport isfinite
+
+from drivekin._wheels cimport _WheelValues
+from drivekin._kernels cimport clamp01
+from drivekin.geometry cimport new_twist
+from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+
+
+cdef class _Wheel2(_WheelValues):
+    """Left and right wheel values."""
+
+    def __init__(self, double left=0.0, double right=0.0):
+        self.k = 2
+        self.w[0] = left
+        self.w[1] = right
+
+    @property
+    def left(self):
+        """Left wheel value (m/s, m or m/s² depending on the class)."""
+        return self.w[0]
+
+    @left.setter
+    def left(self, double value):
+        self.w[0] = value
+
+    @property
+    def right(self):
+        """Right wheel value (m/s, m or m/s² depending on the class)."""
+        return self.w[1]
+
+    @right.setter
+    def right(self, double value):
+        self.w[1] = value
+
+    def __repr__(self):
+        return f"{type(self).__name__}(left={self.w[0]!r}, right={self.w[1]!r})"
+
+
+cdef inline _Wheel2 init2(_Wheel2 o, double l, double r):
+    o.k = 2
+    o.w[0] = l
+    o.w[1] = r
+    return o
+
+
+cdef class DifferentialDriveWheelVelocities(_Wheel2):
+    """DifferentialDriveWheelVelocities(left=0.0, right=0.0)
+
+    Wheel velocities of a differential drive, m/s. Mutable. As in WPILib Java there is no
+    value equality: ``==`` is identity (compare ``left``/``right`` yourself).
+    """
+
+    cdef _WheelValues _new(self):
+        return init2(DifferentialDriveWheelVelocities.__new__(DifferentialDriveWheelVelocities), 0.0, 0.0)
+
+    def desaturate(self, double attainableMaxSpeed):
+        """Return new velocities scaled so neither wheel exceeds ``attainableMaxSpeed``
+        (m/s), keeping their ratio; unchanged copy if already within it (2027)."""
+        cdef _WheelValues out = self._new()
+        self._desaturate(attainableMaxSpeed, out)
+        return out
+
+    def desaturateInPlace(self, double attainableMaxSpeed):
+        """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
+        self._desaturate(attainableMaxSpeed, self)
+
+    def interpolate(self, DifferentialDriveWheelVelocities endValue not None, double t):
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+        return self._lerp(endValue, clamp01(t))
+
+    def __str__(self):
+        return self._fmt("DifferentialDriveWheelVelocities", ("Left", "Right"), "m/s")
+
+
+cdef class DifferentialDriveWheelPositions(_Wheel2):
+    """DifferentialDriveWheelPositions(left, right)
+
+    Distances driven by the left and right wheels, m. Mutable; ``==`` compares each
+    wheel within 1e-9 m (so instances are unhashable).
+    """
+
+    def __init__(self, double left, double right):
+        init2(self, left, right)
+
+    cdef _WheelValues _new(self):
+        return init2(DifferentialDriveWheelPositions.__new__(DifferentialDriveWheelPositions), 0.0, 0.0)
+
+    def copy(self):
+        """Return an independent copy."""
+        return init2(self._new(), self.w[0], self.w[1])
+
+    def interpolate(self, DifferentialDriveWheelPositions endValue not None, double t):
+        """Linear interpolation; ``t`` is not clamped."""
+        return self._lerp(endValue, t)
+
+    def __eq__(self, other):
+        if type(other) is DifferentialDriveWheelPositions:
+            return self._close(<_WheelValues>other)
+        return NotImplemented
+
+    __hash__ = None
+
+    def __str__(self):
+        # WPILib's toString lacks the closing parenthesis; drivekin closes it.
+        return self._fmt("DifferentialDriveWheelPositions", ("Left", "Right"), "m")
+
+
+cdef class DifferentialDriveWheelAccelerations(_Wheel2):
+    """DifferentialDriveWheelAccelerations(left=0.0, right=0.0)
+
+    Wheel accelerations of a differential drive, m/s². Mutable; ``==`` is identity.
+    """
+
+    cdef _WheelValues _new(self):
+        return init2(DifferentialDriveWheelAccelerations.__new__(DifferentialDriveWheelAccelerations), 0.0, 0.0)
+
+    def interpolate(self, DifferentialDriveWheelAccelerations endValue not None, double t):
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+        return self._lerp(endValue, clamp01(t))
+
+    def __str__(self):
+        return self._fmt("DifferentialDriveWheelAccelerations", ("Left", "Right"), "m/s²")
+
+
+cdef inline DifferentialDriveWheelVelocities new_wheel_velocities(double l, double r):
+    return <DifferentialDriveWheelVelocities>init2(
+        DifferentialDriveWheelVelocities.__new__(DifferentialDriveWheelVelocities), l, r)
+
+
+# ---------------------------------------------------------------------------------------
+cdef class DifferentialDriveKinematics:
+    """DifferentialDriveKinematics(trackwidth)
+
+    Kinematics of a differential drive whose left and right wheels are ``trackwidth`` m
+    apart (use the effective, empirically tuned value if the wheels scrub). The
+    trackwidth must be positive and finite (ValueError otherwise).
+    """
+
+    def __init__(self, double trackwidth):
+        if not (isfinite(trackwidth) and trackwidth > 0.0):
+            raise ValueError(f"trackwidth must be a positive finite distance in m, got {trackwidth!r}")
+        self.trackwidth = trackwidth
+
+    def __reduce__(self):
+        return (DifferentialDriveKinematics, (self.trackwidth,))
+
+    def __repr__(self):
+        return f"DifferentialDriveKinematics(trackwidth={self.trackwidth!r})"
+
+    def toChassisVelocities(self, DifferentialDriveWheelVelocities wheelVelocities not None):
+        """Return the robot velocity: vx = (left + right) / 2, vy = 0,
+        omega = (right − left) / trackwidth."""
+        cdef _WheelValues w = wheelVelocities
+        return new_chassis_velocities((w.w[0] + w.w[1]) / 2.0, 0.0,
+                                      (w.w[1] - w.w[0]) / self.trackwidth)
+
+    def toChassisVelocitiesInto(self, DifferentialDriveWheelVelocities wheelVelocities not None,
+                                ChassisVelocities out not None):
+        """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+        cdef _WheelValues w = wheelVelocities
+        out.v.x = (w.w[0] + w.w[1]) / 2.0
+        out.v.y = 0.0
+        out.v.z = (w.w[1] - w.w[0]) / self.trackwidth
+
+    def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
+        """Return the wheel velocities for a robot velocity; ``vy`` is ignored (a
+        differential drive cannot strafe)."""
+        cdef ChassisVelocities c = chassisVelocities
+        return new_wheel_velocities(c.v.x - self.trackwidth / 2.0 * c.v.z,
+                                    c.v.x + self.trackwidth / 2.0 * c.v.z)
+
+    def toWheelVelocitiesInto(self, ChassisVelocities chassisVelocities not None,
+                              DifferentialDriveWheelVelocities out not None):
+        """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
+        cdef ChassisVelocities c = chassisVelocities
+        cdef _WheelValues o = out
+        o.w[0] = c.v.x - self.trackwidth / 2.0 * c.v.z
+        o.w[1] = c.v.x + self.trackwidth / 2.0 * c.v.z
+
+    def toTwist2d(self, start, end):
+        """toTwist2d(leftDistance, rightDistance) or toTwist2d(startPositions, endPositions)
+
+        Return the Twist2d (m, rad) for wheel distance changes: dx = (l + r) / 2, dy = 0,
+        dtheta = (r − l) / trackwidth. With two DifferentialDriveWheelPositions the
+        changes are end − start."""
+        cdef double l, r
+        if type(start) is DifferentialDriveWheelPositions or type(end) is DifferentialDriveWheelPositions:
+            if type(start) is not type(end):
+                raise TypeError("toTwist2d takes two DifferentialDriveWheelPositions or two "
+                                f"distances, got {type(start).__name__} and {type(end).__name__}")
+            l = (<_WheelValues>end).w[0] - (<_WheelValues>start).w[0]
+            r = (<_WheelValues>end).w[1] - (<_WheelValues>start).w[1]
+        else:
+            l = start
+            r = end
+        return new_twist((l + r) / 2.0, 0.0, (r - l) / self.trackwidth)
+
+    def toChassisAccelerations(self, DifferentialDriveWheelAccelerations wheelAccelerations not None):
+        """Return (ax = (l + r) / 2, ay = 0, alpha = (r − l) / trackwidth), m/s² and rad/s²."""
+        cdef _WheelValues w = wheelAccelerations
+        return ChassisAccelerations((w.w[0] + w.w[1]) / 2.0, 0.0,
+                                    (w.w[1] - w.w[0]) / self.trackwidth)
+
+    def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None):
+        """Return the wheel accelerations (ax ∓ trackwidth/2 · alpha); ``ay`` is ignored."""
+        cdef ChassisAccelerations c = chassisAccelerations
+        return DifferentialDriveWheelAccelerations(c.v.x - self.trackwidth / 2.0 * c.v.z,
+                                                   c.v.x + self.trackwidth / 2.0 * c.v.z)
+
+    def interpolate(self, DifferentialDriveWheelPositions startValue not None,
+                    DifferentialDriveWheelPositions endValue not None, double t):
+        """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+        return startValue.interpolate(endValue, t)
+
+    def copy(self, DifferentialDriveWheelPositions positions not None):
+        """Return an independent copy of ``positions``."""
+        return positions.copy()
+
+    def copyInto(self, DifferentialDriveWheelPositions positions not None,
+                 DifferentialDriveWheelPositions output not None):
+        """Copy ``positions`` into ``output``."""
+        (<_WheelValues>output).w[0] = (<_WheelValues>positions).w[0]
+        (<_WheelValues>output).w[1] = (<_WheelValues>positions).w[1]

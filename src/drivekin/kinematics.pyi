@@ -1,0 +1,435 @@
+"""Chassis velocities/accelerations and N-module swerve kinematics (WPILib 2027).
+
+Units: m, m/s, m/s², rad, rad/s, rad/s², s. Robot frame: x forward, y left, CCW positive.
+
+Every hot operation has two forms: an object-returning façade with WPILib's name, and an
+allocation-free ``...Into`` / ``...InPlace`` form that writes into objects or numpy buffers
+owned by the caller. Kinematics objects carry heading memory and are not thread-safe
+(as in WPILib); every method runs with the GIL held, so a call is never interleaved.
+"""
+
+# Hand-written stub for the compiled module drivekin.kinematics (kinematics.pyx). Every
+# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
+# they match the runtime ``__doc__`` and that no public name is missing on either side.
+#
+# At runtime ChassisVelocities/ChassisAccelerations derive from the private base
+# _ChassisVector and the three swerve module values from _ModuleVector. The inherited
+# methods are declared on each public class instead, so they carry the precise types
+# (``ChassisVelocities.plus(ChassisVelocities) -> ChassisVelocities``, ...).
+
+from collections.abc import Iterable, Iterator, Sequence
+from typing import ClassVar, final, overload
+
+import numpy as np
+import numpy.typing as npt
+
+from drivekin.geometry import Rotation2d, Translation2d, Twist2d
+
+@final
+class ChassisVelocities:
+    """ChassisVelocities(vx=0.0, vy=0.0, omega=0.0)
+
+    Robot velocity: ``vx`` forward and ``vy`` left in m/s, ``omega`` counter-clockwise in
+    rad/s. Robot-relative unless stated otherwise. Fields are mutable; ``==`` compares
+    each field exactly (0.0 == −0.0, NaN != NaN), as WPILib does.
+    """
+
+    def __init__(self, vx: float = 0.0, vy: float = 0.0, omega: float = 0.0) -> None: ...
+    @property
+    def vx(self) -> float:
+        """Forward velocity, m/s."""
+    @vx.setter
+    def vx(self, value: float) -> None: ...
+    @property
+    def vy(self) -> float:
+        """Leftward velocity, m/s."""
+    @vy.setter
+    def vy(self, value: float) -> None: ...
+    @property
+    def omega(self) -> float:
+        """Angular velocity, rad/s, counter-clockwise positive."""
+    @omega.setter
+    def omega(self, value: float) -> None: ...
+    def toTwist2d(self, dt: float) -> Twist2d:
+        """Return the Twist2d ``(vx·dt, vy·dt, omega·dt)`` travelled in ``dt`` seconds."""
+    def discretize(self, dt: float) -> ChassisVelocities:
+        """Return the velocities that, held constant for ``dt`` s along a straight line in
+        the rotating frame, end at the pose this constant twist would reach.
+
+        This removes the drift of swerve/mecanum drives that translate while turning.
+        ``omega·dt`` passes through a Rotation2d, so it is wrapped to [−π, π]
+        (omega = 4, dt = 1 gives omega' = 4 − 2π); ``dt = 0`` divides by zero (NaN/inf),
+        as in WPILib."""
+    def discretizeInto(self, dt: float, out: ChassisVelocities) -> None:
+        """Allocation-free :meth:`discretize`: write the result into ``out`` (may be self)."""
+    def toRobotRelative(self, robotAngle: Rotation2d) -> ChassisVelocities:
+        """Convert field-relative values to robot-relative ones.
+
+        ``robotAngle`` is the robot heading on the field; x and y are rotated by
+        −robotAngle, the angular component is unchanged."""
+    def toFieldRelative(self, robotAngle: Rotation2d) -> ChassisVelocities:
+        """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
+    def toRobotRelativeInto(self, robotAngle: Rotation2d, out: ChassisVelocities) -> None:
+        """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
+        same class; may be ``self``)."""
+    def toFieldRelativeInto(self, robotAngle: Rotation2d, out: ChassisVelocities) -> None:
+        """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
+        same class; may be ``self``)."""
+    def plus(self, other: ChassisVelocities) -> ChassisVelocities:
+        """Return the component-wise sum."""
+    def minus(self, other: ChassisVelocities) -> ChassisVelocities:
+        """Return the component-wise difference."""
+    def unaryMinus(self) -> ChassisVelocities:
+        """Return the negation of every component."""
+    def times(self, scalar: float) -> ChassisVelocities:
+        """Return every component multiplied by ``scalar``."""
+    def div(self, scalar: float) -> ChassisVelocities:
+        """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
+    def interpolate(self, endValue: ChassisVelocities, t: float) -> ChassisVelocities:
+        """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
+        ``endValue`` (the objects themselves, as WPILib does)."""
+    def __add__(self, other: ChassisVelocities) -> ChassisVelocities: ...
+    def __sub__(self, other: ChassisVelocities) -> ChassisVelocities: ...
+    def __neg__(self) -> ChassisVelocities: ...
+    def __mul__(self, other: float) -> ChassisVelocities: ...
+    def __rmul__(self, other: float) -> ChassisVelocities: ...
+    def __truediv__(self, other: float) -> ChassisVelocities: ...
+    def __eq__(self, other: object) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+
+@final
+class ChassisAccelerations:
+    """ChassisAccelerations(ax=0.0, ay=0.0, alpha=0.0)
+
+    Robot acceleration: ``ax`` forward and ``ay`` left in m/s², ``alpha`` counter-clockwise
+    in rad/s². Fields are mutable; ``==`` follows Java ``Double.compare`` (NaN == NaN,
+    0.0 != −0.0).
+    """
+
+    def __init__(self, ax: float = 0.0, ay: float = 0.0, alpha: float = 0.0) -> None: ...
+    @property
+    def ax(self) -> float:
+        """Forward acceleration, m/s²."""
+    @ax.setter
+    def ax(self, value: float) -> None: ...
+    @property
+    def ay(self) -> float:
+        """Leftward acceleration, m/s²."""
+    @ay.setter
+    def ay(self, value: float) -> None: ...
+    @property
+    def alpha(self) -> float:
+        """Angular acceleration, rad/s², counter-clockwise positive."""
+    @alpha.setter
+    def alpha(self, value: float) -> None: ...
+    def toRobotRelative(self, robotAngle: Rotation2d) -> ChassisAccelerations:
+        """Convert field-relative values to robot-relative ones.
+
+        ``robotAngle`` is the robot heading on the field; x and y are rotated by
+        −robotAngle, the angular component is unchanged."""
+    def toFieldRelative(self, robotAngle: Rotation2d) -> ChassisAccelerations:
+        """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
+    def toRobotRelativeInto(self, robotAngle: Rotation2d, out: ChassisAccelerations) -> None:
+        """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
+        same class; may be ``self``)."""
+    def toFieldRelativeInto(self, robotAngle: Rotation2d, out: ChassisAccelerations) -> None:
+        """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
+        same class; may be ``self``)."""
+    def plus(self, other: ChassisAccelerations) -> ChassisAccelerations:
+        """Return the component-wise sum."""
+    def minus(self, other: ChassisAccelerations) -> ChassisAccelerations:
+        """Return the component-wise difference."""
+    def unaryMinus(self) -> ChassisAccelerations:
+        """Return the negation of every component."""
+    def times(self, scalar: float) -> ChassisAccelerations:
+        """Return every component multiplied by ``scalar``."""
+    def div(self, scalar: float) -> ChassisAccelerations:
+        """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
+    def interpolate(self, endValue: ChassisAccelerations, t: float) -> ChassisAccelerations:
+        """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
+        ``endValue`` (the objects themselves, as WPILib does)."""
+    def __add__(self, other: ChassisAccelerations) -> ChassisAccelerations: ...
+    def __sub__(self, other: ChassisAccelerations) -> ChassisAccelerations: ...
+    def __neg__(self) -> ChassisAccelerations: ...
+    def __mul__(self, other: float) -> ChassisAccelerations: ...
+    def __rmul__(self, other: float) -> ChassisAccelerations: ...
+    def __truediv__(self, other: float) -> ChassisAccelerations: ...
+    def __eq__(self, other: object) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+
+@final
+class SwerveModuleVelocity:
+    """SwerveModuleVelocity(velocity=0.0, angle=Rotation2d())
+
+    The velocity of one swerve module: wheel ``velocity`` in m/s (may be negative) and the
+    module ``angle``. Mutable; ``==`` compares velocity within 1e-9 m/s and the angle
+    within 1e-9. (WPILib 2026: ``SwerveModuleState(speed, angle)``.)
+    """
+
+    def __init__(self, velocity: float = 0.0, angle: Rotation2d | None = None) -> None: ...
+    @property
+    def velocity(self) -> float:
+        """Wheel velocity, m/s."""
+    @velocity.setter
+    def velocity(self, value: float) -> None: ...
+    @property
+    def angle(self) -> Rotation2d:
+        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
+    @angle.setter
+    def angle(self, value: Rotation2d) -> None: ...
+    def optimize(self, currentAngle: Rotation2d) -> SwerveModuleVelocity:
+        """Return the equivalent velocity that turns the module by at most 90°.
+
+        If the target angle is more than 90° from ``currentAngle``, the result drives the
+        wheel backwards at the angle + 180°. Returns a new object (2027)."""
+    def cosineScale(self, currentAngle: Rotation2d) -> SwerveModuleVelocity:
+        """Return the velocity scaled by cos(angle − currentAngle), so a module that is
+        still turning does not push sideways. Returns a new object (2027)."""
+    def interpolate(self, endValue: SwerveModuleVelocity, t: float) -> SwerveModuleVelocity:
+        """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
+        [0, 1]."""
+    def compareTo(self, other: SwerveModuleVelocity) -> int:
+        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
+    def __eq__(self, other: object) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+    def __iter__(self) -> Iterator[float | Rotation2d]: ...
+
+@final
+class SwerveModulePosition:
+    """SwerveModulePosition(distance=0.0, angle=Rotation2d())
+
+    The position of one swerve module: distance driven by the wheel in m and the module
+    ``angle``. Mutable; ``==`` compares distance within 1e-9 m and the angle within 1e-9.
+    """
+
+    def __init__(self, distance: float = 0.0, angle: Rotation2d | None = None) -> None: ...
+    @property
+    def distance(self) -> float:
+        """Distance driven by the wheel, m."""
+    @distance.setter
+    def distance(self, value: float) -> None: ...
+    @property
+    def angle(self) -> Rotation2d:
+        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
+    @angle.setter
+    def angle(self, value: Rotation2d) -> None: ...
+    def copy(self) -> SwerveModulePosition:
+        """Return an independent copy."""
+    def interpolate(self, endValue: SwerveModulePosition, t: float) -> SwerveModulePosition:
+        """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
+    def compareTo(self, other: SwerveModulePosition) -> int:
+        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
+    def __eq__(self, other: object) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+    def __iter__(self) -> Iterator[float | Rotation2d]: ...
+
+@final
+class SwerveModuleAcceleration:
+    """SwerveModuleAcceleration(acceleration=0.0, angle=Rotation2d())
+
+    The acceleration of one swerve module: magnitude in m/s² and the direction ``angle``
+    of the acceleration vector. Mutable; ``==`` compares within 1e-9.
+    """
+
+    def __init__(self, acceleration: float = 0.0, angle: Rotation2d | None = None) -> None: ...
+    @property
+    def acceleration(self) -> float:
+        """Acceleration magnitude, m/s²."""
+    @acceleration.setter
+    def acceleration(self, value: float) -> None: ...
+    @property
+    def angle(self) -> Rotation2d:
+        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
+    @angle.setter
+    def angle(self, value: Rotation2d) -> None: ...
+    def interpolate(
+        self, endValue: SwerveModuleAcceleration, t: float
+    ) -> SwerveModuleAcceleration:
+        """Interpolate the magnitude linearly and the angle the short way; ``t`` is
+        clamped to [0, 1]."""
+    def compareTo(self, other: SwerveModuleAcceleration) -> int:
+        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
+    def __eq__(self, other: object) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+    def __iter__(self) -> Iterator[float | Rotation2d]: ...
+
+@final
+class SwerveDriveKinematics:
+    """SwerveDriveKinematics(*moduleTranslations)
+
+    Kinematics of a swerve drive with N ≥ 2 modules at the given robot-relative
+    positions (Translation2d, m), in the order used by every method. Pass the
+    translations as separate arguments or as one sequence.
+
+    Inverse kinematics remembers each module's last heading: when the commanded chassis
+    velocity is exactly zero, or a module's own speed is at most 1e-6 m/s, the module keeps
+    its previous angle instead of snapping to 0. The heading memory lives in this object.
+    The forward (pseudo-inverse) matrices are computed once for a centre of rotation at
+    the robot origin and never change; a ``centerOfRotation`` passed to inverse kinematics
+    only moves the inverse rows, and stays in effect until a different one is passed
+    (compared within 1e-9 m).
+    """
+
+    @overload
+    def __init__(self, moduleTranslations: Sequence[Translation2d], /) -> None: ...
+    @overload
+    def __init__(self, *moduleTranslations: Translation2d) -> None: ...
+    def getModules(self) -> tuple[Translation2d, ...]:
+        """Return the module positions (tuple of Translation2d, m), constructor order."""
+    def getNumModules(self) -> int:
+        """Return the number of modules N."""
+    @overload
+    def resetHeadings(self, moduleHeadings: Sequence[Rotation2d]) -> None:
+        """Replace the remembered module headings (N Rotation2d, as arguments or one
+        sequence); used when the chassis velocity is zero or a module is on the CoR."""
+    @overload
+    def resetHeadings(self, moduleHeadings: Rotation2d, *more: Rotation2d) -> None: ...
+    def toSwerveModuleVelocities(
+        self, chassisVelocities: ChassisVelocities, centerOfRotation: Translation2d = ...
+    ) -> tuple[SwerveModuleVelocity, ...]:
+        """Return the N module velocities (tuple of SwerveModuleVelocity) that produce
+        ``chassisVelocities`` (robot-relative, m/s and rad/s), rotating about
+        ``centerOfRotation`` (robot frame, m). Module speeds are ≥ 0; the angles follow the
+        heading-memory rules in the class docstring. Not desaturated."""
+    def toWheelVelocities(
+        self, chassisVelocities: ChassisVelocities
+    ) -> tuple[SwerveModuleVelocity, ...]:
+        """Same as :meth:`toSwerveModuleVelocities` about the robot origin."""
+    def toSwerveModuleVelocitiesInto(
+        self,
+        chassisVelocities: ChassisVelocities,
+        out: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
+        centerOfRotation: Translation2d = ...,
+    ) -> None:
+        """Allocation-free :meth:`toSwerveModuleVelocities`.
+
+        ``out`` is either a list/tuple of N SwerveModuleVelocity objects, updated in place,
+        or a float64 C-contiguous writeable numpy array of shape (N, 2) that receives
+        ``[velocity m/s, angle rad]`` per module. Returns None."""
+    @overload
+    def toChassisVelocities(
+        self, moduleVelocities: Sequence[SwerveModuleVelocity]
+    ) -> ChassisVelocities:
+        """Return the least-squares ChassisVelocities (robot-relative) for N measured
+        module velocities (SwerveModuleVelocity, as arguments or one sequence)."""
+    @overload
+    def toChassisVelocities(
+        self, moduleVelocities: SwerveModuleVelocity, *more: SwerveModuleVelocity
+    ) -> ChassisVelocities: ...
+    def toChassisVelocitiesInto(
+        self,
+        moduleVelocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
+        out: ChassisVelocities,
+    ) -> None:
+        """Allocation-free :meth:`toChassisVelocities`: ``moduleVelocities`` is a sequence
+        of N SwerveModuleVelocity or an (N, 2) float64 array ``[velocity m/s, angle rad]``;
+        the result is written into ``out``. Returns None."""
+    @overload
+    def toTwist2d(self, first: Sequence[SwerveModulePosition]) -> Twist2d:
+        """toTwist2d(*moduleDeltas) or toTwist2d(start, end)
+
+        Return the Twist2d (m, rad) of the robot for N module position deltas
+        (SwerveModulePosition: distance driven since the last update and the current
+        angle). With two sequences ``start`` and ``end``, the deltas are
+        ``end.distance − start.distance`` at the **end** angle, as in WPILib."""
+    @overload
+    def toTwist2d(self, first: SwerveModulePosition, *more: SwerveModulePosition) -> Twist2d: ...
+    @overload
+    def toTwist2d(
+        self, start: Sequence[SwerveModulePosition], end: Sequence[SwerveModulePosition], /
+    ) -> Twist2d: ...
+    def toTwist2dInto(
+        self,
+        moduleDeltas: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
+        out: Twist2d,
+    ) -> None:
+        """Allocation-free :meth:`toTwist2d` for N deltas (SwerveModulePosition objects or an
+        (N, 2) float64 array ``[distance m, angle rad]``), written into ``out``."""
+    def interpolate(
+        self,
+        startValue: Sequence[SwerveModulePosition],
+        endValue: Sequence[SwerveModulePosition],
+        t: float,
+    ) -> tuple[SwerveModulePosition, ...]:
+        """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
+    def copy(self, positions: Iterable[SwerveModulePosition]) -> tuple[SwerveModulePosition, ...]:
+        """Return independent copies of the module positions (tuple)."""
+    def copyInto(
+        self,
+        positions: Sequence[SwerveModulePosition],
+        output: Sequence[SwerveModulePosition],
+    ) -> None:
+        """Copy each position's fields into the matching object of ``output``."""
+    def toSwerveModuleAccelerations(
+        self,
+        chassisAccelerations: ChassisAccelerations,
+        angularVelocity: float = 0.0,
+        centerOfRotation: Translation2d = ...,
+    ) -> tuple[SwerveModuleAcceleration, ...]:
+        """Return the N module accelerations (SwerveModuleAcceleration: magnitude m/s² and
+        direction) for ``chassisAccelerations`` while turning at ``angularVelocity`` rad/s
+        about ``centerOfRotation`` (m): a_i = a + α × r_i − ω² r_i.
+
+        WPILib's rules are kept: an exactly zero ``chassisAccelerations`` gives all-zero
+        results even when ``angularVelocity`` ≠ 0, and a module whose acceleration is at
+        most 1e-6 gets angle 0 (there is no heading memory for accelerations)."""
+    def toWheelAccelerations(
+        self, chassisAccelerations: ChassisAccelerations
+    ) -> tuple[SwerveModuleAcceleration, ...]:
+        """Same as :meth:`toSwerveModuleAccelerations` with zero angular velocity about
+        the robot origin."""
+    @overload
+    def toChassisAccelerations(
+        self, moduleAccelerations: Sequence[SwerveModuleAcceleration]
+    ) -> ChassisAccelerations:
+        """Return the least-squares ChassisAccelerations for N module accelerations
+        (as arguments or one sequence). The ω² estimate of the solve is discarded."""
+    @overload
+    def toChassisAccelerations(
+        self, moduleAccelerations: SwerveModuleAcceleration, *more: SwerveModuleAcceleration
+    ) -> ChassisAccelerations: ...
+    @overload
+    @staticmethod
+    def desaturateWheelVelocities(
+        moduleVelocities: Sequence[SwerveModuleVelocity], attainableMaxSpeed: float
+    ) -> tuple[SwerveModuleVelocity, ...]:
+        """desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed) or
+        desaturateWheelVelocities(moduleVelocities, desiredChassisVelocity,
+        attainableMaxModuleSpeed, attainableMaxTranslationalSpeed,
+        attainableMaxRotationalVelocity)
+
+        Return new module velocities (tuple) scaled down so no wheel exceeds its limit,
+        keeping their ratios and angles. The one-limit form scales only when the fastest
+        wheel is above ``attainableMaxSpeed`` (m/s). The five-argument form also scales by
+        how hard the driver asks (``desiredChassisVelocity`` against the translational m/s
+        and rotational rad/s limits), so it can slow unsaturated wheels; it leaves the
+        velocities unchanged if either chassis limit or every wheel speed is zero. The
+        input is not modified (2027). In the five-argument form the second parameter is
+        the desired ChassisVelocities."""
+    @overload
+    @staticmethod
+    def desaturateWheelVelocities(
+        moduleVelocities: Sequence[SwerveModuleVelocity],
+        attainableMaxSpeed: ChassisVelocities,
+        attainableMaxModuleSpeed: float,
+        attainableMaxTranslationalSpeed: float,
+        attainableMaxRotationalVelocity: float,
+    ) -> tuple[SwerveModuleVelocity, ...]: ...
+    @overload
+    @staticmethod
+    def desaturateWheelVelocitiesInPlace(
+        moduleVelocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
+        attainableMaxSpeed: float,
+    ) -> None:
+        """Allocation-free :meth:`desaturateWheelVelocities` (same two forms) that rescales
+        the caller's N SwerveModuleVelocity objects, or column 0 of an (N, 2) float64
+        array ``[velocity m/s, angle rad]``, in place. Returns None."""
+    @overload
+    @staticmethod
+    def desaturateWheelVelocitiesInPlace(
+        moduleVelocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
+        attainableMaxSpeed: ChassisVelocities,
+        attainableMaxModuleSpeed: float,
+        attainableMaxTranslationalSpeed: float,
+        attainableMaxRotationalVelocity: float,
+    ) -> None: ...

@@ -1,0 +1,33 @@
+# Mecanum drive kinematics and its wheel values. Wheel order everywhere: front left,
+# front right, rear left, rear right (WPILib's; Road Runner uses a different order).
+cimport cython
+from drivekin._types cimport vec2_t
+from drivekin._wheels cimport _WheelValues
+
+
+cdef class _Wheel4(_WheelValues):
+    pass
+
+@cython.final
+cdef class MecanumDriveWheelVelocities(_Wheel4):
+    pass
+
+@cython.final
+cdef class MecanumDriveWheelPositions(_Wheel4):
+    pass
+
+@cython.final
+cdef class MecanumDriveWheelAccelerations(_Wheel4):
+    pass
+
+@cython.final
+cdef class MecanumDriveKinematics:
+    cdef double wx[4]            # wheel x, m (robot frame)
+    cdef double wy[4]            # wheel y, m
+    cdef double m[12]            # 4 x 3 inverse matrix for the current centre of rotation
+    cdef double f[12]            # 3 x 4 pseudo-inverse, fixed at CoR = 0
+    cdef vec2_t cor              # centre of rotation m was built for, m
+    cdef tuple wheels            # the Translation2d objects
+
+    cdef void _set_cor(self, vec2_t cor) noexcept
+    cdef void _inverse(self, const double* x, object cor, double* out) except *

@@ -1,0 +1,294 @@
+"""Mecanum drive kinematics, WPILib 2027.
+
+Units: m, m/s, m/s², rad, rad/s, rad/s². Wheel order everywhere: front left, front right,
+rear left, rear right. For a wheel at (x, y) relative to the centre of rotation the
+inverse rows are FL/RR ``[1, −1, −(x + y)]`` and FR/RL ``[1, 1, x − y]``.
+"""
+cimport cython
+
+import numpy as np
+
+from drivekin._types cimport vec2_t, vec3_t
+from drivekin._wheels cimport _WheelValues
+from drivekin._kernels cimport clamp01, mat_vec, vec, vec_eq
+from drivekin.geometry cimport Translation2d, new_twist
+from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+
+cdef Translation2d ORIGIN = Translation2d()
+cdef tuple LABELS = ("Front Left", "Front Right", "Rear Left", "Rear Right")
+
+
+cdef class _Wheel4(_WheelValues):
+    """Front-left, front-right, rear-left and rear-right wheel values."""
+
+    def __init__(self, double frontLeft=0.0, double frontRight=0.0, double rearLeft=0.0,
+                 double rearRight=0.0):
+        self.k = 4
+        self.w[0] = frontLeft
+        self.w[1] = frontRight
+        self.w[2] = rearLeft
+        self.w[3] = rearRight
+
+    @property
+    def frontLeft(self):
+        """Front-left wheel value (m/s, m or m/s² depending on the class)."""
+        return self.w[0]
+
+    @frontLeft.setter
+    def frontLeft(self, double value):
+        self.w[0] = value
+
+    @property
+    def frontRight(self):
+        """Front-right wheel value."""
+        return self.w[1]
+
+    @frontRight.setter
+    def frontRight(self, double value):
+        self.w[1] = value
+
+    @property
+    def rearLeft(self):
+        """Rear-left wheel value."""
+        return self.w[2]
+
+    @rearLeft.setter
+    def rearLeft(self, double value):
+        self.w[2] = value
+
+    @property
+    def rearRight(self):
+        """Rear-right wheel value."""
+        return self.w[3]
+
+    @rearRight.setter
+    def rearRight(self, double value):
+        self.w[3] = value
+
+    def __repr__(self):
+        return (f"{type(self).__name__}(frontLeft={self.w[0]!r}, frontRight={self.w[1]!r}, "
+                f"rearLeft={self.w[2]!r}, rearRight={self.w[3]!r})")
+
+
+cdef inline _Wheel4 blank4(_Wheel4 o):
+    o.k = 4
+    return o
+
+
+cdef class MecanumDriveWheelVelocities(_Wheel4):
+    """MecanumDriveWheelVelocities(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+
+    Wheel velocities of a mecanum drive, m/s. Mutable. As in WPILib Java there is no value
+    equality: ``==`` is identity.
+    """
+
+    cdef _WheelValues _new(self):
+        return blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
+
+    def desaturate(self, double attainableMaxSpeed):
+        """Return new velocities scaled so no wheel exceeds ``attainableMaxSpeed`` (m/s),
+        keeping their ratios; an unchanged copy if already within it (2027)."""
+        cdef _WheelValues out = self._new()
+        self._desaturate(attainableMaxSpeed, out)
+        return out
+
+    def desaturateInPlace(self, double attainableMaxSpeed):
+        """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
+        self._desaturate(attainableMaxSpeed, self)
+
+    def interpolate(self, MecanumDriveWheelVelocities endValue not None, double t):
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+        return self._lerp(endValue, clamp01(t))
+
+    def __str__(self):
+        return self._fmt("MecanumDriveWheelVelocities", LABELS, "m/s")
+
+
+cdef class MecanumDriveWheelPositions(_Wheel4):
+    """MecanumDriveWheelPositions(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+
+    Distances driven by each wheel, m. Mutable; ``==`` compares each wheel within 1e-9 m
+    (so instances are unhashable).
+    """
+
+    cdef _WheelValues _new(self):
+        return blank4(MecanumDriveWheelPositions.__new__(MecanumDriveWheelPositions))
+
+    def copy(self):
+        """Return an independent copy."""
+        cdef _WheelValues o = self._new()
+        o.w = self.w
+        return o
+
+    def interpolate(self, MecanumDriveWheelPositions endValue not None, double t):
+        """Linear interpolation; ``t`` is not clamped."""
+        return self._lerp(endValue, t)
+
+    def __eq__(self, other):
+        if type(other) is MecanumDriveWheelPositions:
+            return self._close(<_WheelValues>other)
+        return NotImplemented
+
+    __hash__ = None
+
+    def __str__(self):
+        return self._fmt("MecanumDriveWheelPositions", LABELS, "m")
+
+
+cdef class MecanumDriveWheelAccelerations(_Wheel4):
+    """MecanumDriveWheelAccelerations(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+
+    Wheel accelerations of a mecanum drive, m/s². Mutable; ``==`` is identity.
+    """
+
+    cdef _WheelValues _new(self):
+        return blank4(MecanumDriveWheelAccelerations.__new__(MecanumDriveWheelAccelerations))
+
+    def interpolate(self, MecanumDriveWheelAccelerations endValue not None, double t):
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+        return self._lerp(endValue, clamp01(t))
+
+    def __str__(self):
+        return self._fmt("MecanumDriveWheelAccelerations", LABELS, "m/s²")
+
+
+# ---------------------------------------------------------------------------------------
+cdef class MecanumDriveKinematics:
+    """MecanumDriveKinematics(frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
+
+    Kinematics of a mecanum drive with the four wheel positions (Translation2d, m, robot
+    frame). The forward (pseudo-inverse) matrix is computed once for the robot origin and
+    never changes; a ``centerOfRotation`` passed to inverse kinematics moves only the
+    inverse rows and stays in effect until a different one is passed (within 1e-9 m).
+    """
+
+    def __init__(self, Translation2d frontLeftWheel not None, Translation2d frontRightWheel not None,
+                 Translation2d rearLeftWheel not None, Translation2d rearRightWheel not None):
+        cdef Py_ssize_t i
+        self.wheels = (frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
+        for i in range(4):
+            self.wx[i] = (<Translation2d>self.wheels[i]).v.x
+            self.wy[i] = (<Translation2d>self.wheels[i]).v.y
+        # Force the first build, then keep the pseudo-inverse of the CoR = 0 matrix
+        # (numpy's SVD pinv, as WPILib Java's EJML; built once, so its cost is irrelevant).
+        self.cor = vec(float("nan"), 0.0)
+        self._set_cor(vec(0.0, 0.0))
+        cdef double[:, ::1] f = np.ascontiguousarray(
+            np.linalg.pinv(np.array([self.m[i] for i in range(12)]).reshape(4, 3)))
+        for i in range(12):
+            self.f[i] = f[i // 4, i % 4]
+
+    def __reduce__(self):
+        return (MecanumDriveKinematics, self.wheels)
+
+    def __repr__(self):
+        return f"MecanumDriveKinematics({', '.join(repr(w) for w in self.wheels)})"
+
+    cdef void _set_cor(self, vec2_t cor) noexcept:
+        cdef Py_ssize_t i
+        cdef double x, y
+        if vec_eq(cor, self.cor):
+            return
+        for i in range(4):
+            x = self.wx[i] - cor.x
+            y = self.wy[i] - cor.y
+            self.m[3 * i] = 1.0
+            if i == 0 or i == 3:        # front left, rear right
+                self.m[3 * i + 1] = -1.0
+                self.m[3 * i + 2] = -(x + y)
+            else:                       # front right, rear left
+                self.m[3 * i + 1] = 1.0
+                self.m[3 * i + 2] = x - y
+        self.cor = cor
+
+    cdef void _inverse(self, const double* x, object cor, double* out) except *:
+        if not isinstance(cor, Translation2d):
+            raise TypeError(f"centerOfRotation must be a Translation2d, got {type(cor).__name__}")
+        self._set_cor((<Translation2d>cor).v)
+        mat_vec(4, 3, self.m, x, out)
+
+    def getFrontLeft(self):
+        """Return the front-left wheel position (Translation2d, m)."""
+        return self.wheels[0]
+
+    def getFrontRight(self):
+        """Return the front-right wheel position (Translation2d, m)."""
+        return self.wheels[1]
+
+    def getRearLeft(self):
+        """Return the rear-left wheel position (Translation2d, m)."""
+        return self.wheels[2]
+
+    def getRearRight(self):
+        """Return the rear-right wheel position (Translation2d, m)."""
+        return self.wheels[3]
+
+    def toWheelVelocities(self, ChassisVelocities chassisVelocities not None,
+                          centerOfRotation=ORIGIN):
+        """Return the wheel velocities (m/s) for a robot-relative chassis velocity,
+        rotating about ``centerOfRotation`` (robot frame, m). Not desaturated."""
+        cdef _WheelValues out = blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
+        self._inverse(&chassisVelocities.v.x, centerOfRotation, out.w)
+        return out
+
+    def toWheelVelocitiesInto(self, ChassisVelocities chassisVelocities not None,
+                              MecanumDriveWheelVelocities out not None, centerOfRotation=ORIGIN):
+        """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
+        self._inverse(&chassisVelocities.v.x, centerOfRotation, (<_WheelValues>out).w)
+
+    def toChassisVelocities(self, MecanumDriveWheelVelocities wheelVelocities not None):
+        """Return the least-squares robot velocity for measured wheel velocities."""
+        cdef ChassisVelocities out = new_chassis_velocities(0.0, 0.0, 0.0)
+        mat_vec(3, 4, self.f, (<_WheelValues>wheelVelocities).w, &out.v.x)
+        return out
+
+    def toChassisVelocitiesInto(self, MecanumDriveWheelVelocities wheelVelocities not None,
+                                ChassisVelocities out not None):
+        """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+        mat_vec(3, 4, self.f, (<_WheelValues>wheelVelocities).w, &out.v.x)
+
+    def toTwist2d(self, MecanumDriveWheelPositions start not None, end=None):
+        """toTwist2d(wheelDeltas) or toTwist2d(start, end)
+
+        Return the Twist2d (m, rad) for wheel distance changes, either given directly or
+        as ``end − start`` of two MecanumDriveWheelPositions."""
+        cdef double d[4]
+        cdef double r[3]
+        cdef Py_ssize_t i
+        if end is None:
+            d = (<_WheelValues>start).w
+        elif type(end) is MecanumDriveWheelPositions:
+            for i in range(4):
+                d[i] = (<_WheelValues>end).w[i] - (<_WheelValues>start).w[i]
+        else:
+            raise TypeError(f"end must be a MecanumDriveWheelPositions, got {type(end).__name__}")
+        mat_vec(3, 4, self.f, d, r)
+        return new_twist(r[0], r[1], r[2])
+
+    def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None,
+                             centerOfRotation=ORIGIN):
+        """Return the wheel accelerations (m/s²) for a chassis acceleration; the same
+        matrix as for velocities (no centripetal term, as in WPILib)."""
+        cdef _WheelValues out = blank4(MecanumDriveWheelAccelerations.__new__(MecanumDriveWheelAccelerations))
+        self._inverse(&chassisAccelerations.v.x, centerOfRotation, out.w)
+        return out
+
+    def toChassisAccelerations(self, MecanumDriveWheelAccelerations wheelAccelerations not None):
+        """Return the least-squares chassis acceleration for wheel accelerations."""
+        cdef double r[3]
+        mat_vec(3, 4, self.f, (<_WheelValues>wheelAccelerations).w, r)
+        return ChassisAccelerations(r[0], r[1], r[2])
+
+    def interpolate(self, MecanumDriveWheelPositions startValue not None,
+                    MecanumDriveWheelPositions endValue not None, double t):
+        """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+        return startValue.interpolate(endValue, t)
+
+    def copy(self, MecanumDriveWheelPositions positions not None):
+        """Return an independent copy of ``positions``."""
+        return positions.copy()
+
+    def copyInto(self, MecanumDriveWheelPositions positions not None,
+                 MecanumDriveWheelPositions output not None):
+        """Copy ``positions`` into ``output``."""
+        (<_WheelValues>output).w = (<_WheelValues>positions).w
