@@ -26,8 +26,9 @@ Measurement, in two passes over identical fresh simulations (so the poses must a
    traced peak above the start; ``0 B`` means the steady-state loop did not call the
    allocator (floats and the drivekin value objects are recycled from freelists).
 
-Before each pass a throw-away simulation runs one full script cycle as warm-up (caches,
-specialised bytecode, freelists).
+Before each pass: ``gc.collect()``, then the measured simulation is built, then a
+throw-away simulation runs one full script cycle as warm-up (caches, specialised
+bytecode) and is freed, refilling the freelists (see :func:`prepared_simulation`).
 
 Only the standard library and drivekin are used. Drivetrains plug in through
 :data:`DRIVETRAINS`: a class with ``pose``, ``distance``, ``describe()`` and
@@ -107,9 +108,12 @@ class JoystickScript:
     def __init__(self, max_speed: float, max_omega: float) -> None:
         self._max_speed = float(max_speed)
         self._max_omega = float(max_omega)
+        # Plain functions, not bound methods: bound methods stored on self would form a
+        # reference cycle, leaving discarded simulations to the cyclic GC.
+        cls = type(self)
         writers = {
-            "forward": self._forward, "strafe": self._strafe, "spin": self._spin,
-            "figure-8": self._figure8, "return": self._return, "stop": self._stop,
+            "forward": cls._forward, "strafe": cls._strafe, "spin": cls._spin,
+            "figure-8": cls._figure8, "return": cls._return, "stop": cls._stop,
         }
         self._writers = tuple(writers[name] for name, _ in self.SEGMENTS)
         self._durations = tuple(d for _, d in self.SEGMENTS)
@@ -125,7 +129,7 @@ class JoystickScript:
         if t >= self._durations[self._index] - 1e-9:
             self._index = (self._index + 1) % self._count
             t = 0.0
-        self._writers[self._index](t, cv)
+        self._writers[self._index](self, t, cv)
         self._t = t + DT
 
     def _set(self, cv, jx, jy, jr):
@@ -271,17 +275,28 @@ class Simulation:
         self.drive.step(self.command)
 
 
-def _warm_up(args) -> None:
+def prepared_simulation(args) -> Simulation:
+    """Return a fresh simulation (robot at the origin, script at t = 0) with the process
+    warmed up for it.
+
+    Order matters: ``gc.collect()`` first, so pending garbage is not collected inside the
+    measured loop (a full collection also empties CPython's float/tuple freelists); then
+    the measured simulation is built; then a throw-away simulation runs one script cycle
+    (caches, specialised bytecode) and is freed by reference counting, which refills the
+    freelists the measured loop draws from."""
+    gc.collect()
     sim = Simulation(args.drivetrain, args.max_speed, args.max_omega)
-    step = sim.step
+    warm = Simulation(args.drivetrain, args.max_speed, args.max_omega)
+    step = warm.step
     for _ in itertools.repeat(None, round(JoystickScript.CYCLE / DT)):
         step()
+    del warm, step
+    return sim
 
 
 def timing_pass(args, steps: int):
     """Run ``steps`` steps on a fresh simulation, timing each one; tracemalloc is off."""
-    _warm_up(args)
-    sim = Simulation(args.drivetrain, args.max_speed, args.max_omega)
+    sim = prepared_simulation(args)
     samples = array("q", bytes(8 * steps))
     step = sim.step
     clock = time.perf_counter_ns
@@ -300,8 +315,7 @@ def timing_pass(args, steps: int):
 
 def allocation_pass(args, steps: int):
     """Run ``steps`` steps on a fresh simulation under tracemalloc (no timing)."""
-    _warm_up(args)
-    sim = Simulation(args.drivetrain, args.max_speed, args.max_omega)
+    sim = prepared_simulation(args)
     step = sim.step
     loop = itertools.repeat(None, steps)    # created before the measurement starts
     # Readings are stored into preallocated arrays, so the returned tuples and ints are

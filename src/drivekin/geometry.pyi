@@ -18,13 +18,14 @@ import numpy.typing as npt
 
 @final
 class Translation2d:
-    """Translation2d(x=0.0, y=0.0) or Translation2d(distance, angle)
+    """Translation2d(x=0.0, y=0.0) or Translation2d(distance, angle) or Translation2d(vector)
 
     A point or vector in the plane, in metres.
 
     ``Translation2d(x, y)`` takes the components in m; ``Translation2d(distance, angle)``
-    takes a length in m and a :class:`Rotation2d` direction. Immutable; ``==`` compares
-    each component within 1e-9 m.
+    takes a length in m and a :class:`Rotation2d` direction; ``Translation2d(vector)``
+    takes a numpy array of shape (2,). Immutable; ``==`` compares each component within
+    1e-9 m.
     """
 
     kZero: ClassVar[Translation2d]
@@ -84,19 +85,21 @@ class Translation2d:
     def __mul__(self, other: float) -> Translation2d: ...
     def __rmul__(self, other: float) -> Translation2d: ...
     def __truediv__(self, other: float) -> Translation2d: ...
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float]: ...
 
 @final
 class Rotation2d:
-    """Rotation2d(value=0.0) or Rotation2d(x, y)
+    """Rotation2d(value=0.0) or Rotation2d(x, y) or Rotation2d(matrix)
 
     A rotation in the plane, stored as its unit vector (cos, sin) as in WPILib 2027.
 
     ``Rotation2d(value)`` takes an angle in radians. ``Rotation2d(x, y)`` takes any
     vector and normalises it; a vector of length 1e-6 or less gives the identity
     (WPILib reports an error there; drivekin returns the identity silently).
+    ``Rotation2d(matrix)`` takes a 2×2 special orthogonal numpy array (ValueError if
+    ‖RRᵀ − I‖_F or |det R − 1| exceeds 1e-9).
     The constructor angle is not remembered: ``Rotation2d(3π/2).getDegrees()`` is −90.
     """
 
@@ -159,14 +162,15 @@ class Rotation2d:
     def __mul__(self, other: float) -> Rotation2d: ...
     def __rmul__(self, other: float) -> Rotation2d: ...
     def __truediv__(self, other: float) -> Rotation2d: ...
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
 class Pose2d:
-    """Pose2d() or Pose2d(translation, rotation) or Pose2d(x, y, rotation)
+    """Pose2d() or Pose2d(translation, rotation) or Pose2d(x, y, rotation) or Pose2d(matrix)
 
     A robot pose on the field: position in m and heading as a :class:`Rotation2d`.
+    ``Pose2d(matrix)`` takes a 3×3 homogeneous numpy array (see :meth:`toMatrix`).
     Immutable; ``==`` compares translation within 1e-9 m and rotation within 1e-9.
     """
 
@@ -227,13 +231,13 @@ class Pose2d:
     def __mul__(self, other: float) -> Pose2d: ...
     def __rmul__(self, other: float) -> Pose2d: ...
     def __truediv__(self, other: float) -> Pose2d: ...
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
 class Transform2d:
     """Transform2d() or Transform2d(translation, rotation) or Transform2d(x, y, rotation)
-    or Transform2d(initial, last)
+    or Transform2d(initial, last) or Transform2d(matrix)
 
     A rigid motion: a translation in m followed by a rotation, expressed in the frame it
     is applied to. ``Transform2d(initial, last)`` with two :class:`Pose2d` gives the
@@ -281,7 +285,7 @@ class Transform2d:
     def __mul__(self, other: float) -> Transform2d: ...
     def __rmul__(self, other: float) -> Transform2d: ...
     def __truediv__(self, other: float) -> Transform2d: ...
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
@@ -301,5 +305,5 @@ class Twist2d:
         """Return the Transform2d reached by following this arc from the origin.
 
         Uses the series form when ``|dtheta| < 1e-9``."""
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]

@@ -1,4 +1,3 @@
-# cython: freethreading_compatible = False
 """2-D geometry with WPILib 2027 semantics: Translation2d, Rotation2d, Pose2d,
 Transform2d and Twist2d.
 
@@ -37,18 +36,23 @@ cdef double DEG = 180.0 / M_PI
 # ---------------------------------------------------------------------------------------
 @cython.freelist(64)
 cdef class Translation2d:
-    """Translation2d(x=0.0, y=0.0) or Translation2d(distance, angle)
+    """Translation2d(x=0.0, y=0.0) or Translation2d(distance, angle) or Translation2d(vector)
 
     A point or vector in the plane, in metres.
 
     ``Translation2d(x, y)`` takes the components in m; ``Translation2d(distance, angle)``
-    takes a length in m and a :class:`Rotation2d` direction. Immutable; ``==`` compares
-    each component within 1e-9 m.
+    takes a length in m and a :class:`Rotation2d` direction; ``Translation2d(vector)``
+    takes a numpy array of shape (2,). Immutable; ``==`` compares each component within
+    1e-9 m.
     """
 
-    def __init__(self, double x=0.0, y=0.0):
+    def __init__(self, x=0.0, y=0.0):
         cdef Rotation2d a
-        if isinstance(y, Rotation2d):
+        if isinstance(x, np.ndarray):
+            if (<object>x).shape != (2,):
+                raise ValueError(f"Translation2d(vector) needs shape (2,), got {(<object>x).shape}")
+            self.v = vec(x[0], x[1])
+        elif isinstance(y, Rotation2d):
             a = <Rotation2d>y
             self.v = vec(x * a.r.c, x * a.r.s)
         else:
@@ -198,21 +202,25 @@ cdef class Translation2d:
 # ---------------------------------------------------------------------------------------
 @cython.freelist(128)
 cdef class Rotation2d:
-    """Rotation2d(value=0.0) or Rotation2d(x, y)
+    """Rotation2d(value=0.0) or Rotation2d(x, y) or Rotation2d(matrix)
 
     A rotation in the plane, stored as its unit vector (cos, sin) as in WPILib 2027.
 
     ``Rotation2d(value)`` takes an angle in radians. ``Rotation2d(x, y)`` takes any
     vector and normalises it; a vector of length 1e-6 or less gives the identity
     (WPILib reports an error there; drivekin returns the identity silently).
+    ``Rotation2d(matrix)`` takes a 2×2 special orthogonal numpy array (ValueError if
+    ‖RRᵀ − I‖_F or |det R − 1| exceeds 1e-9).
     The constructor angle is not remembered: ``Rotation2d(3π/2).getDegrees()`` is −90.
     """
 
-    def __init__(self, double value=0.0, y=None):
-        if y is None:
-            self.r = rot_rad(value)
-        else:
+    def __init__(self, value=0.0, y=None):
+        if y is not None:
             self.r = rot_xy(value, y)
+        elif isinstance(value, np.ndarray):
+            self.r = _rot_matrix(value)
+        else:
+            self.r = rot_rad(value)
 
     @staticmethod
     def fromRadians(double radians):
@@ -337,6 +345,29 @@ cdef class Rotation2d:
         return f"Rotation2d(Rads: {f2(rad)}, Deg: {f2(rad * DEG)})"
 
 
+cdef rot2_t _rot_matrix(object m) except *:
+    m = np.asarray(m, dtype=float)
+    if m.shape != (2, 2):
+        raise ValueError(f"a rotation matrix must have shape (2, 2), got {m.shape}")
+    if np.linalg.norm(m @ m.T - np.eye(2)) > 1e-9:
+        raise ValueError(f"Rotation matrix isn't orthogonal\n\nR =\n{m}")
+    if abs(np.linalg.det(m) - 1.0) > 1e-9:
+        raise ValueError(f"Rotation matrix is orthogonal but not special orthogonal\n\nR =\n{m}")
+    cdef rot2_t r
+    r.c = m[0, 0]
+    r.s = m[1, 0]
+    return r
+
+
+cdef pose2_t _pose_matrix(object m) except *:
+    m = np.asarray(m, dtype=float)
+    if m.shape != (3, 3):
+        raise ValueError(f"an affine transformation matrix must have shape (3, 3), got {m.shape}")
+    if m[2, 0] != 0.0 or m[2, 1] != 0.0 or m[2, 2] != 1.0:
+        raise ValueError("Affine transformation matrix is invalid: the last row must be [0, 0, 1]")
+    return pose(vec(m[0, 2], m[1, 2]), _rot_matrix(m[:2, :2]))
+
+
 def _rotation_from_cos_sin(double c, double s):
     """Rebuild a Rotation2d from its stored (cos, sin) exactly (used by pickle)."""
     cdef rot2_t r
@@ -347,10 +378,12 @@ def _rotation_from_cos_sin(double c, double s):
 
 # ---------------------------------------------------------------------------------------
 cdef pose2_t _pose_args(object a, object b, object c, str cls) except *:
-    """Parse (), (Translation2d, Rotation2d) or (x, y, Rotation2d)."""
+    """Parse (), (Translation2d, Rotation2d), (x, y, Rotation2d) or (3×3 matrix)."""
     cdef double x, y
     if a is None and b is None and c is None:
         return pose(vec(0.0, 0.0), rot_xy(1.0, 0.0))
+    if b is None and c is None and isinstance(a, np.ndarray):
+        return _pose_matrix(a)
     if c is None and isinstance(a, Translation2d) and isinstance(b, Rotation2d):
         return pose((<Translation2d>a).v, (<Rotation2d>b).r)
     if isinstance(c, Rotation2d) and a is not None and b is not None:
@@ -358,15 +391,17 @@ cdef pose2_t _pose_args(object a, object b, object c, str cls) except *:
         y = b
         return pose(vec(x, y), (<Rotation2d>c).r)
     raise TypeError(
-        f"{cls}() takes (), (Translation2d, Rotation2d) or (x: float, y: float, Rotation2d); "
+        f"{cls}() takes (), (Translation2d, Rotation2d), (x: float, y: float, Rotation2d) "
+        f"or (3x3 numpy matrix); "
         f"got ({type(a).__name__}, {type(b).__name__}, {type(c).__name__})")
 
 
 @cython.freelist(64)
 cdef class Pose2d:
-    """Pose2d() or Pose2d(translation, rotation) or Pose2d(x, y, rotation)
+    """Pose2d() or Pose2d(translation, rotation) or Pose2d(x, y, rotation) or Pose2d(matrix)
 
     A robot pose on the field: position in m and heading as a :class:`Rotation2d`.
+    ``Pose2d(matrix)`` takes a 3×3 homogeneous numpy array (see :meth:`toMatrix`).
     Immutable; ``==`` compares translation within 1e-9 m and rotation within 1e-9.
     """
 
@@ -520,7 +555,7 @@ cdef class Pose2d:
 @cython.freelist(64)
 cdef class Transform2d:
     """Transform2d() or Transform2d(translation, rotation) or Transform2d(x, y, rotation)
-    or Transform2d(initial, last)
+    or Transform2d(initial, last) or Transform2d(matrix)
 
     A rigid motion: a translation in m followed by a rotation, expressed in the frame it
     is applied to. ``Transform2d(initial, last)`` with two :class:`Pose2d` gives the

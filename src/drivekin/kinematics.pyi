@@ -94,7 +94,7 @@ class ChassisVelocities:
     def __mul__(self, other: float) -> ChassisVelocities: ...
     def __rmul__(self, other: float) -> ChassisVelocities: ...
     def __truediv__(self, other: float) -> ChassisVelocities: ...
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
@@ -154,7 +154,7 @@ class ChassisAccelerations:
     def __mul__(self, other: float) -> ChassisAccelerations: ...
     def __rmul__(self, other: float) -> ChassisAccelerations: ...
     def __truediv__(self, other: float) -> ChassisAccelerations: ...
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
@@ -190,7 +190,7 @@ class SwerveModuleVelocity:
         [0, 1]."""
     def compareTo(self, other: SwerveModuleVelocity) -> int:
         """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float | Rotation2d]: ...
 
@@ -219,7 +219,7 @@ class SwerveModulePosition:
         """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
     def compareTo(self, other: SwerveModulePosition) -> int:
         """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float | Rotation2d]: ...
 
@@ -249,7 +249,7 @@ class SwerveModuleAcceleration:
         clamped to [0, 1]."""
     def compareTo(self, other: SwerveModuleAcceleration) -> int:
         """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
-    def __eq__(self, other: object) -> bool: ...
+    def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float | Rotation2d]: ...
 
@@ -336,7 +336,7 @@ class SwerveDriveKinematics:
     def toTwist2d(self, first: SwerveModulePosition, *more: SwerveModulePosition) -> Twist2d: ...
     @overload
     def toTwist2d(
-        self, start: Sequence[SwerveModulePosition], end: Sequence[SwerveModulePosition], /
+        self, first: Sequence[SwerveModulePosition], end: Sequence[SwerveModulePosition], /
     ) -> Twist2d: ...
     def toTwist2dInto(
         self,
@@ -391,7 +391,11 @@ class SwerveDriveKinematics:
     @overload
     @staticmethod
     def desaturateWheelVelocities(
-        moduleVelocities: Sequence[SwerveModuleVelocity], attainableMaxSpeed: float
+        moduleVelocities: Sequence[SwerveModuleVelocity],
+        attainableMaxSpeed: float,
+        attainableMaxModuleSpeed: None = None,
+        attainableMaxTranslationalSpeed: None = None,
+        attainableMaxRotationalVelocity: None = None,
     ) -> tuple[SwerveModuleVelocity, ...]:
         """desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed) or
         desaturateWheelVelocities(moduleVelocities, desiredChassisVelocity,
@@ -420,6 +424,9 @@ class SwerveDriveKinematics:
     def desaturateWheelVelocitiesInPlace(
         moduleVelocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
         attainableMaxSpeed: float,
+        attainableMaxModuleSpeed: None = None,
+        attainableMaxTranslationalSpeed: None = None,
+        attainableMaxRotationalVelocity: None = None,
     ) -> None:
         """Allocation-free :meth:`desaturateWheelVelocities` (same two forms) that rescales
         the caller's N SwerveModuleVelocity objects, or column 0 of an (N, 2) float64

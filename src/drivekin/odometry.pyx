@@ -78,6 +78,8 @@ cdef class SwerveDriveOdometry(_Odometry):
 
     cdef int _reset(self, Rotation2d gyroAngle, object modulePositions) except -1:
         cdef Py_ssize_t i
+        if self.kin is None:
+            raise RuntimeError("SwerveDriveOdometry.__init__ was not called")
         self.kin._read(modulePositions, SwerveModulePosition, "modulePositions")
         for i in range(self.kin.n):
             self.prev[i] = self.kin.s0[i]
@@ -91,6 +93,8 @@ cdef class SwerveDriveOdometry(_Odometry):
         cdef Py_ssize_t i
         cdef double d
         cdef double r[3]
+        if k is None:
+            raise RuntimeError("SwerveDriveOdometry.__init__ was not called")
         k._read(modulePositions, SwerveModulePosition, "modulePositions")
         for i in range(k.n):
             d = k.s0[i]
@@ -129,6 +133,8 @@ cdef class MecanumDriveOdometry(_Odometry):
         cdef double r[3]
         cdef Py_ssize_t i
         cdef _WheelValues w = wheelPositions
+        if self.kin is None:
+            raise RuntimeError("MecanumDriveOdometry.__init__ was not called")
         for i in range(4):
             d[i] = w.w[i] - self.prev[i]
         self.prev = w.w

@@ -1,0 +1,207 @@
+"""Differential (tank) drive kinematics, WPILib 2027.
+
+Units: m, m/s, m/s², rad, rad/s, rad/s². The model is the same as Road Runner's
+``TankKinematics``: v_left = vx − ω·W/2, v_right = vx + ω·W/2, with W the trackwidth.
+"""
+
+# Hand-written stub for the compiled module drivekin.differential (differential.pyx).
+# Every docstring is copied verbatim from the .pyx sources; tests/api/test_stubs.py checks
+# that they match the runtime ``__doc__`` and that no public name is missing on either side.
+#
+# At runtime the three wheel-value classes derive from the private bases _Wheel2 (this
+# module) and drivekin._wheels._WheelValues; the inherited members are declared on each
+# public class instead, so they carry the precise types.
+
+from collections.abc import Iterator
+from typing import ClassVar, final, overload
+
+from drivekin.geometry import Twist2d
+from drivekin.kinematics import ChassisAccelerations, ChassisVelocities
+
+@final
+class DifferentialDriveWheelVelocities:
+    """DifferentialDriveWheelVelocities(left=0.0, right=0.0)
+
+    Wheel velocities of a differential drive, m/s. Mutable. As in WPILib Java there is no
+    value equality: ``==`` is identity (compare ``left``/``right`` yourself).
+    """
+
+    def __init__(self, left: float = 0.0, right: float = 0.0) -> None: ...
+    @property
+    def left(self) -> float:
+        """Left wheel value (m/s, m or m/s² depending on the class)."""
+    @left.setter
+    def left(self, value: float) -> None: ...
+    @property
+    def right(self) -> float:
+        """Right wheel value (m/s, m or m/s² depending on the class)."""
+    @right.setter
+    def right(self, value: float) -> None: ...
+    def desaturate(self, attainableMaxSpeed: float) -> DifferentialDriveWheelVelocities:
+        """Return new velocities scaled so neither wheel exceeds ``attainableMaxSpeed``
+        (m/s), keeping their ratio; unchanged copy if already within it (2027)."""
+    def desaturateInPlace(self, attainableMaxSpeed: float) -> None:
+        """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
+    def interpolate(self, endValue: DifferentialDriveWheelVelocities, t: float) -> DifferentialDriveWheelVelocities:
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+    def plus(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities:
+        """Return the wheel-by-wheel sum."""
+    def minus(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities:
+        """Return the wheel-by-wheel difference."""
+    def unaryMinus(self) -> DifferentialDriveWheelVelocities:
+        """Return every wheel negated."""
+    def times(self, scalar: float) -> DifferentialDriveWheelVelocities:
+        """Return every wheel multiplied by ``scalar``."""
+    def div(self, scalar: float) -> DifferentialDriveWheelVelocities:
+        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+    def __add__(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities: ...
+    def __sub__(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities: ...
+    def __neg__(self) -> DifferentialDriveWheelVelocities: ...
+    def __mul__(self, other: float) -> DifferentialDriveWheelVelocities: ...
+    def __rmul__(self, other: float) -> DifferentialDriveWheelVelocities: ...
+    def __truediv__(self, other: float) -> DifferentialDriveWheelVelocities: ...
+    def __iter__(self) -> Iterator[float]: ...
+
+@final
+class DifferentialDriveWheelPositions:
+    """DifferentialDriveWheelPositions(left, right)
+
+    Distances driven by the left and right wheels, m. Mutable; ``==`` compares each
+    wheel within 1e-9 m (so instances are unhashable).
+    """
+
+    def __init__(self, left: float, right: float) -> None: ...
+    @property
+    def left(self) -> float:
+        """Left wheel value (m/s, m or m/s² depending on the class)."""
+    @left.setter
+    def left(self, value: float) -> None: ...
+    @property
+    def right(self) -> float:
+        """Right wheel value (m/s, m or m/s² depending on the class)."""
+    @right.setter
+    def right(self, value: float) -> None: ...
+    def copy(self) -> DifferentialDriveWheelPositions:
+        """Return an independent copy."""
+    def interpolate(self, endValue: DifferentialDriveWheelPositions, t: float) -> DifferentialDriveWheelPositions:
+        """Linear interpolation; ``t`` is not clamped."""
+    def plus(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions:
+        """Return the wheel-by-wheel sum."""
+    def minus(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions:
+        """Return the wheel-by-wheel difference."""
+    def unaryMinus(self) -> DifferentialDriveWheelPositions:
+        """Return every wheel negated."""
+    def times(self, scalar: float) -> DifferentialDriveWheelPositions:
+        """Return every wheel multiplied by ``scalar``."""
+    def div(self, scalar: float) -> DifferentialDriveWheelPositions:
+        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+    def __add__(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions: ...
+    def __sub__(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions: ...
+    def __neg__(self) -> DifferentialDriveWheelPositions: ...
+    def __mul__(self, other: float) -> DifferentialDriveWheelPositions: ...
+    def __rmul__(self, other: float) -> DifferentialDriveWheelPositions: ...
+    def __truediv__(self, other: float) -> DifferentialDriveWheelPositions: ...
+    def __iter__(self) -> Iterator[float]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+
+@final
+class DifferentialDriveWheelAccelerations:
+    """DifferentialDriveWheelAccelerations(left=0.0, right=0.0)
+
+    Wheel accelerations of a differential drive, m/s². Mutable; ``==`` is identity.
+    """
+
+    def __init__(self, left: float = 0.0, right: float = 0.0) -> None: ...
+    @property
+    def left(self) -> float:
+        """Left wheel value (m/s, m or m/s² depending on the class)."""
+    @left.setter
+    def left(self, value: float) -> None: ...
+    @property
+    def right(self) -> float:
+        """Right wheel value (m/s, m or m/s² depending on the class)."""
+    @right.setter
+    def right(self, value: float) -> None: ...
+    def interpolate(self, endValue: DifferentialDriveWheelAccelerations, t: float) -> DifferentialDriveWheelAccelerations:
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+    def plus(self, other: DifferentialDriveWheelAccelerations) -> DifferentialDriveWheelAccelerations:
+        """Return the wheel-by-wheel sum."""
+    def minus(self, other: DifferentialDriveWheelAccelerations) -> DifferentialDriveWheelAccelerations:
+        """Return the wheel-by-wheel difference."""
+    def unaryMinus(self) -> DifferentialDriveWheelAccelerations:
+        """Return every wheel negated."""
+    def times(self, scalar: float) -> DifferentialDriveWheelAccelerations:
+        """Return every wheel multiplied by ``scalar``."""
+    def div(self, scalar: float) -> DifferentialDriveWheelAccelerations:
+        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+    def __add__(self, other: DifferentialDriveWheelAccelerations) -> DifferentialDriveWheelAccelerations: ...
+    def __sub__(self, other: DifferentialDriveWheelAccelerations) -> DifferentialDriveWheelAccelerations: ...
+    def __neg__(self) -> DifferentialDriveWheelAccelerations: ...
+    def __mul__(self, other: float) -> DifferentialDriveWheelAccelerations: ...
+    def __rmul__(self, other: float) -> DifferentialDriveWheelAccelerations: ...
+    def __truediv__(self, other: float) -> DifferentialDriveWheelAccelerations: ...
+    def __iter__(self) -> Iterator[float]: ...
+
+@final
+class DifferentialDriveKinematics:
+    """DifferentialDriveKinematics(trackwidth)
+
+    Kinematics of a differential drive whose left and right wheels are ``trackwidth`` m
+    apart (use the effective, empirically tuned value if the wheels scrub). The
+    trackwidth must be positive and finite (ValueError otherwise).
+    """
+
+    def __init__(self, trackwidth: float) -> None: ...
+    @property
+    def trackwidth(self) -> float: ...
+    def toChassisVelocities(
+        self, wheelVelocities: DifferentialDriveWheelVelocities
+    ) -> ChassisVelocities:
+        """Return the robot velocity: vx = (left + right) / 2, vy = 0,
+        omega = (right − left) / trackwidth."""
+    def toChassisVelocitiesInto(
+        self, wheelVelocities: DifferentialDriveWheelVelocities, out: ChassisVelocities
+    ) -> None:
+        """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+    def toWheelVelocities(
+        self, chassisVelocities: ChassisVelocities
+    ) -> DifferentialDriveWheelVelocities:
+        """Return the wheel velocities for a robot velocity; ``vy`` is ignored (a
+        differential drive cannot strafe)."""
+    def toWheelVelocitiesInto(
+        self, chassisVelocities: ChassisVelocities, out: DifferentialDriveWheelVelocities
+    ) -> None:
+        """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
+    @overload
+    def toTwist2d(self, start: float, end: float) -> Twist2d:
+        """toTwist2d(leftDistance, rightDistance) or toTwist2d(startPositions, endPositions)
+
+        Return the Twist2d (m, rad) for wheel distance changes: dx = (l + r) / 2, dy = 0,
+        dtheta = (r − l) / trackwidth. With two DifferentialDriveWheelPositions the
+        changes are end − start."""
+    @overload
+    def toTwist2d(
+        self, start: DifferentialDriveWheelPositions, end: DifferentialDriveWheelPositions
+    ) -> Twist2d: ...
+    def toChassisAccelerations(
+        self, wheelAccelerations: DifferentialDriveWheelAccelerations
+    ) -> ChassisAccelerations:
+        """Return (ax = (l + r) / 2, ay = 0, alpha = (r − l) / trackwidth), m/s² and rad/s²."""
+    def toWheelAccelerations(
+        self, chassisAccelerations: ChassisAccelerations
+    ) -> DifferentialDriveWheelAccelerations:
+        """Return the wheel accelerations (ax ∓ trackwidth/2 · alpha); ``ay`` is ignored."""
+    def interpolate(
+        self,
+        startValue: DifferentialDriveWheelPositions,
+        endValue: DifferentialDriveWheelPositions,
+        t: float,
+    ) -> DifferentialDriveWheelPositions:
+        """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+    def copy(self, positions: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions:
+        """Return an independent copy of ``positions``."""
+    def copyInto(
+        self, positions: DifferentialDriveWheelPositions, output: DifferentialDriveWheelPositions
+    ) -> None:
+        """Copy ``positions`` into ``output``."""

@@ -1,0 +1,268 @@
+"""Mecanum drive kinematics, WPILib 2027.
+
+Units: m, m/s, m/s², rad, rad/s, rad/s². Wheel order everywhere: front left, front right,
+rear left, rear right. For a wheel at (x, y) relative to the centre of rotation the
+inverse rows are FL/RR ``[1, −1, −(x + y)]`` and FR/RL ``[1, 1, x − y]``.
+"""
+
+# Hand-written stub for the compiled module drivekin.mecanum (mecanum.pyx). Every
+# docstring is copied verbatim from the .pyx sources; tests/api/test_stubs.py checks that
+# they match the runtime ``__doc__`` and that no public name is missing on either side.
+#
+# At runtime the three wheel-value classes derive from the private bases _Wheel4 (this
+# module) and drivekin._wheels._WheelValues; the inherited members are declared on each
+# public class instead, so they carry the precise types.
+
+from collections.abc import Iterator
+from typing import ClassVar, final
+
+from drivekin.geometry import Translation2d, Twist2d
+from drivekin.kinematics import ChassisAccelerations, ChassisVelocities
+
+@final
+class MecanumDriveWheelVelocities:
+    """MecanumDriveWheelVelocities(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+
+    Wheel velocities of a mecanum drive, m/s. Mutable. As in WPILib Java there is no value
+    equality: ``==`` is identity.
+    """
+
+    def __init__(
+        self,
+        frontLeft: float = 0.0,
+        frontRight: float = 0.0,
+        rearLeft: float = 0.0,
+        rearRight: float = 0.0,
+    ) -> None: ...
+    @property
+    def frontLeft(self) -> float:
+        """Front-left wheel value (m/s, m or m/s² depending on the class)."""
+    @frontLeft.setter
+    def frontLeft(self, value: float) -> None: ...
+    @property
+    def frontRight(self) -> float:
+        """Front-right wheel value."""
+    @frontRight.setter
+    def frontRight(self, value: float) -> None: ...
+    @property
+    def rearLeft(self) -> float:
+        """Rear-left wheel value."""
+    @rearLeft.setter
+    def rearLeft(self, value: float) -> None: ...
+    @property
+    def rearRight(self) -> float:
+        """Rear-right wheel value."""
+    @rearRight.setter
+    def rearRight(self, value: float) -> None: ...
+    def desaturate(self, attainableMaxSpeed: float) -> MecanumDriveWheelVelocities:
+        """Return new velocities scaled so no wheel exceeds ``attainableMaxSpeed`` (m/s),
+        keeping their ratios; an unchanged copy if already within it (2027)."""
+    def desaturateInPlace(self, attainableMaxSpeed: float) -> None:
+        """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
+    def interpolate(self, endValue: MecanumDriveWheelVelocities, t: float) -> MecanumDriveWheelVelocities:
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+    def plus(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities:
+        """Return the wheel-by-wheel sum."""
+    def minus(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities:
+        """Return the wheel-by-wheel difference."""
+    def unaryMinus(self) -> MecanumDriveWheelVelocities:
+        """Return every wheel negated."""
+    def times(self, scalar: float) -> MecanumDriveWheelVelocities:
+        """Return every wheel multiplied by ``scalar``."""
+    def div(self, scalar: float) -> MecanumDriveWheelVelocities:
+        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+    def __add__(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities: ...
+    def __sub__(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities: ...
+    def __neg__(self) -> MecanumDriveWheelVelocities: ...
+    def __mul__(self, other: float) -> MecanumDriveWheelVelocities: ...
+    def __rmul__(self, other: float) -> MecanumDriveWheelVelocities: ...
+    def __truediv__(self, other: float) -> MecanumDriveWheelVelocities: ...
+    def __iter__(self) -> Iterator[float]: ...
+
+@final
+class MecanumDriveWheelPositions:
+    """MecanumDriveWheelPositions(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+
+    Distances driven by each wheel, m. Mutable; ``==`` compares each wheel within 1e-9 m
+    (so instances are unhashable).
+    """
+
+    def __init__(
+        self,
+        frontLeft: float = 0.0,
+        frontRight: float = 0.0,
+        rearLeft: float = 0.0,
+        rearRight: float = 0.0,
+    ) -> None: ...
+    @property
+    def frontLeft(self) -> float:
+        """Front-left wheel value (m/s, m or m/s² depending on the class)."""
+    @frontLeft.setter
+    def frontLeft(self, value: float) -> None: ...
+    @property
+    def frontRight(self) -> float:
+        """Front-right wheel value."""
+    @frontRight.setter
+    def frontRight(self, value: float) -> None: ...
+    @property
+    def rearLeft(self) -> float:
+        """Rear-left wheel value."""
+    @rearLeft.setter
+    def rearLeft(self, value: float) -> None: ...
+    @property
+    def rearRight(self) -> float:
+        """Rear-right wheel value."""
+    @rearRight.setter
+    def rearRight(self, value: float) -> None: ...
+    def copy(self) -> MecanumDriveWheelPositions:
+        """Return an independent copy."""
+    def interpolate(self, endValue: MecanumDriveWheelPositions, t: float) -> MecanumDriveWheelPositions:
+        """Linear interpolation; ``t`` is not clamped."""
+    def plus(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions:
+        """Return the wheel-by-wheel sum."""
+    def minus(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions:
+        """Return the wheel-by-wheel difference."""
+    def unaryMinus(self) -> MecanumDriveWheelPositions:
+        """Return every wheel negated."""
+    def times(self, scalar: float) -> MecanumDriveWheelPositions:
+        """Return every wheel multiplied by ``scalar``."""
+    def div(self, scalar: float) -> MecanumDriveWheelPositions:
+        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+    def __add__(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions: ...
+    def __sub__(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions: ...
+    def __neg__(self) -> MecanumDriveWheelPositions: ...
+    def __mul__(self, other: float) -> MecanumDriveWheelPositions: ...
+    def __rmul__(self, other: float) -> MecanumDriveWheelPositions: ...
+    def __truediv__(self, other: float) -> MecanumDriveWheelPositions: ...
+    def __iter__(self) -> Iterator[float]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+
+@final
+class MecanumDriveWheelAccelerations:
+    """MecanumDriveWheelAccelerations(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+
+    Wheel accelerations of a mecanum drive, m/s². Mutable; ``==`` is identity.
+    """
+
+    def __init__(
+        self,
+        frontLeft: float = 0.0,
+        frontRight: float = 0.0,
+        rearLeft: float = 0.0,
+        rearRight: float = 0.0,
+    ) -> None: ...
+    @property
+    def frontLeft(self) -> float:
+        """Front-left wheel value (m/s, m or m/s² depending on the class)."""
+    @frontLeft.setter
+    def frontLeft(self, value: float) -> None: ...
+    @property
+    def frontRight(self) -> float:
+        """Front-right wheel value."""
+    @frontRight.setter
+    def frontRight(self, value: float) -> None: ...
+    @property
+    def rearLeft(self) -> float:
+        """Rear-left wheel value."""
+    @rearLeft.setter
+    def rearLeft(self, value: float) -> None: ...
+    @property
+    def rearRight(self) -> float:
+        """Rear-right wheel value."""
+    @rearRight.setter
+    def rearRight(self, value: float) -> None: ...
+    def interpolate(self, endValue: MecanumDriveWheelAccelerations, t: float) -> MecanumDriveWheelAccelerations:
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+    def plus(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations:
+        """Return the wheel-by-wheel sum."""
+    def minus(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations:
+        """Return the wheel-by-wheel difference."""
+    def unaryMinus(self) -> MecanumDriveWheelAccelerations:
+        """Return every wheel negated."""
+    def times(self, scalar: float) -> MecanumDriveWheelAccelerations:
+        """Return every wheel multiplied by ``scalar``."""
+    def div(self, scalar: float) -> MecanumDriveWheelAccelerations:
+        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+    def __add__(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations: ...
+    def __sub__(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations: ...
+    def __neg__(self) -> MecanumDriveWheelAccelerations: ...
+    def __mul__(self, other: float) -> MecanumDriveWheelAccelerations: ...
+    def __rmul__(self, other: float) -> MecanumDriveWheelAccelerations: ...
+    def __truediv__(self, other: float) -> MecanumDriveWheelAccelerations: ...
+    def __iter__(self) -> Iterator[float]: ...
+
+@final
+class MecanumDriveKinematics:
+    """MecanumDriveKinematics(frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
+
+    Kinematics of a mecanum drive with the four wheel positions (Translation2d, m, robot
+    frame). The forward (pseudo-inverse) matrix is computed once for the robot origin and
+    never changes; a ``centerOfRotation`` passed to inverse kinematics moves only the
+    inverse rows and stays in effect until a different one is passed (within 1e-9 m).
+    """
+
+    def __init__(
+        self,
+        frontLeftWheel: Translation2d,
+        frontRightWheel: Translation2d,
+        rearLeftWheel: Translation2d,
+        rearRightWheel: Translation2d,
+    ) -> None: ...
+    def getFrontLeft(self) -> Translation2d:
+        """Return the front-left wheel position (Translation2d, m)."""
+    def getFrontRight(self) -> Translation2d:
+        """Return the front-right wheel position (Translation2d, m)."""
+    def getRearLeft(self) -> Translation2d:
+        """Return the rear-left wheel position (Translation2d, m)."""
+    def getRearRight(self) -> Translation2d:
+        """Return the rear-right wheel position (Translation2d, m)."""
+    def toWheelVelocities(
+        self, chassisVelocities: ChassisVelocities, centerOfRotation: Translation2d = ...
+    ) -> MecanumDriveWheelVelocities:
+        """Return the wheel velocities (m/s) for a robot-relative chassis velocity,
+        rotating about ``centerOfRotation`` (robot frame, m). Not desaturated."""
+    def toWheelVelocitiesInto(
+        self,
+        chassisVelocities: ChassisVelocities,
+        out: MecanumDriveWheelVelocities,
+        centerOfRotation: Translation2d = ...,
+    ) -> None:
+        """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
+    def toChassisVelocities(
+        self, wheelVelocities: MecanumDriveWheelVelocities
+    ) -> ChassisVelocities:
+        """Return the least-squares robot velocity for measured wheel velocities."""
+    def toChassisVelocitiesInto(
+        self, wheelVelocities: MecanumDriveWheelVelocities, out: ChassisVelocities
+    ) -> None:
+        """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+    def toTwist2d(
+        self, start: MecanumDriveWheelPositions, end: MecanumDriveWheelPositions | None = None
+    ) -> Twist2d:
+        """toTwist2d(wheelDeltas) or toTwist2d(start, end)
+
+        Return the Twist2d (m, rad) for wheel distance changes, either given directly or
+        as ``end − start`` of two MecanumDriveWheelPositions."""
+    def toWheelAccelerations(
+        self, chassisAccelerations: ChassisAccelerations, centerOfRotation: Translation2d = ...
+    ) -> MecanumDriveWheelAccelerations:
+        """Return the wheel accelerations (m/s²) for a chassis acceleration; the same
+        matrix as for velocities (no centripetal term, as in WPILib)."""
+    def toChassisAccelerations(
+        self, wheelAccelerations: MecanumDriveWheelAccelerations
+    ) -> ChassisAccelerations:
+        """Return the least-squares chassis acceleration for wheel accelerations."""
+    def interpolate(
+        self,
+        startValue: MecanumDriveWheelPositions,
+        endValue: MecanumDriveWheelPositions,
+        t: float,
+    ) -> MecanumDriveWheelPositions:
+        """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+    def copy(self, positions: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions:
+        """Return an independent copy of ``positions``."""
+    def copyInto(
+        self, positions: MecanumDriveWheelPositions, output: MecanumDriveWheelPositions
+    ) -> None:
+        """Copy ``positions`` into ``output``."""

@@ -1,0 +1,128 @@
+"""Odometry for swerve, mecanum and differential drives (WPILib 2027).
+
+Each ``update`` turns the wheel-position changes since the previous call into a twist
+with the drivetrain's forward kinematics, replaces its heading change by the wrapped
+gyro difference (the gyro is trusted for heading), and composes the pose with the
+twist's exponential. The gyro reading need not match the pose heading: only its changes
+matter. ``update`` returns the new pose; it allocates nothing beyond that Pose2d, which
+comes from a freelist, so a 50 Hz loop runs without allocator calls.
+"""
+
+# Hand-written stub for the compiled module drivekin.odometry (odometry.pyx). Every
+# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
+# they match the runtime ``__doc__`` and that no public name is missing on either side.
+#
+# At runtime the three odometry classes derive from the private base _Odometry; its
+# methods are declared on each public class instead.
+
+from collections.abc import Sequence
+from typing import final
+
+import numpy as np
+import numpy.typing as npt
+
+from drivekin.geometry import Pose2d, Rotation2d, Translation2d
+from drivekin.kinematics import SwerveDriveKinematics, SwerveModulePosition
+from drivekin.mecanum import MecanumDriveKinematics, MecanumDriveWheelPositions
+
+@final
+class SwerveDriveOdometry:
+    """SwerveDriveOdometry(kinematics, gyroAngle, modulePositions, initialPose=Pose2d())
+
+    Tracks a swerve robot's pose from N module positions (SwerveModulePosition objects or
+    an (N, 2) float64 array ``[distance m, angle rad]``) and a gyro angle (Rotation2d).
+    """
+
+    def __init__(
+        self,
+        kinematics: SwerveDriveKinematics,
+        gyroAngle: Rotation2d,
+        modulePositions: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
+        initialPose: Pose2d | None = None,
+    ) -> None: ...
+    def resetPosition(
+        self,
+        gyroAngle: Rotation2d,
+        modulePositions: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
+        pose: Pose2d,
+    ) -> None:
+        """Reset the pose, the gyro baseline and the module-position baseline."""
+    def update(
+        self,
+        gyroAngle: Rotation2d,
+        modulePositions: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
+    ) -> Pose2d:
+        """Integrate the module-distance changes since the last call (at the current module
+        angles) and the gyro change; return the new pose."""
+    def getPose(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+    def resetPose(self, pose: Pose2d) -> None:
+        """Set the pose; the gyro and wheel baselines are left as they are."""
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Set the position and keep the heading."""
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
+        here that makes the next update report a wrong heading; drivekin does not.)"""
+
+@final
+class MecanumDriveOdometry:
+    """MecanumDriveOdometry(kinematics, gyroAngle, wheelPositions, initialPose=Pose2d())
+
+    Tracks a mecanum robot's pose from MecanumDriveWheelPositions (m) and a gyro angle.
+    """
+
+    def __init__(
+        self,
+        kinematics: MecanumDriveKinematics,
+        gyroAngle: Rotation2d,
+        wheelPositions: MecanumDriveWheelPositions,
+        initialPose: Pose2d | None = None,
+    ) -> None: ...
+    def resetPosition(
+        self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions, pose: Pose2d
+    ) -> None:
+        """Reset the pose, the gyro baseline and the wheel-position baseline."""
+    def update(self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions) -> Pose2d:
+        """Integrate the wheel-distance changes since the last call and the gyro change;
+        return the new pose."""
+    def getPose(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+    def resetPose(self, pose: Pose2d) -> None:
+        """Set the pose; the gyro and wheel baselines are left as they are."""
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Set the position and keep the heading."""
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
+        here that makes the next update report a wrong heading; drivekin does not.)"""
+
+@final
+class DifferentialDriveOdometry:
+    """DifferentialDriveOdometry(gyroAngle, leftDistance, rightDistance, initialPose=Pose2d())
+
+    Tracks a differential-drive robot's pose from the left and right wheel distances (m)
+    and a gyro angle. No trackwidth is needed: the heading comes from the gyro.
+    """
+
+    def __init__(
+        self,
+        gyroAngle: Rotation2d,
+        leftDistance: float,
+        rightDistance: float,
+        initialPose: Pose2d | None = None,
+    ) -> None: ...
+    def resetPosition(
+        self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float, pose: Pose2d
+    ) -> None:
+        """Reset the pose, the gyro baseline and the wheel-distance baselines."""
+    def update(self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float) -> Pose2d:
+        """Integrate the wheel-distance changes since the last call (dx = mean change,
+        dy = 0) and the gyro change; return the new pose."""
+    def getPose(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+    def resetPose(self, pose: Pose2d) -> None:
+        """Set the pose; the gyro and wheel baselines are left as they are."""
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Set the position and keep the heading."""
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
+        here that makes the next update report a wrong heading; drivekin does not.)"""
