@@ -313,6 +313,16 @@ cdef rot2_t _angle_arg(object angle) except *:
     raise TypeError(f"angle must be a Rotation2d, got {type(angle).__name__}")
 
 
+cdef inline void optimize_into(_ModuleVector v, rot2_t current, _ModuleVector out) noexcept:
+    # Turn at most 90°: beyond that, drive backwards at the angle + 180°.
+    if fabs(rot_radians(rot_minus(v.a, current)) * (180.0 / M_PI)) > 90.0:
+        out.m = -v.m
+        out.a = rot_plus(v.a, rot_rad(M_PI))
+    else:
+        out.m = v.m
+        out.a = v.a
+
+
 @cython.freelist(128)
 cdef class _ModuleVector:
     """Shared behaviour of the swerve module values: a scalar and an angle."""
@@ -396,15 +406,23 @@ cdef class SwerveModuleVelocity(_ModuleVector):
 
         If the target angle is more than 90° from ``currentAngle``, the result drives the
         wheel backwards at the angle + 180°. Returns a new object (2027)."""
-        cdef rot2_t d = rot_minus(self.a, currentAngle.r)
-        if fabs(rot_radians(d) * (180.0 / M_PI)) > 90.0:
-            return new_module_velocity(-self.m, rot_plus(self.a, rot_rad(M_PI)))
-        return new_module_velocity(self.m, self.a)
+        cdef SwerveModuleVelocity out = new_module_velocity(self.m, self.a)
+        optimize_into(self, currentAngle.r, out)
+        return out
+
+    def optimizeInPlace(self, Rotation2d currentAngle not None):
+        """Allocation-free :meth:`optimize`: update this object (the WPILib 2026
+        behaviour). Returns None."""
+        optimize_into(self, currentAngle.r, self)
 
     def cosineScale(self, Rotation2d currentAngle not None):
         """Return the velocity scaled by cos(angle − currentAngle), so a module that is
         still turning does not push sideways. Returns a new object (2027)."""
         return new_module_velocity(self.m * rot_minus(self.a, currentAngle.r).c, self.a)
+
+    def cosineScaleInPlace(self, Rotation2d currentAngle not None):
+        """Allocation-free :meth:`cosineScale`: update this object. Returns None."""
+        self.m = self.m * rot_minus(self.a, currentAngle.r).c
 
     def interpolate(self, SwerveModuleVelocity endValue not None, double t):
         """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
