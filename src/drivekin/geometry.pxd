@@ -13,13 +13,17 @@ cdef class Translation2d:
 cdef class Rotation2d:
     cdef rot2_t r
 
-@cython.final
-cdef class Pose2d:
+cdef class _Frame2d:
     cdef pose2_t p
+    cdef _Frame2d _new(self, pose2_t p)
 
 @cython.final
-cdef class Transform2d:
-    cdef pose2_t p
+cdef class Pose2d(_Frame2d):
+    pass
+
+@cython.final
+cdef class Transform2d(_Frame2d):
+    pass
 
 @cython.final
 cdef class Twist2d:

@@ -396,8 +396,89 @@ cdef pose2_t _pose_args(object a, object b, object c, str cls) except *:
         f"got ({type(a).__name__}, {type(b).__name__}, {type(c).__name__})")
 
 
+# Pose2d and Transform2d share their layout (pose2_t) and every accessor; the freelist
+# lives on the base because Cython lets only a base class manage one.
 @cython.freelist(64)
-cdef class Pose2d:
+cdef class _Frame2d:
+    """Shared accessors of Pose2d and Transform2d (a translation in m and a rotation)."""
+
+    cdef _Frame2d _new(self, pose2_t p):
+        raise NotImplementedError
+
+    @property
+    def x(self):
+        """X component of the translation, m."""
+        return self.p.t.x
+
+    @property
+    def y(self):
+        """Y component of the translation, m."""
+        return self.p.t.y
+
+    def getX(self):
+        """Return the x component of the translation, m."""
+        return self.p.t.x
+
+    def getY(self):
+        """Return the y component of the translation, m."""
+        return self.p.t.y
+
+    def getTranslation(self):
+        """Return the translation part (Translation2d, m)."""
+        return new_translation(self.p.t)
+
+    def getRotation(self):
+        """Return the rotation part (Rotation2d)."""
+        return new_rotation(self.p.r)
+
+    def times(self, double scalar):
+        """Return (translation · scalar, rotation.times(scalar))."""
+        return self._new(pose_times(self.p, scalar))
+
+    def div(self, double scalar):
+        """Return ``times(1 / scalar)``."""
+        return self._new(pose_times(self.p, 1.0 / scalar))
+
+    def toMatrix(self):
+        """Return the 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y], [0, 0, 1]]``."""
+        return np.array([[self.p.r.c, -self.p.r.s, self.p.t.x],
+                         [self.p.r.s, self.p.r.c, self.p.t.y],
+                         [0.0, 0.0, 1.0]])
+
+    def __mul__(self, other):
+        try:
+            return self.times(other)
+        except TypeError:
+            return NotImplemented
+
+    def __rmul__(self, other):
+        return self.__mul__(other)
+
+    def __truediv__(self, other):
+        try:
+            return self.div(other)
+        except TypeError:
+            return NotImplemented
+
+    def __eq__(self, other):
+        if type(other) is type(self):
+            return vec_eq(self.p.t, (<_Frame2d>other).p.t) and rot_eq(self.p.r, (<_Frame2d>other).p.r)
+        return NotImplemented
+
+    __hash__ = None
+
+    def __reduce__(self):
+        return (type(self), (new_translation(self.p.t), new_rotation(self.p.r)))
+
+    def __repr__(self):
+        return (f"{type(self).__name__}(x={self.p.t.x!r}, y={self.p.t.y!r}, "
+                f"rotation=Rotation2d(radians={rot_radians(self.p.r)!r}))")
+
+    def __str__(self):
+        return f"{type(self).__name__}({new_translation(self.p.t)}, {new_rotation(self.p.r)})"
+
+
+cdef class Pose2d(_Frame2d):
     """Pose2d() or Pose2d(translation, rotation) or Pose2d(x, y, rotation) or Pose2d(matrix)
 
     A robot pose on the field: position in m and heading as a :class:`Rotation2d`.
@@ -408,31 +489,8 @@ cdef class Pose2d:
     def __init__(self, a=None, b=None, c=None):
         self.p = _pose_args(a, b, c, "Pose2d")
 
-    @property
-    def x(self):
-        """X position, m."""
-        return self.p.t.x
-
-    @property
-    def y(self):
-        """Y position, m."""
-        return self.p.t.y
-
-    def getX(self):
-        """Return the x position, m."""
-        return self.p.t.x
-
-    def getY(self):
-        """Return the y position, m."""
-        return self.p.t.y
-
-    def getTranslation(self):
-        """Return the position as a Translation2d, m."""
-        return new_translation(self.p.t)
-
-    def getRotation(self):
-        """Return the heading as a Rotation2d."""
-        return new_rotation(self.p.r)
+    cdef _Frame2d _new(self, pose2_t p):
+        return new_pose(p)
 
     def transformBy(self, Transform2d other not None):
         """Return this pose moved by ``other``, expressed in this pose's frame."""
@@ -458,14 +516,6 @@ cdef class Pose2d:
         """Return the pose rotated by ``rot`` about ``point``; the heading turns by ``rot``."""
         cdef vec2_t d = vec_rotate(vec(self.p.t.x - point.v.x, self.p.t.y - point.v.y), rot.r)
         return new_pose(pose(vec(d.x + point.v.x, d.y + point.v.y), rot_plus(self.p.r, rot.r)))
-
-    def times(self, double scalar):
-        """Return (translation · scalar, rotation.times(scalar))."""
-        return new_pose(pose_times(self.p, scalar))
-
-    def div(self, double scalar):
-        """Return ``times(1 / scalar)``."""
-        return new_pose(pose_times(self.p, 1.0 / scalar))
 
     def exp(self, Twist2d twist not None):
         """Return ``self.plus(twist.exp())`` in one call (the WPILib 2026 ``Pose2d.exp``;
@@ -502,12 +552,6 @@ cdef class Pose2d:
         cdef twist2_t tw = transform_log(pose_relative_to(endValue.p, self.p))
         return new_pose(pose_transform_by(self.p, twist_exp(tw.dx * t, tw.dy * t, tw.dtheta * t)))
 
-    def toMatrix(self):
-        """Return the 3×3 homogeneous matrix of this pose."""
-        return np.array([[self.p.r.c, -self.p.r.s, self.p.t.x],
-                         [self.p.r.s, self.p.r.c, self.p.t.y],
-                         [0.0, 0.0, 1.0]])
-
     def __add__(self, other):
         if isinstance(other, Transform2d):
             return self.plus(other)
@@ -518,42 +562,9 @@ cdef class Pose2d:
             return self.minus(other)
         return NotImplemented
 
-    def __mul__(self, other):
-        try:
-            return self.times(other)
-        except TypeError:
-            return NotImplemented
-
-    def __rmul__(self, other):
-        return self.__mul__(other)
-
-    def __truediv__(self, other):
-        try:
-            return self.div(other)
-        except TypeError:
-            return NotImplemented
-
-    def __eq__(self, other):
-        if isinstance(other, Pose2d):
-            return vec_eq(self.p.t, (<Pose2d>other).p.t) and rot_eq(self.p.r, (<Pose2d>other).p.r)
-        return NotImplemented
-
-    __hash__ = None
-
-    def __reduce__(self):
-        return (Pose2d, (new_translation(self.p.t), new_rotation(self.p.r)))
-
-    def __repr__(self):
-        return (f"Pose2d(x={self.p.t.x!r}, y={self.p.t.y!r}, "
-                f"rotation=Rotation2d(radians={rot_radians(self.p.r)!r}))")
-
-    def __str__(self):
-        return f"Pose2d({new_translation(self.p.t)}, {new_rotation(self.p.r)})"
-
 
 # ---------------------------------------------------------------------------------------
-@cython.freelist(64)
-cdef class Transform2d:
+cdef class Transform2d(_Frame2d):
     """Transform2d() or Transform2d(translation, rotation) or Transform2d(x, y, rotation)
     or Transform2d(initial, last) or Transform2d(matrix)
 
@@ -568,31 +579,8 @@ cdef class Transform2d:
         else:
             self.p = _pose_args(a, b, c, "Transform2d")
 
-    @property
-    def x(self):
-        """X component of the translation, m."""
-        return self.p.t.x
-
-    @property
-    def y(self):
-        """Y component of the translation, m."""
-        return self.p.t.y
-
-    def getX(self):
-        """Return the x component of the translation, m."""
-        return self.p.t.x
-
-    def getY(self):
-        """Return the y component of the translation, m."""
-        return self.p.t.y
-
-    def getTranslation(self):
-        """Return the translation part, m."""
-        return new_translation(self.p.t)
-
-    def getRotation(self):
-        """Return the rotation part."""
-        return new_rotation(self.p.r)
+    cdef _Frame2d _new(self, pose2_t p):
+        return new_transform(p)
 
     def inverse(self):
         """Return the transform that undoes this one."""
@@ -602,63 +590,16 @@ cdef class Transform2d:
         """Return this transform followed by ``other``."""
         return new_transform(pose_transform_by(self.p, other.p))
 
-    def times(self, double scalar):
-        """Return (translation · scalar, rotation.times(scalar))."""
-        return new_transform(pose_times(self.p, scalar))
-
-    def div(self, double scalar):
-        """Return ``times(1 / scalar)``."""
-        return new_transform(pose_times(self.p, 1.0 / scalar))
-
     def log(self):
         """Return the Twist2d whose :meth:`Twist2d.exp` is this transform (the
         constant-curvature arc; the inverse of exp)."""
         cdef twist2_t tw = transform_log(self.p)
         return new_twist(tw.dx, tw.dy, tw.dtheta)
 
-    def toMatrix(self):
-        """Return the 3×3 homogeneous matrix of this transform."""
-        return np.array([[self.p.r.c, -self.p.r.s, self.p.t.x],
-                         [self.p.r.s, self.p.r.c, self.p.t.y],
-                         [0.0, 0.0, 1.0]])
-
     def __add__(self, other):
         if isinstance(other, Transform2d):
             return self.plus(other)
         return NotImplemented
-
-    def __mul__(self, other):
-        try:
-            return self.times(other)
-        except TypeError:
-            return NotImplemented
-
-    def __rmul__(self, other):
-        return self.__mul__(other)
-
-    def __truediv__(self, other):
-        try:
-            return self.div(other)
-        except TypeError:
-            return NotImplemented
-
-    def __eq__(self, other):
-        if isinstance(other, Transform2d):
-            return (vec_eq(self.p.t, (<Transform2d>other).p.t)
-                    and rot_eq(self.p.r, (<Transform2d>other).p.r))
-        return NotImplemented
-
-    __hash__ = None
-
-    def __reduce__(self):
-        return (Transform2d, (new_translation(self.p.t), new_rotation(self.p.r)))
-
-    def __repr__(self):
-        return (f"Transform2d(x={self.p.t.x!r}, y={self.p.t.y!r}, "
-                f"rotation=Rotation2d(radians={rot_radians(self.p.r)!r}))")
-
-    def __str__(self):
-        return f"Transform2d({new_translation(self.p.t)}, {new_rotation(self.p.r)})"
 
 
 # ---------------------------------------------------------------------------------------
