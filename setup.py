@@ -21,6 +21,9 @@ directives = {
     "nonecheck": False,
     "cdivision": True,
     "embedsignature": True,
+    # Every value class defines __reduce__; the rest (kinematics caches, odometry) are
+    # not meant to be pickled, so Cython need not generate pickling helpers.
+    "auto_pickle": False,
 }
 macros = [("NPY_NO_DEPRECATED_API", "NPY_1_7_API_VERSION")]
 if trace:

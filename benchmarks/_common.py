@@ -194,9 +194,13 @@ def machine_description() -> list[str]:
         cpus = sorted(os.sched_getaffinity(0))
     except AttributeError:  # pragma: no cover - not Linux
         cpus = []
+    try:
+        load = "load average %.2f %.2f %.2f" % os.getloadavg()
+    except OSError:  # pragma: no cover
+        load = "load average ?"
     return [
-        f"CPU: {cpu_model()} ({os.cpu_count()} logical CPUs; this process pinned to "
-        f"{','.join(map(str, cpus)) or '?'})",
+        f"CPU: {cpu_model()} ({os.cpu_count()} logical CPUs, {load}; this process pinned to "
+        f"CPU {','.join(map(str, cpus)) or '?'})",
         f"OS: {platform.platform()}",
         f"Python: {platform.python_implementation()} {platform.python_version()} "
         f"({platform.python_compiler()})",

@@ -7,18 +7,19 @@ this list, so adding a drivetrain is a few lines here, e.g.::
     register(Operation(
         key="mecanum.ik", title="mecanum IK toWheelVelocities", suite="mecanum",
         robotpy=Case("kin.toWheelSpeeds(cs)", lambda rp, dk: dict(kin=rp.mkin, cs=rp.cs),
-                     value="mecanum4(kin.toWheelSpeeds(cs))"),
+                     value="wheels4(kin.toWheelSpeeds(cs))"),
         facade=Case("kin.toWheelVelocities(cv)", lambda rp, dk: dict(kin=dk.mkin, cv=dk.cv),
-                    value="mecanum4(kin.toWheelVelocities(cv))"),
+                    value="wheels4(kin.toWheelVelocities(cv))"),
         alloc_free=Case("kin.toWheelVelocitiesInto(cv, out)",
                         lambda rp, dk: dict(kin=dk.mkin, cv=dk.cv,
-                                            out=dk.k.MecanumDriveWheelVelocities()),
-                        value="mecanum4(out)"),
+                                            out=dk.MecanumDriveWheelVelocities()),
+                        value="wheels4(out)"),
         targets=(0.15, 0.08)))
 
-plus building ``rp.mkin`` / ``dk.mkin`` in ``_common.build_robotpy`` / ``build_drivekin``
-and a ``bench_mecanum.py`` that is a copy of ``bench_chassis.py`` with the suite name
-changed.
+plus building ``rp.mkin`` (``wpimath.kinematics.MecanumDriveKinematics``), ``dk.mkin`` and
+``dk.MecanumDriveWheelVelocities`` (``drivekin.mecanum``) in ``_common.build_robotpy`` /
+``build_drivekin``, and a ``bench_mecanum.py`` that is a copy of ``bench_chassis.py`` with
+``SUITE = "mecanum"``. ``ratio_table.py`` picks new entries up by itself.
 
 A :class:`Case` is a one-line statement plus a ``setup(rp, dk) -> dict`` that returns the
 local names the statement uses. ``setup`` is called once per case, so mutable inputs and
@@ -105,8 +106,14 @@ def flat_array(a):
     return [float(x) for x in a.ravel()]
 
 
+def wheels4(w):
+    # mecanum wheel speeds/velocities: the same field names in robotpy 2026 and drivekin
+    return [w.frontLeft, w.frontRight, w.rearLeft, w.rearRight]
+
+
 VALUE_HELPERS = dict(rp_states=rp_states, dk_states=dk_states, speeds3=speeds3,
-                     rp_pose=rp_pose, dk_pose=dk_pose, flat_array=flat_array)
+                     rp_pose=rp_pose, dk_pose=dk_pose, flat_array=flat_array,
+                     wheels4=wheels4)
 
 
 def _np_zeros(shape):
@@ -260,6 +267,23 @@ register(Operation(
                     value="dk_pose(pose.exp(twist))"),
     targets=(0.15, 0.12),
     needs_kinematics=False))
+
+
+# ---------------------------------------------------------------------------------------
+# Calibration statements: not kinematics, just the call floors of each library, timed with
+# the operations so a table from another machine can be compared with perf-floor.md
+# (label, case, what perf-floor.md measured on its machine: time, instructions).
+
+CALIBRATION = [
+    ("empty loop iteration", Case("pass", lambda rp, dk: {}),
+     "5.0 ns", "88 Ir"),
+    ("drivekin 0-arg call returning a float: rot.getCos()",
+     Case("rot.getCos()", lambda rp, dk: dict(rot=dk.rot)),
+     "no-op 18.0 ns + about 8 ns to return a float", "no-op 217 Ir + about 65 Ir for the float"),
+    ("robotpy 0-arg call returning a float: rot.radians()",
+     Case("rot.radians()", lambda rp, dk: dict(rot=rp.rot)),
+     "172.3 ns", "1,900 Ir"),
+]
 
 
 # ---------------------------------------------------------------------------------------

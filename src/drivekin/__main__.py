@@ -1,17 +1,28 @@
-"""``python -m drivekin``: a simulated 50 Hz swerve control loop on the allocation-free path.
+"""``python -m drivekin``: a simulated 50 Hz drivetrain control loop on the allocation-free path.
 
-The demo drives a four-module swerve robot through a scripted joystick sequence for a few
-minutes of robot time and reports how long each 20 ms control step took and whether the
-loop allocated memory. One step is exactly what a robot program does every 20 ms::
+The demo drives a swerve, mecanum or differential robot (``--drivetrain``) through a
+scripted joystick sequence for a few minutes of robot time and reports how long each
+20 ms control step took and whether the loop allocated memory. One step is exactly what a
+robot program does every 20 ms; for the default four-module swerve robot::
 
     joystick script  -> ChassisVelocities (field-relative, one mutable object)
-    toRobotRelativeInto(heading, cv)           field-relative -> robot-relative
+    toRobotRelativeInto(gyro, cv)              field-relative -> robot-relative
     cv.discretizeInto(0.02, cv)                remove the translate-while-turning drift
     kin.toSwerveModuleVelocitiesInto(cv, targets)        inverse kinematics, in place
     SwerveDriveKinematics.desaturateWheelVelocitiesInPlace(targets, max_speed)
-    module response model                      optimize, rate-limited steering, lagged wheel
-    kin.toTwist2dInto(deltas, twist)           forward kinematics from the position deltas
-    pose = pose.exp(twist)                     immutable Pose2d, recycled from a freelist
+    module response model                      optimize(InPlace), rate-limited steering,
+                                               cosineScale(InPlace), lagged wheel, encoders
+    kin.toChassisVelocitiesInto(states, cv2)   simulated gyro: heading += omega * dt
+    pose = odometry.update(gyro, positions)    SwerveDriveOdometry; Pose2d from a freelist
+
+Mecanum: the same first two lines, then ``toWheelVelocitiesInto`` → ``desaturateInPlace``
+on a MecanumDriveWheelVelocities → first-order lag per wheel → wheel distances in one
+mutable MecanumDriveWheelPositions → ``MecanumDriveOdometry.update(gyro, positions)``.
+Differential (arcade drive): the forward and rotation sticks as robot-relative vx and
+omega, the sideways stick unused → ``toWheelVelocitiesInto`` → ``desaturateInPlace`` →
+lag per side → ``DifferentialDriveOdometry.update(gyro, left, right)``. In all three the
+simulated gyro is the true heading: the wheel model's forward kinematics
+(``toChassisVelocitiesInto`` of the measured wheel velocities) integrated over each step.
 
 Measurement, in two passes over identical fresh simulations (so the poses must agree):
 
@@ -21,18 +32,20 @@ Measurement, in two passes over identical fresh simulations (so the poses must a
 2. *Allocation pass*, tracemalloc on (it slows every allocation down, so it must not
    distort the timings): traced bytes are read once before the loop, the peak is reset,
    and after the loop the peak and current traced bytes are compared with the start;
-   a snapshot diff counts the blocks still alive. Because CPython allocates a
-   temporary before it frees the value it replaces, any per-step allocation raises the
-   traced peak above the start; ``0 B`` means the steady-state loop did not call the
-   allocator (floats and the drivekin value objects are recycled from freelists).
+   ``sys.getallocatedblocks()`` before and after gives the net change in live blocks.
+   tracemalloc cannot count allocator calls, but CPython creates a new value before it
+   releases the one it replaces, so a per-step allocation shows up as a peak above the
+   start (even a freed 8-byte list buffer does). A 0 B peak with 0 net blocks therefore
+   means the steady-state loop is served entirely by freelists (floats, drivekin value
+   objects) and preallocated objects.
 
 Before each pass: ``gc.collect()``, then the measured simulation is built, then a
 throw-away simulation runs one full script cycle as warm-up (caches, specialised
 bytecode) and is freed, refilling the freelists (see :func:`prepared_simulation`).
 
 Only the standard library and drivekin are used. Drivetrains plug in through
-:data:`DRIVETRAINS`: a class with ``pose``, ``distance``, ``describe()`` and
-``step(command)``.
+:data:`DRIVETRAINS`: a :class:`Drivetrain` subclass with ``pose``, ``distance``,
+``describe()`` and ``step(command)``.
 """
 from __future__ import annotations
 
@@ -49,13 +62,20 @@ from array import array
 import drivekin
 from drivekin import (
     ChassisVelocities,
+    DifferentialDriveKinematics,
+    DifferentialDriveOdometry,
+    DifferentialDriveWheelVelocities,
+    MecanumDriveKinematics,
+    MecanumDriveOdometry,
+    MecanumDriveWheelPositions,
+    MecanumDriveWheelVelocities,
     Pose2d,
     Rotation2d,
     SwerveDriveKinematics,
+    SwerveDriveOdometry,
     SwerveModulePosition,
     SwerveModuleVelocity,
     Translation2d,
-    Twist2d,
 )
 
 DT = 0.02                   # control period, s (50 Hz)
@@ -65,6 +85,10 @@ _cos = math.cos
 _hypot = math.hypot
 _from_radians = Rotation2d.fromRadians
 _desaturate_in_place = SwerveDriveKinematics.desaturateWheelVelocitiesInPlace
+# Newer builds optimize and cosine-scale a module target in place; older ones only have the
+# forms that return a new object. The swerve module model uses whichever is there.
+_IN_PLACE_MODULE_OPS = (hasattr(SwerveModuleVelocity, "optimizeInPlace")
+                        and hasattr(SwerveModuleVelocity, "cosineScaleInPlace"))
 
 # Hot-path rule for everything below: no Python ``for`` loops (list/tuple/range iterators
 # are heap objects), no new attributes (``__slots__``), no ints above 256 (small ints are
@@ -158,78 +182,145 @@ class JoystickScript:
 
 
 # ---------------------------------------------------------------------------------------
-# Swerve drivetrain
+# Drivetrains
+
+class Drivetrain:
+    """Shared state of the simulated drivetrains: the simulated gyro, the odometry pose and
+    the path length. Subclasses set ``name``, ``ODOMETRY`` (the odometry class), ``INPUT``
+    and ``CHAIN`` (header text; CHAIN is one string per line) and implement ``describe()``
+    and ``step(command)``.
+
+    The gyro is the robot's true heading: the chassis rotation rate the wheel model
+    produces (its forward kinematics, ``toChassisVelocitiesInto`` of the measured wheel
+    velocities) integrated over each period. It is read like a real gyro, as a
+    continuous angle in a Rotation2d, and fed to the odometry together with the wheel
+    distances; the odometry trusts it for the heading."""
+
+    name = ""
+    ODOMETRY = None
+    INPUT = ""
+    CHAIN = ()
+
+    __slots__ = ("max_speed", "measured", "gyro", "odometry", "pose", "distance",
+                 "_gyro_rad", "_x", "_y")
+
+    def __init__(self, max_speed: float) -> None:
+        self.max_speed = float(max_speed)
+        self.measured = ChassisVelocities()   # wheel model's forward kinematics, per step
+        self._gyro_rad = 0.0                  # continuous (unwrapped) gyro angle, rad
+        self.gyro = Rotation2d()
+        self.distance = 0.0     # odometry path length: sum of per-step position changes, m
+        self._x = 0.0
+        self._y = 0.0
+        # Subclasses create ``self.odometry`` and then set ``self.pose`` from it.
+
+    def _gyro_step(self) -> Rotation2d:
+        """Advance the simulated gyro by the measured rotation rate; return the reading."""
+        angle = self._gyro_rad + self.measured.omega * DT
+        self._gyro_rad = angle
+        gyro = _from_radians(angle)
+        self.gyro = gyro
+        return gyro
+
+    def _record(self, pose: Pose2d) -> None:
+        """Keep the pose ``update`` returned and add its position change to the path."""
+        self.pose = pose
+        x = pose.x
+        y = pose.y
+        self.distance += _hypot(x - self._x, y - self._y)
+        self._x = x
+        self._y = y
+
 
 class SwerveModuleSim:
     """One swerve module's response to its target, updating caller-visible objects in
-    place: ``state`` (measured SwerveModuleVelocity), ``position`` (cumulative
-    SwerveModulePosition, like the encoders) and ``delta`` (the change of ``position``
-    over the last step, at the new angle, as WPILib's odometry uses it).
+    place: ``state`` (measured SwerveModuleVelocity) and ``position`` (cumulative
+    SwerveModulePosition at the current module angle, like the encoders).
 
     Model: WPILib's ``optimize`` (never steer more than 90°), steering rate-limited to
     ``max_steer_rate`` rad/s towards the target, wheel speed a first-order lag with time
     constant ``tau`` s towards the cosine-scaled target (a module that still points the
-    wrong way does not push)."""
+    wrong way does not push). With ``optimizeInPlace``/``cosineScaleInPlace`` available
+    the target object itself is optimized and scaled; otherwise the returning forms are
+    used (new objects, from a freelist). Both give the same numbers."""
 
-    __slots__ = ("target", "state", "position", "delta", "_alpha", "_max_step")
+    __slots__ = ("target", "state", "position", "_alpha", "_max_step")
 
     def __init__(self, target: SwerveModuleVelocity, tau: float, max_steer_rate: float):
         self.target = target
         self.state = SwerveModuleVelocity(0.0, Rotation2d())
         self.position = SwerveModulePosition(0.0, Rotation2d())
-        self.delta = SwerveModulePosition(0.0, Rotation2d())
         self._alpha = 1.0 - math.exp(-DT / tau)
         self._max_step = max_steer_rate * DT
 
-    def update(self) -> None:
-        state = self.state
-        current = state.angle                         # Rotation2d (freelist)
-        desired = self.target.optimize(current)       # new object (freelist)
-        goal = desired.angle
+    def _steer(self, current: Rotation2d, goal: Rotation2d) -> Rotation2d:
+        """The module angle after one period of rate-limited steering towards ``goal``."""
         error = goal.minus(current).getRadians()
         limit = self._max_step
         if error > limit:
             error = limit
         elif error < -limit:
             error = -limit
-        angle = current.plus(_from_radians(error))
+        return current.plus(_from_radians(error))
+
+    def _drive(self, command: float, angle: Rotation2d) -> None:
+        """Lag the wheel speed towards ``command``; advance the encoder at ``angle``."""
+        state = self.state
         state.angle = angle                           # the setter copies the value
-        command = desired.velocity * goal.minus(angle).getCos()
         v = state.velocity
         v = v + (command - v) * self._alpha
         state.velocity = v
         position = self.position
-        last = position.distance
-        position.distance = last + v * DT
-        delta = self.delta
-        delta.distance = position.distance - last     # encoder delta, as odometry does
-        delta.angle = angle
+        position.distance = position.distance + v * DT
+        position.angle = angle
+
+    def _update_in_place(self) -> None:
+        target = self.target          # rewritten by inverse kinematics every step
+        current = self.state.angle                    # Rotation2d (freelist)
+        target.optimizeInPlace(current)
+        angle = self._steer(current, target.angle)
+        target.cosineScaleInPlace(angle)
+        self._drive(target.velocity, angle)
+
+    def _update_returning(self) -> None:
+        current = self.state.angle                    # Rotation2d (freelist)
+        desired = self.target.optimize(current)       # new object (freelist)
+        angle = self._steer(current, desired.angle)
+        self._drive(desired.cosineScale(angle).velocity, angle)
+
+    update = _update_in_place if _IN_PLACE_MODULE_OPS else _update_returning
 
 
-class SwerveDrive:
+class SwerveDrive(Drivetrain):
     """Four-module swerve robot: inverse kinematics with desaturation, the module model,
-    forward kinematics and pose integration, all writing into preallocated objects."""
+    the simulated gyro and SwerveDriveOdometry, all writing into preallocated objects."""
 
     name = "swerve"
+    ODOMETRY = SwerveDriveOdometry
+    INPUT = "field-relative joystick"
+    _IP = "InPlace" if _IN_PLACE_MODULE_OPS else ""
+    CHAIN = ("toRobotRelativeInto → discretizeInto → toSwerveModuleVelocitiesInto →",
+             f"desaturateWheelVelocitiesInPlace → module model: optimize{_IP}, steering limit,",
+             f"cosineScale{_IP}, wheel lag → SwerveDriveOdometry.update(gyro, positions)")
+    del _IP
     HALF_TRACK = 0.3        # m, module offset from the robot centre in x and y
     WHEEL_TAU = 0.05        # s, wheel-speed time constant
     STEER_RATE = 4.0 * math.pi   # rad/s, steering rate limit
 
-    __slots__ = ("max_speed", "kinematics", "targets", "deltas", "twist", "pose",
-                 "distance", "_m0", "_m1", "_m2", "_m3")
+    __slots__ = ("kinematics", "targets", "states", "positions", "_m0", "_m1", "_m2", "_m3")
 
     def __init__(self, max_speed: float) -> None:
+        super().__init__(max_speed)
         h = self.HALF_TRACK
-        self.max_speed = float(max_speed)
         self.kinematics = SwerveDriveKinematics(
             Translation2d(h, h), Translation2d(h, -h), Translation2d(-h, h), Translation2d(-h, -h))
         self.targets = [SwerveModuleVelocity() for _ in range(4)]
         modules = [SwerveModuleSim(t, self.WHEEL_TAU, self.STEER_RATE) for t in self.targets]
         self._m0, self._m1, self._m2, self._m3 = modules
-        self.deltas = [m.delta for m in modules]
-        self.twist = Twist2d()
-        self.pose = Pose2d()
-        self.distance = 0.0     # path length of the robot centre, m
+        self.states = [m.state for m in modules]
+        self.positions = [m.position for m in modules]
+        self.odometry = SwerveDriveOdometry(self.kinematics, self.gyro, self.positions)
+        self.pose = self.odometry.getPose()
 
     def describe(self) -> str:
         h = self.HALF_TRACK
@@ -239,22 +330,139 @@ class SwerveDrive:
     def step(self, command: ChassisVelocities) -> None:
         """Run one control period for a field-relative ``command`` (overwritten: it is the
         scratch object the chain works in)."""
-        command.toRobotRelativeInto(self.pose.getRotation(), command)
+        command.toRobotRelativeInto(self.gyro, command)
         command.discretizeInto(DT, command)
-        self.kinematics.toSwerveModuleVelocitiesInto(command, self.targets)
+        kinematics = self.kinematics
+        kinematics.toSwerveModuleVelocitiesInto(command, self.targets)
         _desaturate_in_place(self.targets, self.max_speed)
         # Unrolled on purpose: a ``for`` over the modules would allocate an iterator.
         self._m0.update()
         self._m1.update()
         self._m2.update()
         self._m3.update()
-        twist = self.twist
-        self.kinematics.toTwist2dInto(self.deltas, twist)
-        self.pose = self.pose.exp(twist)
-        self.distance += _hypot(twist.dx, twist.dy)   # arc length of a constant twist
+        kinematics.toChassisVelocitiesInto(self.states, self.measured)
+        self._record(self.odometry.update(self._gyro_step(), self.positions))
 
 
-DRIVETRAINS = {"swerve": SwerveDrive}
+class MecanumDrive(Drivetrain):
+    """Four-wheel mecanum robot: inverse kinematics, desaturation, a first-order lag per
+    wheel, wheel distances in one mutable MecanumDriveWheelPositions, the simulated gyro
+    and MecanumDriveOdometry."""
+
+    name = "mecanum"
+    ODOMETRY = MecanumDriveOdometry
+    INPUT = "field-relative joystick"
+    CHAIN = ("toRobotRelativeInto → discretizeInto → toWheelVelocitiesInto → desaturateInPlace",
+             "→ wheel lag → MecanumDriveWheelPositions (in place) → "
+             "MecanumDriveOdometry.update")
+    HALF_LENGTH = 0.3       # m, wheel offset from the robot centre in x
+    HALF_WIDTH = 0.25       # m, wheel offset from the robot centre in y
+    WHEEL_TAU = 0.05        # s, wheel-speed time constant
+
+    __slots__ = ("kinematics", "targets", "wheels", "positions", "_alpha")
+
+    def __init__(self, max_speed: float) -> None:
+        super().__init__(max_speed)
+        x, y = self.HALF_LENGTH, self.HALF_WIDTH
+        self.kinematics = MecanumDriveKinematics(
+            Translation2d(x, y), Translation2d(x, -y), Translation2d(-x, y), Translation2d(-x, -y))
+        self.targets = MecanumDriveWheelVelocities()
+        self.wheels = MecanumDriveWheelVelocities()      # measured wheel velocities
+        self.positions = MecanumDriveWheelPositions()    # encoder distances
+        self._alpha = 1.0 - math.exp(-DT / self.WHEEL_TAU)
+        self.odometry = MecanumDriveOdometry(self.kinematics, self.gyro, self.positions)
+        self.pose = self.odometry.getPose()
+
+    def describe(self) -> str:
+        return (f"mecanum, 4 wheels at (±{self.HALF_LENGTH:.2f}, ±{self.HALF_WIDTH:.2f}) m; "
+                f"wheel lag τ = {self.WHEEL_TAU * 1000:.0f} ms")
+
+    def step(self, command: ChassisVelocities) -> None:
+        """Run one control period for a field-relative ``command`` (overwritten)."""
+        command.toRobotRelativeInto(self.gyro, command)
+        command.discretizeInto(DT, command)
+        kinematics = self.kinematics
+        t = self.targets
+        kinematics.toWheelVelocitiesInto(command, t)
+        t.desaturateInPlace(self.max_speed)
+        w = self.wheels
+        p = self.positions
+        a = self._alpha
+        v = w.frontLeft
+        v = v + (t.frontLeft - v) * a
+        w.frontLeft = v
+        p.frontLeft = p.frontLeft + v * DT
+        v = w.frontRight
+        v = v + (t.frontRight - v) * a
+        w.frontRight = v
+        p.frontRight = p.frontRight + v * DT
+        v = w.rearLeft
+        v = v + (t.rearLeft - v) * a
+        w.rearLeft = v
+        p.rearLeft = p.rearLeft + v * DT
+        v = w.rearRight
+        v = v + (t.rearRight - v) * a
+        w.rearRight = v
+        p.rearRight = p.rearRight + v * DT
+        kinematics.toChassisVelocitiesInto(w, self.measured)
+        self._record(self.odometry.update(self._gyro_step(), p))
+
+
+class DifferentialDrive(Drivetrain):
+    """Differential (tank) robot driven arcade-style: the forward and rotation sticks are
+    robot-relative vx and omega, the sideways stick is unused (a differential drive cannot
+    strafe). Inverse kinematics, desaturation, a first-order lag per side, the simulated
+    gyro and DifferentialDriveOdometry."""
+
+    name = "differential"
+    ODOMETRY = DifferentialDriveOdometry
+    INPUT = "arcade joystick (robot-relative; sideways stick unused)"
+    CHAIN = ("vy := 0 → toWheelVelocitiesInto → desaturateInPlace → wheel lag → distances →",
+             "DifferentialDriveOdometry.update(gyro, left, right)")
+    TRACKWIDTH = 0.6        # m, distance between the left and right wheels
+    WHEEL_TAU = 0.05        # s, wheel-speed time constant
+
+    __slots__ = ("kinematics", "targets", "wheels", "left", "right", "_alpha")
+
+    def __init__(self, max_speed: float) -> None:
+        super().__init__(max_speed)
+        self.kinematics = DifferentialDriveKinematics(self.TRACKWIDTH)
+        self.targets = DifferentialDriveWheelVelocities()
+        self.wheels = DifferentialDriveWheelVelocities()  # measured wheel velocities
+        self.left = 0.0         # encoder distances, m
+        self.right = 0.0
+        self._alpha = 1.0 - math.exp(-DT / self.WHEEL_TAU)
+        self.odometry = DifferentialDriveOdometry(self.gyro, self.left, self.right)
+        self.pose = self.odometry.getPose()
+
+    def describe(self) -> str:
+        return (f"differential, trackwidth {self.TRACKWIDTH:.2f} m; "
+                f"wheel lag τ = {self.WHEEL_TAU * 1000:.0f} ms")
+
+    def step(self, command: ChassisVelocities) -> None:
+        """Run one control period for the stick values in ``command`` (overwritten)."""
+        command.vy = 0.0        # documents the choice; toWheelVelocitiesInto ignores vy
+        kinematics = self.kinematics
+        t = self.targets
+        kinematics.toWheelVelocitiesInto(command, t)
+        t.desaturateInPlace(self.max_speed)
+        w = self.wheels
+        a = self._alpha
+        v = w.left
+        v = v + (t.left - v) * a
+        w.left = v
+        left = self.left + v * DT
+        self.left = left
+        v = w.right
+        v = v + (t.right - v) * a
+        w.right = v
+        right = self.right + v * DT
+        self.right = right
+        kinematics.toChassisVelocitiesInto(w, self.measured)
+        self._record(self.odometry.update(self._gyro_step(), left, right))
+
+
+DRIVETRAINS = {cls.name: cls for cls in (SwerveDrive, MecanumDrive, DifferentialDrive)}
 
 
 # ---------------------------------------------------------------------------------------
@@ -300,17 +508,19 @@ def timing_pass(args, steps: int):
     samples = array("q", bytes(8 * steps))
     step = sim.step
     clock = time.perf_counter_ns
-    gc0 = gc.get_count()
+    gcc = array("q", [0] * 6)               # gc.get_count(): start, end (as in pass 2)
     col0 = sum(s["collections"] for s in gc.get_stats())
+    gcc[0], gcc[1], gcc[2] = gc.get_count()
     wall0 = clock()
     for i in range(steps):
         t0 = clock()
         step()
         samples[i] = clock() - t0
     wall = clock() - wall0
-    gc1 = gc.get_count()
+    gcc[3], gcc[4], gcc[5] = gc.get_count()
     col1 = sum(s["collections"] for s in gc.get_stats())
-    return sim, samples, wall, tuple(b - a for a, b in zip(gc0, gc1)), col1 - col0
+    growth = (gcc[3] - gcc[0], gcc[4] - gcc[1], gcc[5] - gcc[2])
+    return sim, samples, wall, growth, col1 - col0
 
 
 def allocation_pass(args, steps: int):
@@ -318,32 +528,30 @@ def allocation_pass(args, steps: int):
     sim = prepared_simulation(args)
     step = sim.step
     loop = itertools.repeat(None, steps)    # created before the measurement starts
-    # Readings are stored into preallocated arrays, so the returned tuples and ints are
-    # freed at once and do not show up as live blocks or as peak.
+    # Readings are stored into preallocated arrays, so the tuples and ints the calls
+    # return are freed at once and count neither as live blocks nor towards the peak.
     mem = array("q", [0, 0, 0])             # traced bytes: start, end, peak
-    gcc = array("q", [0] * 6)               # gc.get_count() before and after
+    blk = array("q", [0, 0])                # sys.getallocatedblocks(): start, end
+    gcc = array("q", [0] * 6)               # gc.get_count(): start, end
     already = tracemalloc.is_tracing()
     if not already:
         tracemalloc.start()
-    before = tracemalloc.take_snapshot()
     gcc[0], gcc[1], gcc[2] = gc.get_count()
+    blk[0] = sys.getallocatedblocks()
     mem[0] = tracemalloc.get_traced_memory()[0]
     tracemalloc.reset_peak()                # peak := current == mem[0] (temporaries freed)
     for _ in loop:
         step()
     mem[1], mem[2] = tracemalloc.get_traced_memory()
+    blk[1] = sys.getallocatedblocks()
     gcc[3], gcc[4], gcc[5] = gc.get_count()
-    after = tracemalloc.take_snapshot()
     if not already:
         tracemalloc.stop()
-    ignore = [tracemalloc.Filter(False, tracemalloc.__file__)]
-    diff = after.filter_traces(ignore).compare_to(before.filter_traces(ignore), "filename")
-    blocks = sum(d.count_diff for d in diff)
     return {
         "sim": sim,
         "peak_bytes": mem[2] - mem[0],
         "net_bytes": mem[1] - mem[0],
-        "net_blocks": blocks,
+        "net_blocks": blk[1] - blk[0],
         "gc_growth": (gcc[3] - gcc[0], gcc[4] - gcc[1], gcc[5] - gcc[2]),
     }
 
@@ -369,6 +577,7 @@ def run(args) -> dict:
     pose1, pose2 = _pose_dict(sim1.drive), _pose_dict(alloc["sim"].drive)
     return {
         "drivetrain": args.drivetrain,
+        "odometry": DRIVETRAINS[args.drivetrain].ODOMETRY.__name__,
         "robot_seconds": steps * DT,
         "steps": steps,
         "dt_s": DT,
@@ -398,14 +607,17 @@ def _header(args, steps: int) -> str:
     drive = DRIVETRAINS[args.drivetrain](args.max_speed)
     segments = " · ".join(f"{name} {d:g} s" for name, d in JoystickScript.SEGMENTS)
     return "\n".join([
-        f"drivekin {drivekin.__version__} — simulated 50 Hz {args.drivetrain} control loop, "
+        f"drivekin {drivekin.__version__} — simulated 50 Hz {drive.name} drive control loop, "
         "allocation-free path",
         f"  robot    {drive.describe()}",
+        f"  odometry {drive.ODOMETRY.__name__}, gyro = true heading integrated from the "
+        "simulated",
+        "           wheels (toChassisVelocitiesInto of the measured wheel velocities)",
         f"  limits   wheel speed {args.max_speed:g} m/s, joystick rotation "
         f"{args.max_omega:.2f} rad/s",
-        f"  script   field-relative, repeats every {JoystickScript.CYCLE:g} s: {segments}",
-        "  step     toRobotRelativeInto → discretizeInto → toSwerveModuleVelocitiesInto →",
-        "           desaturateWheelVelocitiesInPlace → module model → toTwist2dInto → pose.exp",
+        f"  script   {drive.INPUT}, repeats every {JoystickScript.CYCLE:g} s:",
+        f"           {segments}",
+        *(f"  {'step' if i == 0 else '':<8} {line}" for i, line in enumerate(drive.CHAIN)),
         f"  run      {steps * DT:g} s robot time = {steps} steps, flat out (no sleeping);",
         "           pass 1 times each step (tracemalloc off), pass 2 counts allocations",
         "           (tracemalloc on); one warm-up script cycle before each pass",
@@ -429,8 +641,8 @@ def _table(r: dict) -> str:
         ("allocations (pass 2)", "", ""),
         ("  traced peak - start", f"{al['traced_peak_bytes']} B", "tracemalloc"),
         ("  traced end - start", f"{al['traced_net_bytes']} B", ""),
-        ("  blocks still alive", f"{al['net_blocks']}", "snapshot diff"),
-        ("  gc.get_count() growth", f"{growth}", f"gen 0, 1, 2 (pass 2: {growth2})"),
+        ("  live blocks end - start", f"{al['net_blocks']}", "sys.getallocatedblocks()"),
+        ("  gc.get_count() growth", f"{growth2}", f"gen 0, 1, 2 (pass 1: {growth})"),
         ("  gc collections", f"{g['collections_timing_pass']}", "during pass 1"),
         ("result", "", ""),
         ("  final pose", f"x {pose['x_m']:.3f} m, y {pose['y_m']:.3f} m",
@@ -454,17 +666,19 @@ def parse_args(argv=None):
     parser = argparse.ArgumentParser(
         prog="python -m drivekin",
         description=(
-            "Simulate a 50 Hz swerve drive control loop on drivekin's allocation-free path "
-            "and report per-step latency against the 20 ms budget, allocator activity and "
-            "the final odometry pose. A scripted driver (forward, strafe, spin, "
-            "figure-eight while rotating, return, stop; repeating every 30 s) feeds "
-            "field-relative commands; each step converts them to robot-relative, "
-            "discretizes, runs inverse kinematics, desaturates, applies a module response "
-            "model (steering rate limit, wheel-speed lag) and integrates the pose from the "
-            "module position deltas. The loop runs as fast as it can (no sleeping); it is "
-            "run twice on identical simulations: once timed with tracemalloc off, once "
-            "under tracemalloc to count allocations."),
-        epilog="Example: python -m drivekin --seconds 60 --max-speed 4",
+            "Simulate a 50 Hz drivetrain control loop (swerve, mecanum or differential) on "
+            "drivekin's allocation-free path and report per-step latency against the 20 ms "
+            "budget, allocator activity and the final odometry pose. A scripted driver "
+            "(forward, strafe, spin, figure-eight while rotating, return, stop; repeating "
+            "every 30 s) feeds the commands: field-relative for swerve and mecanum, "
+            "arcade-style (forward and rotation only) for differential. Each step runs "
+            "inverse kinematics, desaturates, applies a wheel response model (wheel-speed "
+            "lag; for swerve also optimize, a steering rate limit and cosine scaling) and "
+            "updates the drivetrain's odometry class from the wheel distances and a "
+            "simulated gyro. The loop runs as fast as it can (no sleeping); it is run twice "
+            "on identical simulations: once timed with tracemalloc off, once under "
+            "tracemalloc to count allocations."),
+        epilog="Example: python -m drivekin --drivetrain mecanum --seconds 60 --max-speed 4",
     )
     parser.add_argument("--seconds", type=_positive_float, default=180.0, metavar="S",
                         help="simulated robot time in seconds; steps = S / 0.02 "
@@ -475,8 +689,9 @@ def parse_args(argv=None):
     parser.add_argument("--max-omega", type=_positive_float, default=2.0 * math.pi,
                         metavar="RADPS",
                         help="rotation rate in rad/s at full rotation stick (default: 2π)")
-    parser.add_argument("--drivetrain", choices=sorted(DRIVETRAINS), default="swerve",
-                        help="drivetrain to simulate (default: swerve)")
+    parser.add_argument("--drivetrain", choices=list(DRIVETRAINS), default="swerve",
+                        help="drivetrain to simulate, with its kinematics and odometry classes "
+                             "(default: swerve)")
     out = parser.add_mutually_exclusive_group()
     out.add_argument("--quiet", action="store_true",
                      help="print only the results table, without the header")

@@ -20,4 +20,4 @@ cdef class DifferentialDriveWheelAccelerations(_Wheel2):
 
 @cython.final
 cdef class DifferentialDriveKinematics:
-    cdef readonly double trackwidth   # m, distance between the left and right wheels
+    cdef double _trackwidth      # m, distance between the left and right wheels

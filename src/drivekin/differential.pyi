@@ -30,32 +30,48 @@ class DifferentialDriveWheelVelocities:
     @property
     def left(self) -> float:
         """Left wheel value (m/s, m or m/s² depending on the class)."""
+
     @left.setter
     def left(self, value: float) -> None: ...
     @property
     def right(self) -> float:
         """Right wheel value (m/s, m or m/s² depending on the class)."""
+
     @right.setter
     def right(self, value: float) -> None: ...
     def desaturate(self, attainableMaxSpeed: float) -> DifferentialDriveWheelVelocities:
         """Return new velocities scaled so neither wheel exceeds ``attainableMaxSpeed``
         (m/s), keeping their ratio; unchanged copy if already within it (2027)."""
+
     def desaturateInPlace(self, attainableMaxSpeed: float) -> None:
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
-    def interpolate(self, endValue: DifferentialDriveWheelVelocities, t: float) -> DifferentialDriveWheelVelocities:
+
+    def interpolate(
+        self, endValue: DifferentialDriveWheelVelocities, t: float
+    ) -> DifferentialDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
+
     def plus(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities:
         """Return the wheel-by-wheel sum."""
+
     def minus(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities:
         """Return the wheel-by-wheel difference."""
+
     def unaryMinus(self) -> DifferentialDriveWheelVelocities:
         """Return every wheel negated."""
+
     def times(self, scalar: float) -> DifferentialDriveWheelVelocities:
         """Return every wheel multiplied by ``scalar``."""
+
     def div(self, scalar: float) -> DifferentialDriveWheelVelocities:
         """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-    def __add__(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities: ...
-    def __sub__(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities: ...
+
+    def __add__(
+        self, other: DifferentialDriveWheelVelocities
+    ) -> DifferentialDriveWheelVelocities: ...
+    def __sub__(
+        self, other: DifferentialDriveWheelVelocities
+    ) -> DifferentialDriveWheelVelocities: ...
     def __neg__(self) -> DifferentialDriveWheelVelocities: ...
     def __mul__(self, other: float) -> DifferentialDriveWheelVelocities: ...
     def __rmul__(self, other: float) -> DifferentialDriveWheelVelocities: ...
@@ -74,29 +90,44 @@ class DifferentialDriveWheelPositions:
     @property
     def left(self) -> float:
         """Left wheel value (m/s, m or m/s² depending on the class)."""
+
     @left.setter
     def left(self, value: float) -> None: ...
     @property
     def right(self) -> float:
         """Right wheel value (m/s, m or m/s² depending on the class)."""
+
     @right.setter
     def right(self, value: float) -> None: ...
     def copy(self) -> DifferentialDriveWheelPositions:
         """Return an independent copy."""
-    def interpolate(self, endValue: DifferentialDriveWheelPositions, t: float) -> DifferentialDriveWheelPositions:
+
+    def interpolate(
+        self, endValue: DifferentialDriveWheelPositions, t: float
+    ) -> DifferentialDriveWheelPositions:
         """Linear interpolation; ``t`` is not clamped."""
+
     def plus(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions:
         """Return the wheel-by-wheel sum."""
+
     def minus(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions:
         """Return the wheel-by-wheel difference."""
+
     def unaryMinus(self) -> DifferentialDriveWheelPositions:
         """Return every wheel negated."""
+
     def times(self, scalar: float) -> DifferentialDriveWheelPositions:
         """Return every wheel multiplied by ``scalar``."""
+
     def div(self, scalar: float) -> DifferentialDriveWheelPositions:
         """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-    def __add__(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions: ...
-    def __sub__(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions: ...
+
+    def __add__(
+        self, other: DifferentialDriveWheelPositions
+    ) -> DifferentialDriveWheelPositions: ...
+    def __sub__(
+        self, other: DifferentialDriveWheelPositions
+    ) -> DifferentialDriveWheelPositions: ...
     def __neg__(self) -> DifferentialDriveWheelPositions: ...
     def __mul__(self, other: float) -> DifferentialDriveWheelPositions: ...
     def __rmul__(self, other: float) -> DifferentialDriveWheelPositions: ...
@@ -116,27 +147,45 @@ class DifferentialDriveWheelAccelerations:
     @property
     def left(self) -> float:
         """Left wheel value (m/s, m or m/s² depending on the class)."""
+
     @left.setter
     def left(self, value: float) -> None: ...
     @property
     def right(self) -> float:
         """Right wheel value (m/s, m or m/s² depending on the class)."""
+
     @right.setter
     def right(self, value: float) -> None: ...
-    def interpolate(self, endValue: DifferentialDriveWheelAccelerations, t: float) -> DifferentialDriveWheelAccelerations:
+    def interpolate(
+        self, endValue: DifferentialDriveWheelAccelerations, t: float
+    ) -> DifferentialDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-    def plus(self, other: DifferentialDriveWheelAccelerations) -> DifferentialDriveWheelAccelerations:
+
+    def plus(
+        self, other: DifferentialDriveWheelAccelerations
+    ) -> DifferentialDriveWheelAccelerations:
         """Return the wheel-by-wheel sum."""
-    def minus(self, other: DifferentialDriveWheelAccelerations) -> DifferentialDriveWheelAccelerations:
+
+    def minus(
+        self, other: DifferentialDriveWheelAccelerations
+    ) -> DifferentialDriveWheelAccelerations:
         """Return the wheel-by-wheel difference."""
+
     def unaryMinus(self) -> DifferentialDriveWheelAccelerations:
         """Return every wheel negated."""
+
     def times(self, scalar: float) -> DifferentialDriveWheelAccelerations:
         """Return every wheel multiplied by ``scalar``."""
+
     def div(self, scalar: float) -> DifferentialDriveWheelAccelerations:
         """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-    def __add__(self, other: DifferentialDriveWheelAccelerations) -> DifferentialDriveWheelAccelerations: ...
-    def __sub__(self, other: DifferentialDriveWheelAccelerations) -> DifferentialDriveWheelAccelerations: ...
+
+    def __add__(
+        self, other: DifferentialDriveWheelAccelerations
+    ) -> DifferentialDriveWheelAccelerations: ...
+    def __sub__(
+        self, other: DifferentialDriveWheelAccelerations
+    ) -> DifferentialDriveWheelAccelerations: ...
     def __neg__(self) -> DifferentialDriveWheelAccelerations: ...
     def __mul__(self, other: float) -> DifferentialDriveWheelAccelerations: ...
     def __rmul__(self, other: float) -> DifferentialDriveWheelAccelerations: ...
@@ -154,25 +203,31 @@ class DifferentialDriveKinematics:
 
     def __init__(self, trackwidth: float) -> None: ...
     @property
-    def trackwidth(self) -> float: ...
+    def trackwidth(self) -> float:
+        """Distance between the left and right wheels, m (read-only)."""
+
     def toChassisVelocities(
         self, wheelVelocities: DifferentialDriveWheelVelocities
     ) -> ChassisVelocities:
         """Return the robot velocity: vx = (left + right) / 2, vy = 0,
         omega = (right − left) / trackwidth."""
+
     def toChassisVelocitiesInto(
         self, wheelVelocities: DifferentialDriveWheelVelocities, out: ChassisVelocities
     ) -> None:
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+
     def toWheelVelocities(
         self, chassisVelocities: ChassisVelocities
     ) -> DifferentialDriveWheelVelocities:
         """Return the wheel velocities for a robot velocity; ``vy`` is ignored (a
         differential drive cannot strafe)."""
+
     def toWheelVelocitiesInto(
         self, chassisVelocities: ChassisVelocities, out: DifferentialDriveWheelVelocities
     ) -> None:
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
+
     @overload
     def toTwist2d(self, start: float, end: float) -> Twist2d:
         """toTwist2d(leftDistance, rightDistance) or toTwist2d(startPositions, endPositions)
@@ -180,6 +235,7 @@ class DifferentialDriveKinematics:
         Return the Twist2d (m, rad) for wheel distance changes: dx = (l + r) / 2, dy = 0,
         dtheta = (r − l) / trackwidth. With two DifferentialDriveWheelPositions the
         changes are end − start."""
+
     @overload
     def toTwist2d(
         self, start: DifferentialDriveWheelPositions, end: DifferentialDriveWheelPositions
@@ -188,10 +244,12 @@ class DifferentialDriveKinematics:
         self, wheelAccelerations: DifferentialDriveWheelAccelerations
     ) -> ChassisAccelerations:
         """Return (ax = (l + r) / 2, ay = 0, alpha = (r − l) / trackwidth), m/s² and rad/s²."""
+
     def toWheelAccelerations(
         self, chassisAccelerations: ChassisAccelerations
     ) -> DifferentialDriveWheelAccelerations:
         """Return the wheel accelerations (ax ∓ trackwidth/2 · alpha); ``ay`` is ignored."""
+
     def interpolate(
         self,
         startValue: DifferentialDriveWheelPositions,
@@ -199,8 +257,10 @@ class DifferentialDriveKinematics:
         t: float,
     ) -> DifferentialDriveWheelPositions:
         """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+
     def copy(self, positions: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions:
         """Return an independent copy of ``positions``."""
+
     def copyInto(
         self, positions: DifferentialDriveWheelPositions, output: DifferentialDriveWheelPositions
     ) -> None:

@@ -145,20 +145,25 @@ cdef class DifferentialDriveKinematics:
     def __init__(self, double trackwidth):
         if not (isfinite(trackwidth) and trackwidth > 0.0):
             raise ValueError(f"trackwidth must be a positive finite distance in m, got {trackwidth!r}")
-        self.trackwidth = trackwidth
+        self._trackwidth = trackwidth
+
+    @property
+    def trackwidth(self):
+        """Distance between the left and right wheels, m (read-only)."""
+        return self._trackwidth
 
     def __reduce__(self):
-        return (DifferentialDriveKinematics, (self.trackwidth,))
+        return (DifferentialDriveKinematics, (self._trackwidth,))
 
     def __repr__(self):
-        return f"DifferentialDriveKinematics(trackwidth={self.trackwidth!r})"
+        return f"DifferentialDriveKinematics(trackwidth={self._trackwidth!r})"
 
     def toChassisVelocities(self, DifferentialDriveWheelVelocities wheelVelocities not None):
         """Return the robot velocity: vx = (left + right) / 2, vy = 0,
         omega = (right − left) / trackwidth."""
         cdef _WheelValues w = wheelVelocities
         return new_chassis_velocities((w.w[0] + w.w[1]) / 2.0, 0.0,
-                                      (w.w[1] - w.w[0]) / self.trackwidth)
+                                      (w.w[1] - w.w[0]) / self._trackwidth)
 
     def toChassisVelocitiesInto(self, DifferentialDriveWheelVelocities wheelVelocities not None,
                                 ChassisVelocities out not None):
@@ -166,22 +171,22 @@ cdef class DifferentialDriveKinematics:
         cdef _WheelValues w = wheelVelocities
         out.v.x = (w.w[0] + w.w[1]) / 2.0
         out.v.y = 0.0
-        out.v.z = (w.w[1] - w.w[0]) / self.trackwidth
+        out.v.z = (w.w[1] - w.w[0]) / self._trackwidth
 
     def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
         """Return the wheel velocities for a robot velocity; ``vy`` is ignored (a
         differential drive cannot strafe)."""
         cdef ChassisVelocities c = chassisVelocities
-        return new_wheel_velocities(c.v.x - self.trackwidth / 2.0 * c.v.z,
-                                    c.v.x + self.trackwidth / 2.0 * c.v.z)
+        return new_wheel_velocities(c.v.x - self._trackwidth / 2.0 * c.v.z,
+                                    c.v.x + self._trackwidth / 2.0 * c.v.z)
 
     def toWheelVelocitiesInto(self, ChassisVelocities chassisVelocities not None,
                               DifferentialDriveWheelVelocities out not None):
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
         cdef ChassisVelocities c = chassisVelocities
         cdef _WheelValues o = out
-        o.w[0] = c.v.x - self.trackwidth / 2.0 * c.v.z
-        o.w[1] = c.v.x + self.trackwidth / 2.0 * c.v.z
+        o.w[0] = c.v.x - self._trackwidth / 2.0 * c.v.z
+        o.w[1] = c.v.x + self._trackwidth / 2.0 * c.v.z
 
     def toTwist2d(self, start, end):
         """toTwist2d(leftDistance, rightDistance) or toTwist2d(startPositions, endPositions)
@@ -197,21 +202,26 @@ cdef class DifferentialDriveKinematics:
             l = (<_WheelValues>end).w[0] - (<_WheelValues>start).w[0]
             r = (<_WheelValues>end).w[1] - (<_WheelValues>start).w[1]
         else:
-            l = start
-            r = end
-        return new_twist((l + r) / 2.0, 0.0, (r - l) / self.trackwidth)
+            try:
+                l = start
+                r = end
+            except TypeError:
+                raise TypeError("toTwist2d takes two DifferentialDriveWheelPositions or two "
+                                f"distances in m, got {type(start).__name__} and "
+                                f"{type(end).__name__}") from None
+        return new_twist((l + r) / 2.0, 0.0, (r - l) / self._trackwidth)
 
     def toChassisAccelerations(self, DifferentialDriveWheelAccelerations wheelAccelerations not None):
         """Return (ax = (l + r) / 2, ay = 0, alpha = (r − l) / trackwidth), m/s² and rad/s²."""
         cdef _WheelValues w = wheelAccelerations
         return ChassisAccelerations((w.w[0] + w.w[1]) / 2.0, 0.0,
-                                    (w.w[1] - w.w[0]) / self.trackwidth)
+                                    (w.w[1] - w.w[0]) / self._trackwidth)
 
     def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None):
         """Return the wheel accelerations (ax ∓ trackwidth/2 · alpha); ``ay`` is ignored."""
         cdef ChassisAccelerations c = chassisAccelerations
-        return DifferentialDriveWheelAccelerations(c.v.x - self.trackwidth / 2.0 * c.v.z,
-                                                   c.v.x + self.trackwidth / 2.0 * c.v.z)
+        return DifferentialDriveWheelAccelerations(c.v.x - self._trackwidth / 2.0 * c.v.z,
+                                                   c.v.x + self._trackwidth / 2.0 * c.v.z)
 
     def interpolate(self, DifferentialDriveWheelPositions startValue not None,
                     DifferentialDriveWheelPositions endValue not None, double t):

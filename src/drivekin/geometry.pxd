@@ -2,7 +2,7 @@
 # cimport these declarations and build results with the inline factories below, which
 # skip __init__ and draw from the freelists.
 cimport cython
-from drivekin._types cimport pose2_t, rot2_t, vec2_t
+from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t
 
 
 @cython.final
@@ -27,7 +27,7 @@ cdef class Transform2d(_Frame2d):
 
 @cython.final
 cdef class Twist2d:
-    cdef public double dx, dy, dtheta
+    cdef twist2_t t
 
 
 cdef inline Translation2d new_translation(vec2_t v):
@@ -52,7 +52,7 @@ cdef inline Transform2d new_transform(pose2_t p):
 
 cdef inline Twist2d new_twist(double dx, double dy, double dtheta):
     cdef Twist2d o = Twist2d.__new__(Twist2d)
-    o.dx = dx
-    o.dy = dy
-    o.dtheta = dtheta
+    o.t.dx = dx
+    o.t.dy = dy
+    o.t.dtheta = dtheta
     return o

@@ -34,51 +34,74 @@ class Translation2d:
     def __init__(self, x: float = 0.0, y: float = 0.0) -> None: ...
     @overload
     def __init__(self, distance: float, angle: Rotation2d, /) -> None: ...
+    @overload
+    def __init__(self, vector: npt.NDArray[np.float64], /) -> None: ...
     @property
     def x(self) -> float:
         """X component, m."""
+
     @property
     def y(self) -> float:
         """Y component, m."""
+
     def getX(self) -> float:
         """Return the x component, m."""
+
     def getY(self) -> float:
         """Return the y component, m."""
+
     def getNorm(self) -> float:
         """Return the distance from the origin, m."""
+
     def getSquaredNorm(self) -> float:
         """Return the squared distance from the origin, m²."""
+
     def getDistance(self, other: Translation2d) -> float:
         """Return the distance to ``other``, m."""
+
     def getSquaredDistance(self, other: Translation2d) -> float:
         """Return the squared distance to ``other``, m²."""
+
     def getAngle(self) -> Rotation2d | None:
         """Return the direction of this vector as a Rotation2d, or ``None`` when its
         length is 1e-6 m or less (WPILib 2027 returns an empty Optional)."""
+
     def rotateBy(self, other: Rotation2d) -> Translation2d:
         """Return this vector rotated counter-clockwise by ``other`` about the origin."""
+
     def rotateAround(self, other: Translation2d, rot: Rotation2d) -> Translation2d:
         """Return this point rotated by ``rot`` about the point ``other``."""
+
     def plus(self, other: Translation2d) -> Translation2d:
         """Return the component-wise sum, m."""
+
     def minus(self, other: Translation2d) -> Translation2d:
         """Return the component-wise difference, m."""
+
     def unaryMinus(self) -> Translation2d:
         """Return the vector pointing the other way."""
+
     def times(self, scalar: float) -> Translation2d:
         """Return the vector scaled by ``scalar``."""
+
     def div(self, scalar: float) -> Translation2d:
         """Return the vector divided by ``scalar`` (no zero guard, as in WPILib)."""
+
     def dot(self, other: Translation2d) -> float:
         """Return the dot product, m²."""
+
     def cross(self, other: Translation2d) -> float:
         """Return the z component of the cross product, m² (x·other.y − y·other.x)."""
+
     def nearest(self, translations: Iterable[Translation2d]) -> Translation2d:
         """Return the element of ``translations`` closest to this point (first on ties)."""
+
     def interpolate(self, endValue: Translation2d, t: float) -> Translation2d:
         """Return the linear interpolation towards ``endValue``; ``t`` is not clamped."""
+
     def toVector(self) -> npt.NDArray[np.float64]:
         """Return ``numpy.array([x, y])``."""
+
     def __add__(self, other: Translation2d) -> Translation2d: ...
     def __sub__(self, other: Translation2d) -> Translation2d: ...
     def __neg__(self) -> Translation2d: ...
@@ -115,47 +138,67 @@ class Rotation2d:
     def __init__(self, value: float = 0.0) -> None: ...
     @overload
     def __init__(self, x: float, y: float, /) -> None: ...
+    @overload
+    def __init__(self, matrix: npt.NDArray[np.float64], /) -> None: ...
     @staticmethod
     def fromRadians(radians: float) -> Rotation2d:
         """Return the rotation of ``radians`` rad."""
+
     @staticmethod
     def fromDegrees(degrees: float) -> Rotation2d:
         """Return the rotation of ``degrees`` degrees."""
+
     @staticmethod
     def fromRotations(rotations: float) -> Rotation2d:
         """Return the rotation of ``rotations`` full turns."""
+
     def getRadians(self) -> float:
         """Return the angle in rad, in [−π, π] (atan2 of the stored unit vector)."""
+
     def getDegrees(self) -> float:
         """Return the angle in degrees, in [−180, 180]."""
+
     def getRotations(self) -> float:
         """Return the angle in turns, in [−0.5, 0.5]."""
+
     def getCos(self) -> float:
         """Return the cosine of the angle."""
+
     def getSin(self) -> float:
         """Return the sine of the angle."""
+
     def getTan(self) -> float:
         """Return the tangent of the angle (sin / cos; ±inf or NaN at ±90°)."""
+
     def rotateBy(self, other: Rotation2d) -> Rotation2d:
         """Return this rotation followed by ``other`` (angles add)."""
+
     def plus(self, other: Rotation2d) -> Rotation2d:
         """Same as :meth:`rotateBy`."""
+
     def minus(self, other: Rotation2d) -> Rotation2d:
         """Return the rotation whose angle is this angle minus ``other``'s (wrapped)."""
+
     def relativeTo(self, other: Rotation2d) -> Rotation2d:
         """Return this rotation seen from ``other`` (same as :meth:`minus`)."""
+
     def unaryMinus(self) -> Rotation2d:
         """Return the inverse rotation."""
+
     def times(self, scalar: float) -> Rotation2d:
         """Return the rotation by ``getRadians() * scalar``; the *wrapped* angle is scaled
         (270° × 0.5 = −45° in WPILib 2027)."""
+
     def div(self, scalar: float) -> Rotation2d:
         """Return ``times(1 / scalar)``."""
+
     def interpolate(self, endValue: Rotation2d, t: float) -> Rotation2d:
         """Return ``self + (endValue − self) · t``, the short way round; ``t`` is not
         clamped (2027)."""
+
     def toMatrix(self) -> npt.NDArray[np.float64]:
         """Return the 2×2 rotation matrix ``[[cos, −sin], [sin, cos]]``."""
+
     def __add__(self, other: Rotation2d) -> Rotation2d: ...
     def __sub__(self, other: Rotation2d) -> Rotation2d: ...
     def __neg__(self) -> Rotation2d: ...
@@ -182,50 +225,71 @@ class Pose2d:
     def __init__(self, translation: Translation2d, rotation: Rotation2d, /) -> None: ...
     @overload
     def __init__(self, x: float, y: float, rotation: Rotation2d, /) -> None: ...
+    @overload
+    def __init__(self, matrix: npt.NDArray[np.float64], /) -> None: ...
     @property
     def x(self) -> float:
-        """X position, m."""
+        """X component of the translation, m."""
+
     @property
     def y(self) -> float:
-        """Y position, m."""
+        """Y component of the translation, m."""
+
     def getX(self) -> float:
-        """Return the x position, m."""
+        """Return the x component of the translation, m."""
+
     def getY(self) -> float:
-        """Return the y position, m."""
+        """Return the y component of the translation, m."""
+
     def getTranslation(self) -> Translation2d:
-        """Return the position as a Translation2d, m."""
+        """Return the translation part (Translation2d, m)."""
+
     def getRotation(self) -> Rotation2d:
-        """Return the heading as a Rotation2d."""
+        """Return the rotation part (Rotation2d)."""
+
     def transformBy(self, other: Transform2d) -> Pose2d:
         """Return this pose moved by ``other``, expressed in this pose's frame."""
+
     def plus(self, other: Transform2d) -> Pose2d:
         """Same as :meth:`transformBy`."""
+
     def minus(self, other: Pose2d) -> Transform2d:
         """Return the Transform2d that maps ``other`` onto this pose."""
+
     def relativeTo(self, other: Pose2d) -> Pose2d:
         """Return this pose expressed in the frame of ``other``."""
+
     def rotateBy(self, other: Rotation2d) -> Pose2d:
         """Return the pose rotated about the field origin (position and heading)."""
+
     def rotateAround(self, point: Translation2d, rot: Rotation2d) -> Pose2d:
         """Return the pose rotated by ``rot`` about ``point``; the heading turns by ``rot``."""
+
     def times(self, scalar: float) -> Pose2d:
         """Return (translation · scalar, rotation.times(scalar))."""
+
     def div(self, scalar: float) -> Pose2d:
         """Return ``times(1 / scalar)``."""
+
     def exp(self, twist: Twist2d) -> Pose2d:
         """Return ``self.plus(twist.exp())`` in one call (the WPILib 2026 ``Pose2d.exp``;
         2027 spells it ``pose.plus(twist.exp())`` and both give the same numbers)."""
+
     def log(self, end: Pose2d) -> Twist2d:
         """Return ``end.minus(self).log()`` (the WPILib 2026 ``Pose2d.log``)."""
+
     def nearest(self, poses: Iterable[Pose2d]) -> Pose2d:
         """Return the pose in ``poses`` closest to this one: smallest translation distance,
         ties broken by the smallest heading difference."""
+
     def interpolate(self, endValue: Pose2d, t: float) -> Pose2d:
         """Interpolate along the constant-curvature arc to ``endValue``.
 
         ``t < 0`` returns this pose and ``t ≥ 1`` returns ``endValue`` (WPILib's clamp)."""
+
     def toMatrix(self) -> npt.NDArray[np.float64]:
-        """Return the 3×3 homogeneous matrix of this pose."""
+        """Return the 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y], [0, 0, 1]]``."""
+
     def __add__(self, other: Transform2d) -> Pose2d: ...
     def __sub__(self, other: Pose2d) -> Transform2d: ...
     def __mul__(self, other: float) -> Pose2d: ...
@@ -253,34 +317,48 @@ class Transform2d:
     @overload
     def __init__(self, x: float, y: float, rotation: Rotation2d, /) -> None: ...
     @overload
+    def __init__(self, matrix: npt.NDArray[np.float64], /) -> None: ...
+    @overload
     def __init__(self, initial: Pose2d, last: Pose2d, /) -> None: ...
     @property
     def x(self) -> float:
         """X component of the translation, m."""
+
     @property
     def y(self) -> float:
         """Y component of the translation, m."""
+
     def getX(self) -> float:
         """Return the x component of the translation, m."""
+
     def getY(self) -> float:
         """Return the y component of the translation, m."""
+
     def getTranslation(self) -> Translation2d:
-        """Return the translation part, m."""
+        """Return the translation part (Translation2d, m)."""
+
     def getRotation(self) -> Rotation2d:
-        """Return the rotation part."""
+        """Return the rotation part (Rotation2d)."""
+
     def inverse(self) -> Transform2d:
         """Return the transform that undoes this one."""
+
     def plus(self, other: Transform2d) -> Transform2d:
         """Return this transform followed by ``other``."""
+
     def times(self, scalar: float) -> Transform2d:
         """Return (translation · scalar, rotation.times(scalar))."""
+
     def div(self, scalar: float) -> Transform2d:
         """Return ``times(1 / scalar)``."""
+
     def log(self) -> Twist2d:
         """Return the Twist2d whose :meth:`Twist2d.exp` is this transform (the
         constant-curvature arc; the inverse of exp)."""
+
     def toMatrix(self) -> npt.NDArray[np.float64]:
-        """Return the 3×3 homogeneous matrix of this transform."""
+        """Return the 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y], [0, 0, 1]]``."""
+
     def __add__(self, other: Transform2d) -> Transform2d: ...
     def __mul__(self, other: float) -> Transform2d: ...
     def __rmul__(self, other: float) -> Transform2d: ...
@@ -297,13 +375,29 @@ class Twist2d:
     within 1e-9, so instances are unhashable.
     """
 
-    dx: float
-    dy: float
-    dtheta: float
     def __init__(self, dx: float = 0.0, dy: float = 0.0, dtheta: float = 0.0) -> None: ...
+    @property
+    def dx(self) -> float:
+        """Change along the start frame's x axis, m."""
+
+    @dx.setter
+    def dx(self, value: float) -> None: ...
+    @property
+    def dy(self) -> float:
+        """Change along the start frame's y axis, m."""
+
+    @dy.setter
+    def dy(self, value: float) -> None: ...
+    @property
+    def dtheta(self) -> float:
+        """Change in heading, rad."""
+
+    @dtheta.setter
+    def dtheta(self, value: float) -> None: ...
     def exp(self) -> Transform2d:
         """Return the Transform2d reached by following this arc from the origin.
 
         Uses the series form when ``|dtheta| < 1e-9``."""
+
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]

@@ -214,7 +214,7 @@ cdef class Rotation2d:
     The constructor angle is not remembered: ``Rotation2d(3π/2).getDegrees()`` is −90.
     """
 
-    def __init__(self, value=0.0, y=None):
+    def __init__(self, value=0.0, y=None, /):
         if y is not None:
             self.r = rot_xy(value, y)
         elif isinstance(value, np.ndarray):
@@ -338,7 +338,7 @@ cdef class Rotation2d:
         return (_rotation_from_cos_sin, (self.r.c, self.r.s))
 
     def __repr__(self):
-        return f"Rotation2d(radians={rot_radians(self.r)!r})"
+        return f"Rotation2d({rot_radians(self.r)!r})"
 
     def __str__(self):
         cdef double rad = rot_radians(self.r)
@@ -471,8 +471,8 @@ cdef class _Frame2d:
         return (type(self), (new_translation(self.p.t), new_rotation(self.p.r)))
 
     def __repr__(self):
-        return (f"{type(self).__name__}(x={self.p.t.x!r}, y={self.p.t.y!r}, "
-                f"rotation=Rotation2d(radians={rot_radians(self.p.r)!r}))")
+        return (f"{type(self).__name__}({self.p.t.x!r}, {self.p.t.y!r}, "
+                f"Rotation2d({rot_radians(self.p.r)!r}))")
 
     def __str__(self):
         return f"{type(self).__name__}({new_translation(self.p.t)}, {new_rotation(self.p.r)})"
@@ -486,7 +486,7 @@ cdef class Pose2d(_Frame2d):
     Immutable; ``==`` compares translation within 1e-9 m and rotation within 1e-9.
     """
 
-    def __init__(self, a=None, b=None, c=None):
+    def __init__(self, a=None, b=None, c=None, /):
         self.p = _pose_args(a, b, c, "Pose2d")
 
     cdef _Frame2d _new(self, pose2_t p):
@@ -520,7 +520,7 @@ cdef class Pose2d(_Frame2d):
     def exp(self, Twist2d twist not None):
         """Return ``self.plus(twist.exp())`` in one call (the WPILib 2026 ``Pose2d.exp``;
         2027 spells it ``pose.plus(twist.exp())`` and both give the same numbers)."""
-        return new_pose(pose_transform_by(self.p, twist_exp(twist.dx, twist.dy, twist.dtheta)))
+        return new_pose(pose_transform_by(self.p, twist_exp(twist.t.dx, twist.t.dy, twist.t.dtheta)))
 
     def log(self, Pose2d end not None):
         """Return ``end.minus(self).log()`` (the WPILib 2026 ``Pose2d.log``)."""
@@ -573,7 +573,7 @@ cdef class Transform2d(_Frame2d):
     transform that maps ``initial`` onto ``last``. Immutable; ``==`` as for Pose2d.
     """
 
-    def __init__(self, a=None, b=None, c=None):
+    def __init__(self, a=None, b=None, c=None, /):
         if c is None and isinstance(a, Pose2d) and isinstance(b, Pose2d):
             self.p = pose_relative_to((<Pose2d>b).p, (<Pose2d>a).p)
         else:
@@ -613,34 +613,61 @@ cdef class Twist2d:
     """
 
     def __init__(self, double dx=0.0, double dy=0.0, double dtheta=0.0):
-        self.dx = dx
-        self.dy = dy
-        self.dtheta = dtheta
+        self.t.dx = dx
+        self.t.dy = dy
+        self.t.dtheta = dtheta
+
+    @property
+    def dx(self):
+        """Change along the start frame's x axis, m."""
+        return self.t.dx
+
+    @dx.setter
+    def dx(self, double value):
+        self.t.dx = value
+
+    @property
+    def dy(self):
+        """Change along the start frame's y axis, m."""
+        return self.t.dy
+
+    @dy.setter
+    def dy(self, double value):
+        self.t.dy = value
+
+    @property
+    def dtheta(self):
+        """Change in heading, rad."""
+        return self.t.dtheta
+
+    @dtheta.setter
+    def dtheta(self, double value):
+        self.t.dtheta = value
 
     def exp(self):
         """Return the Transform2d reached by following this arc from the origin.
 
         Uses the series form when ``|dtheta| < 1e-9``."""
-        return new_transform(twist_exp(self.dx, self.dy, self.dtheta))
+        return new_transform(twist_exp(self.t.dx, self.t.dy, self.t.dtheta))
 
     def __eq__(self, other):
         cdef Twist2d o
         if isinstance(other, Twist2d):
             o = <Twist2d>other
-            return (fabs(self.dx - o.dx) < 1e-9 and fabs(self.dy - o.dy) < 1e-9
-                    and fabs(self.dtheta - o.dtheta) < 1e-9)
+            return (fabs(self.t.dx - o.t.dx) < 1e-9 and fabs(self.t.dy - o.t.dy) < 1e-9
+                    and fabs(self.t.dtheta - o.t.dtheta) < 1e-9)
         return NotImplemented
 
     __hash__ = None
 
     def __reduce__(self):
-        return (Twist2d, (self.dx, self.dy, self.dtheta))
+        return (Twist2d, (self.t.dx, self.t.dy, self.t.dtheta))
 
     def __repr__(self):
-        return f"Twist2d(dx={self.dx!r}, dy={self.dy!r}, dtheta={self.dtheta!r})"
+        return f"Twist2d(dx={self.t.dx!r}, dy={self.t.dy!r}, dtheta={self.t.dtheta!r})"
 
     def __str__(self):
-        return f"Twist2d(dX: {f2(self.dx)}, dY: {f2(self.dy)}, dTheta: {f2(self.dtheta)})"
+        return f"Twist2d(dX: {f2(self.t.dx)}, dY: {f2(self.t.dy)}, dTheta: {f2(self.t.dtheta)})"
 
 
 # WPILib's named constants.

@@ -38,20 +38,24 @@ class ChassisVelocities:
     @property
     def vx(self) -> float:
         """Forward velocity, m/s."""
+
     @vx.setter
     def vx(self, value: float) -> None: ...
     @property
     def vy(self) -> float:
         """Leftward velocity, m/s."""
+
     @vy.setter
     def vy(self, value: float) -> None: ...
     @property
     def omega(self) -> float:
         """Angular velocity, rad/s, counter-clockwise positive."""
+
     @omega.setter
     def omega(self, value: float) -> None: ...
     def toTwist2d(self, dt: float) -> Twist2d:
         """Return the Twist2d ``(vx·dt, vy·dt, omega·dt)`` travelled in ``dt`` seconds."""
+
     def discretize(self, dt: float) -> ChassisVelocities:
         """Return the velocities that, held constant for ``dt`` s along a straight line in
         the rotating frame, end at the pose this constant twist would reach.
@@ -60,34 +64,46 @@ class ChassisVelocities:
         ``omega·dt`` passes through a Rotation2d, so it is wrapped to [−π, π]
         (omega = 4, dt = 1 gives omega' = 4 − 2π); ``dt = 0`` divides by zero (NaN/inf),
         as in WPILib."""
+
     def discretizeInto(self, dt: float, out: ChassisVelocities) -> None:
         """Allocation-free :meth:`discretize`: write the result into ``out`` (may be self)."""
+
     def toRobotRelative(self, robotAngle: Rotation2d) -> ChassisVelocities:
         """Convert field-relative values to robot-relative ones.
 
         ``robotAngle`` is the robot heading on the field; x and y are rotated by
         −robotAngle, the angular component is unchanged."""
+
     def toFieldRelative(self, robotAngle: Rotation2d) -> ChassisVelocities:
         """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
+
     def toRobotRelativeInto(self, robotAngle: Rotation2d, out: ChassisVelocities) -> None:
         """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
+
     def toFieldRelativeInto(self, robotAngle: Rotation2d, out: ChassisVelocities) -> None:
         """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
+
     def plus(self, other: ChassisVelocities) -> ChassisVelocities:
         """Return the component-wise sum."""
+
     def minus(self, other: ChassisVelocities) -> ChassisVelocities:
         """Return the component-wise difference."""
+
     def unaryMinus(self) -> ChassisVelocities:
         """Return the negation of every component."""
+
     def times(self, scalar: float) -> ChassisVelocities:
         """Return every component multiplied by ``scalar``."""
+
     def div(self, scalar: float) -> ChassisVelocities:
         """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
+
     def interpolate(self, endValue: ChassisVelocities, t: float) -> ChassisVelocities:
         """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
         ``endValue`` (the objects themselves, as WPILib does)."""
+
     def __add__(self, other: ChassisVelocities) -> ChassisVelocities: ...
     def __sub__(self, other: ChassisVelocities) -> ChassisVelocities: ...
     def __neg__(self) -> ChassisVelocities: ...
@@ -110,16 +126,19 @@ class ChassisAccelerations:
     @property
     def ax(self) -> float:
         """Forward acceleration, m/s²."""
+
     @ax.setter
     def ax(self, value: float) -> None: ...
     @property
     def ay(self) -> float:
         """Leftward acceleration, m/s²."""
+
     @ay.setter
     def ay(self, value: float) -> None: ...
     @property
     def alpha(self) -> float:
         """Angular acceleration, rad/s², counter-clockwise positive."""
+
     @alpha.setter
     def alpha(self, value: float) -> None: ...
     def toRobotRelative(self, robotAngle: Rotation2d) -> ChassisAccelerations:
@@ -127,27 +146,37 @@ class ChassisAccelerations:
 
         ``robotAngle`` is the robot heading on the field; x and y are rotated by
         −robotAngle, the angular component is unchanged."""
+
     def toFieldRelative(self, robotAngle: Rotation2d) -> ChassisAccelerations:
         """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
+
     def toRobotRelativeInto(self, robotAngle: Rotation2d, out: ChassisAccelerations) -> None:
         """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
+
     def toFieldRelativeInto(self, robotAngle: Rotation2d, out: ChassisAccelerations) -> None:
         """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
+
     def plus(self, other: ChassisAccelerations) -> ChassisAccelerations:
         """Return the component-wise sum."""
+
     def minus(self, other: ChassisAccelerations) -> ChassisAccelerations:
         """Return the component-wise difference."""
+
     def unaryMinus(self) -> ChassisAccelerations:
         """Return the negation of every component."""
+
     def times(self, scalar: float) -> ChassisAccelerations:
         """Return every component multiplied by ``scalar``."""
+
     def div(self, scalar: float) -> ChassisAccelerations:
         """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
+
     def interpolate(self, endValue: ChassisAccelerations, t: float) -> ChassisAccelerations:
         """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
         ``endValue`` (the objects themselves, as WPILib does)."""
+
     def __add__(self, other: ChassisAccelerations) -> ChassisAccelerations: ...
     def __sub__(self, other: ChassisAccelerations) -> ChassisAccelerations: ...
     def __neg__(self) -> ChassisAccelerations: ...
@@ -170,11 +199,13 @@ class SwerveModuleVelocity:
     @property
     def velocity(self) -> float:
         """Wheel velocity, m/s."""
+
     @velocity.setter
     def velocity(self, value: float) -> None: ...
     @property
     def angle(self) -> Rotation2d:
         """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
+
     @angle.setter
     def angle(self, value: Rotation2d) -> None: ...
     def optimize(self, currentAngle: Rotation2d) -> SwerveModuleVelocity:
@@ -182,14 +213,26 @@ class SwerveModuleVelocity:
 
         If the target angle is more than 90° from ``currentAngle``, the result drives the
         wheel backwards at the angle + 180°. Returns a new object (2027)."""
+
+    def optimizeInPlace(self, currentAngle: Rotation2d) -> None:
+        """Allocation-free :meth:`optimize`: update this object (the WPILib 2026
+        behaviour). Returns None."""
+
     def cosineScale(self, currentAngle: Rotation2d) -> SwerveModuleVelocity:
         """Return the velocity scaled by cos(angle − currentAngle), so a module that is
         still turning does not push sideways. Returns a new object (2027)."""
+
+    def cosineScaleInPlace(self, currentAngle: Rotation2d) -> None:
+        """Allocation-free :meth:`cosineScale`: update this object. Returns None."""
+
     def interpolate(self, endValue: SwerveModuleVelocity, t: float) -> SwerveModuleVelocity:
         """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
         [0, 1]."""
+
     def compareTo(self, other: SwerveModuleVelocity) -> int:
-        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
+        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
+        must be of the same class."""
+
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float | Rotation2d]: ...
@@ -206,19 +249,25 @@ class SwerveModulePosition:
     @property
     def distance(self) -> float:
         """Distance driven by the wheel, m."""
+
     @distance.setter
     def distance(self, value: float) -> None: ...
     @property
     def angle(self) -> Rotation2d:
         """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
+
     @angle.setter
     def angle(self, value: Rotation2d) -> None: ...
     def copy(self) -> SwerveModulePosition:
         """Return an independent copy."""
+
     def interpolate(self, endValue: SwerveModulePosition, t: float) -> SwerveModulePosition:
         """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
+
     def compareTo(self, other: SwerveModulePosition) -> int:
-        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
+        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
+        must be of the same class."""
+
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float | Rotation2d]: ...
@@ -235,20 +284,23 @@ class SwerveModuleAcceleration:
     @property
     def acceleration(self) -> float:
         """Acceleration magnitude, m/s²."""
+
     @acceleration.setter
     def acceleration(self, value: float) -> None: ...
     @property
     def angle(self) -> Rotation2d:
         """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
+
     @angle.setter
     def angle(self, value: Rotation2d) -> None: ...
-    def interpolate(
-        self, endValue: SwerveModuleAcceleration, t: float
-    ) -> SwerveModuleAcceleration:
+    def interpolate(self, endValue: SwerveModuleAcceleration, t: float) -> SwerveModuleAcceleration:
         """Interpolate the magnitude linearly and the angle the short way; ``t`` is
         clamped to [0, 1]."""
+
     def compareTo(self, other: SwerveModuleAcceleration) -> int:
-        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
+        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
+        must be of the same class."""
+
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float | Rotation2d]: ...
@@ -276,12 +328,15 @@ class SwerveDriveKinematics:
     def __init__(self, *moduleTranslations: Translation2d) -> None: ...
     def getModules(self) -> tuple[Translation2d, ...]:
         """Return the module positions (tuple of Translation2d, m), constructor order."""
+
     def getNumModules(self) -> int:
         """Return the number of modules N."""
+
     @overload
     def resetHeadings(self, moduleHeadings: Sequence[Rotation2d]) -> None:
         """Replace the remembered module headings (N Rotation2d, as arguments or one
         sequence); used when the chassis velocity is zero or a module is on the CoR."""
+
     @overload
     def resetHeadings(self, moduleHeadings: Rotation2d, *more: Rotation2d) -> None: ...
     def toSwerveModuleVelocities(
@@ -291,10 +346,12 @@ class SwerveDriveKinematics:
         ``chassisVelocities`` (robot-relative, m/s and rad/s), rotating about
         ``centerOfRotation`` (robot frame, m). Module speeds are ≥ 0; the angles follow the
         heading-memory rules in the class docstring. Not desaturated."""
+
     def toWheelVelocities(
         self, chassisVelocities: ChassisVelocities
     ) -> tuple[SwerveModuleVelocity, ...]:
         """Same as :meth:`toSwerveModuleVelocities` about the robot origin."""
+
     def toSwerveModuleVelocitiesInto(
         self,
         chassisVelocities: ChassisVelocities,
@@ -306,12 +363,15 @@ class SwerveDriveKinematics:
         ``out`` is either a list/tuple of N SwerveModuleVelocity objects, updated in place,
         or a float64 C-contiguous writeable numpy array of shape (N, 2) that receives
         ``[velocity m/s, angle rad]`` per module. Returns None."""
+
     @overload
     def toChassisVelocities(
         self, moduleVelocities: Sequence[SwerveModuleVelocity]
     ) -> ChassisVelocities:
         """Return the least-squares ChassisVelocities (robot-relative) for N measured
-        module velocities (SwerveModuleVelocity, as arguments or one sequence)."""
+        module velocities (SwerveModuleVelocity, as arguments or one sequence, or an (N, 2)
+        float64 array ``[velocity m/s, angle rad]``)."""
+
     @overload
     def toChassisVelocities(
         self, moduleVelocities: SwerveModuleVelocity, *more: SwerveModuleVelocity
@@ -324,14 +384,17 @@ class SwerveDriveKinematics:
         """Allocation-free :meth:`toChassisVelocities`: ``moduleVelocities`` is a sequence
         of N SwerveModuleVelocity or an (N, 2) float64 array ``[velocity m/s, angle rad]``;
         the result is written into ``out``. Returns None."""
+
     @overload
     def toTwist2d(self, first: Sequence[SwerveModulePosition]) -> Twist2d:
         """toTwist2d(*moduleDeltas) or toTwist2d(start, end)
 
         Return the Twist2d (m, rad) of the robot for N module position deltas
         (SwerveModulePosition: distance driven since the last update and the current
-        angle). With two sequences ``start`` and ``end``, the deltas are
+        angle; or an (N, 2) float64 array ``[distance m, angle rad]``). With two sequences
+        ``start`` and ``end``, the deltas are
         ``end.distance − start.distance`` at the **end** angle, as in WPILib."""
+
     @overload
     def toTwist2d(self, first: SwerveModulePosition, *more: SwerveModulePosition) -> Twist2d: ...
     @overload
@@ -345,6 +408,7 @@ class SwerveDriveKinematics:
     ) -> None:
         """Allocation-free :meth:`toTwist2d` for N deltas (SwerveModulePosition objects or an
         (N, 2) float64 array ``[distance m, angle rad]``), written into ``out``."""
+
     def interpolate(
         self,
         startValue: Sequence[SwerveModulePosition],
@@ -352,14 +416,17 @@ class SwerveDriveKinematics:
         t: float,
     ) -> tuple[SwerveModulePosition, ...]:
         """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
+
     def copy(self, positions: Iterable[SwerveModulePosition]) -> tuple[SwerveModulePosition, ...]:
         """Return independent copies of the module positions (tuple)."""
+
     def copyInto(
         self,
         positions: Sequence[SwerveModulePosition],
         output: Sequence[SwerveModulePosition],
     ) -> None:
         """Copy each position's fields into the matching object of ``output``."""
+
     def toSwerveModuleAccelerations(
         self,
         chassisAccelerations: ChassisAccelerations,
@@ -373,17 +440,21 @@ class SwerveDriveKinematics:
         WPILib's rules are kept: an exactly zero ``chassisAccelerations`` gives all-zero
         results even when ``angularVelocity`` ≠ 0, and a module whose acceleration is at
         most 1e-6 gets angle 0 (there is no heading memory for accelerations)."""
+
     def toWheelAccelerations(
         self, chassisAccelerations: ChassisAccelerations
     ) -> tuple[SwerveModuleAcceleration, ...]:
         """Same as :meth:`toSwerveModuleAccelerations` with zero angular velocity about
         the robot origin."""
+
     @overload
     def toChassisAccelerations(
         self, moduleAccelerations: Sequence[SwerveModuleAcceleration]
     ) -> ChassisAccelerations:
         """Return the least-squares ChassisAccelerations for N module accelerations
-        (as arguments or one sequence). The ω² estimate of the solve is discarded."""
+        (as arguments or one sequence, or an (N, 2) float64 array ``[m/s², angle rad]``).
+        The ω² estimate of the solve is discarded."""
+
     @overload
     def toChassisAccelerations(
         self, moduleAccelerations: SwerveModuleAcceleration, *more: SwerveModuleAcceleration
@@ -410,6 +481,7 @@ class SwerveDriveKinematics:
         velocities unchanged if either chassis limit or every wheel speed is zero. The
         input is not modified (2027). In the five-argument form the second parameter is
         the desired ChassisVelocities."""
+
     @overload
     @staticmethod
     def desaturateWheelVelocities(
@@ -431,6 +503,7 @@ class SwerveDriveKinematics:
         """Allocation-free :meth:`desaturateWheelVelocities` (same two forms) that rescales
         the caller's N SwerveModuleVelocity objects, or column 0 of an (N, 2) float64
         array ``[velocity m/s, angle rad]``, in place. Returns None."""
+
     @overload
     @staticmethod
     def desaturateWheelVelocitiesInPlace(

@@ -10,7 +10,6 @@ owned by the caller. Kinematics objects carry heading memory and are not thread-
 cimport cython
 cimport numpy as cnp
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from libc.string cimport memset
 from cpython.ref cimport Py_INCREF, PyObject
 from cpython.sequence cimport PySequence_Fast, PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
@@ -340,7 +339,10 @@ cdef class _ModuleVector:
         self.a = value.r
 
     def compareTo(self, _ModuleVector other not None):
-        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1."""
+        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
+        must be of the same class."""
+        if type(other) is not type(self):
+            raise TypeError(f"expected a {type(self).__name__}, got {type(other).__name__}")
         cdef double a = self.m, b = other.m
         if a < b:
             return -1
@@ -430,7 +432,7 @@ cdef class SwerveModuleVelocity(_ModuleVector):
         return self._lerp(endValue, clamp01(t))
 
     def __repr__(self):
-        return f"SwerveModuleVelocity(velocity={self.m!r}, angle={new_rotation(self.a)!r})"
+        return f"SwerveModuleVelocity({self.m!r}, {new_rotation(self.a)!r})"
 
     def __str__(self):
         return f"SwerveModuleVelocity(Velocity: {f2(self.m)} m/s, Angle: {new_rotation(self.a)})"
@@ -468,7 +470,7 @@ cdef class SwerveModulePosition(_ModuleVector):
         return self._lerp(endValue, t)
 
     def __repr__(self):
-        return f"SwerveModulePosition(distance={self.m!r}, angle={new_rotation(self.a)!r})"
+        return f"SwerveModulePosition({self.m!r}, {new_rotation(self.a)!r})"
 
     def __str__(self):
         return f"SwerveModulePosition(Distance: {f2(self.m)} m, Angle: {new_rotation(self.a)})"
@@ -506,8 +508,7 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
         return self._lerp(endValue, clamp01(t))
 
     def __repr__(self):
-        return (f"SwerveModuleAcceleration(acceleration={self.m!r}, "
-                f"angle={new_rotation(self.a)!r})")
+        return f"SwerveModuleAcceleration({self.m!r}, {new_rotation(self.a)!r})"
 
     def __str__(self):
         # WPILib's toString says "Accelerations" (plural); kept for identical logs.
@@ -519,15 +520,17 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
 # Argument helpers shared by the kinematics classes
 
 cdef double* module_array(object arr, Py_ssize_t n, bint writable, str name) except NULL:
-    """Validate a (n, 2) float64 C-contiguous native-endian array and return its data."""
+    """Validate a (n, 2) float64 C-contiguous native-endian array and return its data
+    (n = -1 accepts any number of rows)."""
     if not cnp.PyArray_Check(arr):
         raise TypeError(f"{name} must be a sequence of {n} module objects or a numpy array "
                         f"of shape ({n}, 2), got {type(arr).__name__}")
     cdef cnp.ndarray a = <cnp.ndarray>arr
     if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
         raise TypeError(f"{name} must have dtype float64 (native byte order), got {a.dtype}")
-    if cnp.PyArray_NDIM(a) != 2 or a.shape[0] != n or a.shape[1] != 2:
-        raise ValueError(f"{name} must have shape ({n}, 2), got {(<object>a).shape}")
+    if cnp.PyArray_NDIM(a) != 2 or (n >= 0 and a.shape[0] != n) or a.shape[1] != 2:
+        raise ValueError(f"{name} must have shape ({n if n >= 0 else 'N'}, 2), "
+                         f"got {(<object>a).shape}")
     if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
         raise ValueError(f"{name} must be C-contiguous and aligned")
     if writable and not cnp.PyArray_ISWRITEABLE(a):
@@ -601,7 +604,7 @@ cdef int write_modules(object out, Py_ssize_t n, const double* m, const double* 
     cdef _ModuleVector o
     cdef object fast
     cdef PyObject** items
-    if cnp.PyArray_Check(out):
+    if not (PyTuple_CheckExact(out) or PyList_CheckExact(out)) and cnp.PyArray_Check(out):
         d = module_array(out, n, True, what)
         for i in range(n):
             d[2 * i] = m[i]
@@ -645,7 +648,10 @@ cdef class SwerveDriveKinematics:
     def __init__(self, *moduleTranslations):
         if not moduleTranslations:
             raise ValueError("a swerve drive needs at least 2 modules, got 0")
-        mods = tuple(varargs(moduleTranslations[0], moduleTranslations[1:], Translation2d))
+        mods = as_fast(varargs(moduleTranslations[0], moduleTranslations[1:], Translation2d),
+                       "SwerveDriveKinematics() takes Translation2d module positions or one "
+                       "sequence of them; the argument")
+        mods = tuple(mods)
         cdef Py_ssize_t n = len(mods), i, k
         if n < 2:
             raise ValueError(f"a swerve drive needs at least 2 modules, got {n}")
@@ -783,7 +789,7 @@ cdef class SwerveDriveKinematics:
         cdef _ModuleVector o
         cdef object fast
         cdef PyObject** items
-        if cnp.PyArray_Check(states):
+        if not (PyTuple_CheckExact(states) or PyList_CheckExact(states)) and cnp.PyArray_Check(states):
             d = module_array(states, n, False, what)
             for i in range(n):
                 self.s0[i] = d[2 * i]
@@ -805,7 +811,8 @@ cdef class SwerveDriveKinematics:
 
     def toChassisVelocities(self, moduleVelocities, *more):
         """Return the least-squares ChassisVelocities (robot-relative) for N measured
-        module velocities (SwerveModuleVelocity, as arguments or one sequence)."""
+        module velocities (SwerveModuleVelocity, as arguments or one sequence, or an (N, 2)
+        float64 array ``[velocity m/s, angle rad]``)."""
         cdef double r[3]
         self._read(varargs(moduleVelocities, more, SwerveModuleVelocity), SwerveModuleVelocity,
                    "moduleVelocities")
@@ -824,7 +831,8 @@ cdef class SwerveDriveKinematics:
 
         Return the Twist2d (m, rad) of the robot for N module position deltas
         (SwerveModulePosition: distance driven since the last update and the current
-        angle). With two sequences ``start`` and ``end``, the deltas are
+        angle; or an (N, 2) float64 array ``[distance m, angle rad]``). With two sequences
+        ``start`` and ``end``, the deltas are
         ``end.distance − start.distance`` at the **end** angle, as in WPILib."""
         cdef double r[3]
         if len(more) == 1 and type(first) is not SwerveModulePosition:
@@ -861,9 +869,9 @@ cdef class SwerveDriveKinematics:
         cdef double r[3]
         self._read(moduleDeltas, SwerveModulePosition, "moduleDeltas")
         forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
-        out.dx = r[0]
-        out.dy = r[1]
-        out.dtheta = r[2]
+        out.t.dx = r[0]
+        out.t.dy = r[1]
+        out.t.dtheta = r[2]
 
     def interpolate(self, startValue, endValue, double t):
         """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
@@ -918,7 +926,8 @@ cdef class SwerveDriveKinematics:
 
     def toChassisAccelerations(self, moduleAccelerations, *more):
         """Return the least-squares ChassisAccelerations for N module accelerations
-        (as arguments or one sequence). The ω² estimate of the solve is discarded."""
+        (as arguments or one sequence, or an (N, 2) float64 array ``[m/s², angle rad]``).
+        The ω² estimate of the solve is discarded."""
         cdef double r[4]
         self._read(varargs(moduleAccelerations, more, SwerveModuleAcceleration),
                    SwerveModuleAcceleration, "moduleAccelerations")
@@ -943,9 +952,9 @@ cdef class SwerveDriveKinematics:
         velocities unchanged if either chassis limit or every wheel speed is zero. The
         input is not modified (2027). In the five-argument form the second parameter is
         the desired ChassisVelocities."""
-        cdef desat_t p = parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
-                                     attainableMaxTranslationalSpeed,
-                                     attainableMaxRotationalVelocity)
+        cdef desat_t p
+        parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
+                    attainableMaxTranslationalSpeed, attainableMaxRotationalVelocity, &p)
         cdef object fast = as_fast(moduleVelocities, "moduleVelocities")
         cdef Py_ssize_t i, n = PySequence_Fast_GET_SIZE(fast)
         cdef PyObject** items = PySequence_Fast_ITEMS(fast)
@@ -971,15 +980,15 @@ cdef class SwerveDriveKinematics:
         cdef Py_ssize_t i, n
         cdef double* d
         cdef double div, mul
-        cdef desat_t p = parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
-                                     attainableMaxTranslationalSpeed,
-                                     attainableMaxRotationalVelocity)
+        cdef desat_t p
+        parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
+                    attainableMaxTranslationalSpeed, attainableMaxRotationalVelocity, &p)
         cdef object fast
         cdef PyObject** items
-        if cnp.PyArray_Check(moduleVelocities):
-            n = cnp.PyArray_DIM(<cnp.ndarray>moduleVelocities, 0) if cnp.PyArray_NDIM(
-                <cnp.ndarray>moduleVelocities) == 2 else -1
-            d = module_array(moduleVelocities, n, True, "moduleVelocities")
+        if not (PyTuple_CheckExact(moduleVelocities) or PyList_CheckExact(moduleVelocities)) \
+                and cnp.PyArray_Check(moduleVelocities):
+            d = module_array(moduleVelocities, -1, True, "moduleVelocities")
+            n = cnp.PyArray_DIM(<cnp.ndarray>moduleVelocities, 0)
             desaturate_factors(max_abs(n, d, 2), &p, &div, &mul)
             for i in range(n):
                 d[2 * i] = d[2 * i] / div * mul
@@ -995,16 +1004,15 @@ cdef class SwerveDriveKinematics:
 # ---------------------------------------------------------------------------------------
 # Desaturation: parse the two Java overloads once, then one kernel decides the factors.
 
-cdef desat_t parse_desat(object first, object mm, object mt, object mr) except *:
-    cdef desat_t p
-    memset(&p, 0, sizeof(p))
+cdef int parse_desat(object first, object mm, object mt, object mr,
+                     desat_t* p) except -1:                          # OUT p
     if type(first) is not ChassisVelocities:
         if mm is not None or mt is not None or mr is not None:
             raise TypeError("the five-argument desaturateWheelVelocities form takes a "
                             f"ChassisVelocities second, got {type(first).__name__}")
         p.five = False
         p.max_speed = first
-        return p
+        return 0
     if mm is None or mt is None or mr is None:
         raise TypeError("desaturateWheelVelocities(moduleVelocities, desiredChassisVelocity, "
                         "attainableMaxModuleSpeed, attainableMaxTranslationalSpeed, "
@@ -1014,7 +1022,7 @@ cdef desat_t parse_desat(object first, object mm, object mt, object mr) except *
     p.max_module = mm
     p.max_trans = mt
     p.max_rot = mr
-    return p
+    return 0
 
 
 cdef int desat_objects(PyObject** items, Py_ssize_t n, const desat_t* p,

@@ -37,40 +37,54 @@ class MecanumDriveWheelVelocities:
     @property
     def frontLeft(self) -> float:
         """Front-left wheel value (m/s, m or m/s² depending on the class)."""
+
     @frontLeft.setter
     def frontLeft(self, value: float) -> None: ...
     @property
     def frontRight(self) -> float:
         """Front-right wheel value."""
+
     @frontRight.setter
     def frontRight(self, value: float) -> None: ...
     @property
     def rearLeft(self) -> float:
         """Rear-left wheel value."""
+
     @rearLeft.setter
     def rearLeft(self, value: float) -> None: ...
     @property
     def rearRight(self) -> float:
         """Rear-right wheel value."""
+
     @rearRight.setter
     def rearRight(self, value: float) -> None: ...
     def desaturate(self, attainableMaxSpeed: float) -> MecanumDriveWheelVelocities:
         """Return new velocities scaled so no wheel exceeds ``attainableMaxSpeed`` (m/s),
         keeping their ratios; an unchanged copy if already within it (2027)."""
+
     def desaturateInPlace(self, attainableMaxSpeed: float) -> None:
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
-    def interpolate(self, endValue: MecanumDriveWheelVelocities, t: float) -> MecanumDriveWheelVelocities:
+
+    def interpolate(
+        self, endValue: MecanumDriveWheelVelocities, t: float
+    ) -> MecanumDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
+
     def plus(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities:
         """Return the wheel-by-wheel sum."""
+
     def minus(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities:
         """Return the wheel-by-wheel difference."""
+
     def unaryMinus(self) -> MecanumDriveWheelVelocities:
         """Return every wheel negated."""
+
     def times(self, scalar: float) -> MecanumDriveWheelVelocities:
         """Return every wheel multiplied by ``scalar``."""
+
     def div(self, scalar: float) -> MecanumDriveWheelVelocities:
         """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+
     def __add__(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities: ...
     def __sub__(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities: ...
     def __neg__(self) -> MecanumDriveWheelVelocities: ...
@@ -97,37 +111,50 @@ class MecanumDriveWheelPositions:
     @property
     def frontLeft(self) -> float:
         """Front-left wheel value (m/s, m or m/s² depending on the class)."""
+
     @frontLeft.setter
     def frontLeft(self, value: float) -> None: ...
     @property
     def frontRight(self) -> float:
         """Front-right wheel value."""
+
     @frontRight.setter
     def frontRight(self, value: float) -> None: ...
     @property
     def rearLeft(self) -> float:
         """Rear-left wheel value."""
+
     @rearLeft.setter
     def rearLeft(self, value: float) -> None: ...
     @property
     def rearRight(self) -> float:
         """Rear-right wheel value."""
+
     @rearRight.setter
     def rearRight(self, value: float) -> None: ...
     def copy(self) -> MecanumDriveWheelPositions:
         """Return an independent copy."""
-    def interpolate(self, endValue: MecanumDriveWheelPositions, t: float) -> MecanumDriveWheelPositions:
+
+    def interpolate(
+        self, endValue: MecanumDriveWheelPositions, t: float
+    ) -> MecanumDriveWheelPositions:
         """Linear interpolation; ``t`` is not clamped."""
+
     def plus(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions:
         """Return the wheel-by-wheel sum."""
+
     def minus(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions:
         """Return the wheel-by-wheel difference."""
+
     def unaryMinus(self) -> MecanumDriveWheelPositions:
         """Return every wheel negated."""
+
     def times(self, scalar: float) -> MecanumDriveWheelPositions:
         """Return every wheel multiplied by ``scalar``."""
+
     def div(self, scalar: float) -> MecanumDriveWheelPositions:
         """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+
     def __add__(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions: ...
     def __sub__(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions: ...
     def __neg__(self) -> MecanumDriveWheelPositions: ...
@@ -155,35 +182,47 @@ class MecanumDriveWheelAccelerations:
     @property
     def frontLeft(self) -> float:
         """Front-left wheel value (m/s, m or m/s² depending on the class)."""
+
     @frontLeft.setter
     def frontLeft(self, value: float) -> None: ...
     @property
     def frontRight(self) -> float:
         """Front-right wheel value."""
+
     @frontRight.setter
     def frontRight(self, value: float) -> None: ...
     @property
     def rearLeft(self) -> float:
         """Rear-left wheel value."""
+
     @rearLeft.setter
     def rearLeft(self, value: float) -> None: ...
     @property
     def rearRight(self) -> float:
         """Rear-right wheel value."""
+
     @rearRight.setter
     def rearRight(self, value: float) -> None: ...
-    def interpolate(self, endValue: MecanumDriveWheelAccelerations, t: float) -> MecanumDriveWheelAccelerations:
+    def interpolate(
+        self, endValue: MecanumDriveWheelAccelerations, t: float
+    ) -> MecanumDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
+
     def plus(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations:
         """Return the wheel-by-wheel sum."""
+
     def minus(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations:
         """Return the wheel-by-wheel difference."""
+
     def unaryMinus(self) -> MecanumDriveWheelAccelerations:
         """Return every wheel negated."""
+
     def times(self, scalar: float) -> MecanumDriveWheelAccelerations:
         """Return every wheel multiplied by ``scalar``."""
+
     def div(self, scalar: float) -> MecanumDriveWheelAccelerations:
         """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+
     def __add__(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations: ...
     def __sub__(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations: ...
     def __neg__(self) -> MecanumDriveWheelAccelerations: ...
@@ -211,17 +250,22 @@ class MecanumDriveKinematics:
     ) -> None: ...
     def getFrontLeft(self) -> Translation2d:
         """Return the front-left wheel position (Translation2d, m)."""
+
     def getFrontRight(self) -> Translation2d:
         """Return the front-right wheel position (Translation2d, m)."""
+
     def getRearLeft(self) -> Translation2d:
         """Return the rear-left wheel position (Translation2d, m)."""
+
     def getRearRight(self) -> Translation2d:
         """Return the rear-right wheel position (Translation2d, m)."""
+
     def toWheelVelocities(
         self, chassisVelocities: ChassisVelocities, centerOfRotation: Translation2d = ...
     ) -> MecanumDriveWheelVelocities:
         """Return the wheel velocities (m/s) for a robot-relative chassis velocity,
         rotating about ``centerOfRotation`` (robot frame, m). Not desaturated."""
+
     def toWheelVelocitiesInto(
         self,
         chassisVelocities: ChassisVelocities,
@@ -229,14 +273,17 @@ class MecanumDriveKinematics:
         centerOfRotation: Translation2d = ...,
     ) -> None:
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
+
     def toChassisVelocities(
         self, wheelVelocities: MecanumDriveWheelVelocities
     ) -> ChassisVelocities:
         """Return the least-squares robot velocity for measured wheel velocities."""
+
     def toChassisVelocitiesInto(
         self, wheelVelocities: MecanumDriveWheelVelocities, out: ChassisVelocities
     ) -> None:
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+
     def toTwist2d(
         self, start: MecanumDriveWheelPositions, end: MecanumDriveWheelPositions | None = None
     ) -> Twist2d:
@@ -244,15 +291,18 @@ class MecanumDriveKinematics:
 
         Return the Twist2d (m, rad) for wheel distance changes, either given directly or
         as ``end − start`` of two MecanumDriveWheelPositions."""
+
     def toWheelAccelerations(
         self, chassisAccelerations: ChassisAccelerations, centerOfRotation: Translation2d = ...
     ) -> MecanumDriveWheelAccelerations:
         """Return the wheel accelerations (m/s²) for a chassis acceleration; the same
         matrix as for velocities (no centripetal term, as in WPILib)."""
+
     def toChassisAccelerations(
         self, wheelAccelerations: MecanumDriveWheelAccelerations
     ) -> ChassisAccelerations:
         """Return the least-squares chassis acceleration for wheel accelerations."""
+
     def interpolate(
         self,
         startValue: MecanumDriveWheelPositions,
@@ -260,8 +310,10 @@ class MecanumDriveKinematics:
         t: float,
     ) -> MecanumDriveWheelPositions:
         """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+
     def copy(self, positions: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions:
         """Return an independent copy of ``positions``."""
+
     def copyInto(
         self, positions: MecanumDriveWheelPositions, output: MecanumDriveWheelPositions
     ) -> None:

@@ -47,6 +47,7 @@ class SwerveDriveOdometry:
         pose: Pose2d,
     ) -> None:
         """Reset the pose, the gyro baseline and the module-position baseline."""
+
     def update(
         self,
         gyroAngle: Rotation2d,
@@ -54,12 +55,16 @@ class SwerveDriveOdometry:
     ) -> Pose2d:
         """Integrate the module-distance changes since the last call (at the current module
         angles) and the gyro change; return the new pose."""
+
     def getPose(self) -> Pose2d:
         """Return the current pose estimate (field frame, m)."""
+
     def resetPose(self, pose: Pose2d) -> None:
         """Set the pose; the gyro and wheel baselines are left as they are."""
+
     def resetTranslation(self, translation: Translation2d) -> None:
         """Set the position and keep the heading."""
+
     def resetRotation(self, rotation: Rotation2d) -> None:
         """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
         here that makes the next update report a wrong heading; drivekin does not.)"""
@@ -82,15 +87,20 @@ class MecanumDriveOdometry:
         self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions, pose: Pose2d
     ) -> None:
         """Reset the pose, the gyro baseline and the wheel-position baseline."""
+
     def update(self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions) -> Pose2d:
         """Integrate the wheel-distance changes since the last call and the gyro change;
         return the new pose."""
+
     def getPose(self) -> Pose2d:
         """Return the current pose estimate (field frame, m)."""
+
     def resetPose(self, pose: Pose2d) -> None:
         """Set the pose; the gyro and wheel baselines are left as they are."""
+
     def resetTranslation(self, translation: Translation2d) -> None:
         """Set the position and keep the heading."""
+
     def resetRotation(self, rotation: Rotation2d) -> None:
         """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
         here that makes the next update report a wrong heading; drivekin does not.)"""
@@ -114,15 +124,20 @@ class DifferentialDriveOdometry:
         self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float, pose: Pose2d
     ) -> None:
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""
+
     def update(self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float) -> Pose2d:
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
+
     def getPose(self) -> Pose2d:
         """Return the current pose estimate (field frame, m)."""
+
     def resetPose(self, pose: Pose2d) -> None:
         """Set the pose; the gyro and wheel baselines are left as they are."""
+
     def resetTranslation(self, translation: Translation2d) -> None:
         """Set the position and keep the heading."""
+
     def resetRotation(self, rotation: Rotation2d) -> None:
         """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
         here that makes the next update report a wrong heading; drivekin does not.)"""

@@ -10,11 +10,7 @@ Not ported: ``testMeasureConstructor`` (units-library constructors, not in drive
 """
 import math
 
-import pytest
-
-pytest.importorskip("drivekin.kinematics", reason="drivekin.kinematics is not built yet")
-
-from drivekin import (  # noqa: E402
+from drivekin import (
     ChassisAccelerations,
     ChassisVelocities,
     Pose2d,

@@ -17,7 +17,6 @@ instead.
 import math
 
 import numpy as np
-import pytest
 
 from drivekin import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 

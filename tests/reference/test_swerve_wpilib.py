@@ -16,9 +16,7 @@ import math
 
 import pytest
 
-pytest.importorskip("drivekin.kinematics", reason="drivekin.kinematics is not built yet")
-
-from drivekin import (  # noqa: E402
+from drivekin import (
     ChassisAccelerations,
     ChassisVelocities,
     Rotation2d,
@@ -595,6 +593,10 @@ class TestForwardKinematicsForms:
     def test_at_least_two_modules(self):
         with pytest.raises(ValueError):
             SwerveDriveKinematics(FL)
+        with pytest.raises(ValueError):
+            SwerveDriveKinematics([FL])
+        with pytest.raises(ValueError):
+            SwerveDriveKinematics()
         two = SwerveDriveKinematics(Translation2d(0, 1), Translation2d(0, -1))
         states = two.toSwerveModuleVelocities(ChassisVelocities(1, 0, 0))
         assert len(states) == 2

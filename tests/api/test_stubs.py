@@ -1,0 +1,504 @@
+"""The hand-written type stubs (``src/drivekin/<module>.pyi``) against the compiled modules.
+
+1. Every public compiled module has a stub and every stub a compiled module.
+2. Every public name (module level and class level, inherited members included) exists on
+   both sides, with the same kind (method, static method, property/attribute, ClassVar
+   constant), and a stub property is writable exactly when the runtime one is.
+3. Each runtime ``__doc__`` of a public module, class, method and property equals the
+   stub docstring (both compared after :func:`inspect.cleandoc`). The stub docstrings are
+   verbatim copies of the ``.pyx`` docstrings, which are the source of truth.
+4. ``python -m mypy.stubtest`` passes with ``stubtest-allowlist.txt`` (skipped without mypy).
+5. ``pyproject.toml`` ships the stubs and ``py.typed``.
+
+Cython's ``embedsignature=True`` (setup.py) prepends a signature line to the runtime
+docstrings; :func:`runtime_doc` removes exactly that line and nothing else, see there.
+"""
+from __future__ import annotations
+
+import ast
+import importlib
+import importlib.machinery
+import inspect
+import os
+import re
+import subprocess
+import sys
+import types
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+
+import drivekin
+
+PKG_DIR = Path(drivekin.__file__).resolve().parent
+REPO = Path(__file__).resolve().parents[2]
+ALLOWLIST = Path(__file__).with_name("stubtest-allowlist.txt")
+
+
+# ---------------------------------------------------------------------------------------
+# Discovery
+
+def public(name: str) -> bool:
+    return not name.startswith("_")
+
+
+def compiled_modules() -> list[str]:
+    """Public extension modules of the package (``drivekin/<name>.<ext-suffix>``)."""
+    suffixes = sorted(importlib.machinery.EXTENSION_SUFFIXES, key=len, reverse=True)
+    names = set()
+    for path in PKG_DIR.iterdir():
+        for suffix in suffixes:                       # ".cpython-311-...so" before ".so"
+            if path.name.endswith(suffix):
+                names.add(path.name[: -len(suffix)])
+                break
+    return sorted(n for n in names if n.isidentifier() and public(n))
+
+
+def stub_files() -> list[str]:
+    return sorted(p.stem for p in PKG_DIR.glob("*.pyi"))
+
+
+MODULES = compiled_modules()
+
+
+def test_modules_discovered():
+    # Guards the parametrisation below against an empty or broken discovery.
+    assert {"geometry", "kinematics"} <= set(MODULES), MODULES
+
+
+def test_every_compiled_module_has_a_stub_and_vice_versa():
+    assert sorted(MODULES) == stub_files()
+
+
+# ---------------------------------------------------------------------------------------
+# Stub model parsed with ast
+
+@dataclass
+class StubMember:
+    kind: str     # "method", "staticmethod", "classmethod", "attribute" or "constant"
+    docs: list[str | None] = field(default_factory=list)   # one per overload / definition
+    writable: bool = False         # attributes: has a setter or is a plain annotation
+
+
+@dataclass
+class StubClass:
+    doc: str | None
+    bases: list[str]
+    members: dict[str, StubMember]
+
+
+@dataclass
+class Stub:
+    doc: str | None
+    classes: dict[str, StubClass]
+    others: set[str]               # public module-level functions, constants, aliases
+
+
+def _decorator_names(node: ast.FunctionDef) -> list[str]:
+    names = []
+    for d in node.decorator_list:
+        if isinstance(d, ast.Name):
+            names.append(d.id)
+        elif isinstance(d, ast.Attribute):
+            names.append(d.attr)   # "setter" for @x.setter, "final"/"overload" if qualified
+    return names
+
+
+def _is_classvar(annotation: ast.expr) -> bool:
+    target = annotation.value if isinstance(annotation, ast.Subscript) else annotation
+    return (isinstance(target, ast.Name) and target.id == "ClassVar") or (
+        isinstance(target, ast.Attribute) and target.attr == "ClassVar")
+
+
+def _parse_class(node: ast.ClassDef) -> StubClass:
+    members: dict[str, StubMember] = {}
+    for item in node.body:
+        if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            decos = _decorator_names(item)
+            doc = ast.get_docstring(item, clean=True)
+            if "setter" in decos or "deleter" in decos:
+                member = members.setdefault(item.name, StubMember("attribute"))
+                member.writable |= "setter" in decos
+                assert doc is None, f"{node.name}.{item.name}: put the docstring on the getter"
+                continue
+            if "property" in decos:
+                kind = "attribute"
+            elif "staticmethod" in decos:
+                kind = "staticmethod"
+            elif "classmethod" in decos:
+                kind = "classmethod"
+            else:
+                kind = "method"
+            member = members.setdefault(item.name, StubMember(kind))
+            assert member.kind == kind, f"{node.name}.{item.name}: mixed kinds in the stub"
+            member.docs.append(doc)
+        elif isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name):
+            if _is_classvar(item.annotation):
+                members[item.target.id] = StubMember("constant")
+            else:
+                members[item.target.id] = StubMember("attribute", writable=True)
+        elif isinstance(item, ast.Assign):
+            for target in item.targets:
+                if isinstance(target, ast.Name):
+                    members[target.id] = StubMember("constant")
+    bases = [b.id for b in node.bases if isinstance(b, ast.Name)]
+    return StubClass(ast.get_docstring(node, clean=True), bases, members)
+
+
+def parse_stub(module: str) -> Stub:
+    tree = ast.parse((PKG_DIR / f"{module}.pyi").read_text(encoding="utf-8"))
+    classes: dict[str, StubClass] = {}
+    others: set[str] = set()
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            classes[node.name] = _parse_class(node)
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            others.add(node.name)
+        elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
+            others.add(node.target.id)
+        elif isinstance(node, ast.Assign):
+            others.update(t.id for t in node.targets if isinstance(t, ast.Name))
+    return Stub(ast.get_docstring(tree, clean=True), classes, others)
+
+
+def stub_class_members(stub: Stub, name: str) -> dict[str, StubMember]:
+    """Members of a stub class including those of stub base classes in the same file."""
+    cls = stub.classes[name]
+    members: dict[str, StubMember] = {}
+    for base in reversed(cls.bases):
+        if base in stub.classes:
+            members.update(stub_class_members(stub, base))
+    members.update(cls.members)
+    return members
+
+
+# ---------------------------------------------------------------------------------------
+# Runtime model
+
+def runtime_public_names(mod: types.ModuleType) -> set[str]:
+    """Public names defined by the module itself (not imports such as ``np`` or ``f2``)."""
+    names = set()
+    for name, obj in vars(mod).items():
+        if not public(name) or isinstance(obj, types.ModuleType):
+            continue
+        if getattr(obj, "__module__", mod.__name__) != mod.__name__:
+            continue
+        names.add(name)
+    return names
+
+
+def runtime_class_members(cls: type) -> dict[str, object]:
+    """Public members of ``cls`` and of its bases (private bases such as _ChassisVector
+    included: their methods are part of the public class's API); raw ``__dict__`` values."""
+    members: dict[str, object] = {}
+    for klass in reversed(cls.__mro__[:-1]):          # without object
+        members.update({k: v for k, v in vars(klass).items() if public(k)})
+    return members
+
+
+DESCRIPTORS = (property, types.GetSetDescriptorType, types.MemberDescriptorType)
+
+
+def runtime_kind(raw: object) -> str:
+    if isinstance(raw, staticmethod):
+        return "staticmethod"
+    if isinstance(raw, classmethod):
+        return "classmethod"
+    if isinstance(raw, DESCRIPTORS):
+        return "attribute"
+    if callable(raw):
+        return "method"
+    return "constant"
+
+
+def public_classes(mod: types.ModuleType) -> list[str]:
+    return sorted(n for n in runtime_public_names(mod) if isinstance(getattr(mod, n), type))
+
+
+# ---------------------------------------------------------------------------------------
+# Docstrings
+#
+# With embedsignature=True Cython prepends one line to the docstring of every def
+# function, and of every class that defines __init__ itself (the line is taken from it):
+#     methods:  "<__qualname__>(<parameters>)", e.g. "Translation2d.getDistance(self,
+#               Translation2d other)" or "_ChassisVector.plus(self, _ChassisVector other)"
+#     classes:  "<ClassName>(<__init__ parameters>)", e.g. "Pose2d(a=None, b=None, c=None)"
+# optionally followed by " -> <return type>", then a blank line and the source docstring
+# (or nothing when the source has no docstring). Classes that inherit __init__ (the
+# mecanum/differential wheel values) get no line, and properties and module docstrings are
+# left alone. Most class docstrings in the sources themselves start with a "Name(...)"
+# line (SwerveDriveKinematics's is even identical to the embedded one), so a class line is
+# removed only when the module was built with embedsignature and the class has its own
+# __init__, and then exactly one line, which must look like a signature.
+
+def _signature_line(name: str) -> re.Pattern[str]:
+    return re.compile(rf"{re.escape(name)}\(.*\)(?:\s*->\s*\S.*)?")
+
+
+def _split_first_line(doc: str) -> tuple[str, str]:
+    """Split off the embedded signature line and the blank line after it."""
+    first, _, rest = doc.partition("\n")
+    blank, _, rest = rest.partition("\n")
+    if blank.strip():
+        raise AssertionError(f"embedded signature not followed by a blank line: {doc!r}")
+    return first, rest
+
+
+def module_embeds_signatures(mod: types.ModuleType) -> bool:
+    """True if the module was compiled with embedsignature: some method docstring starts
+    with its own qualified signature line."""
+    for cname in public_classes(mod):
+        for raw in runtime_class_members(getattr(mod, cname)).values():
+            func = raw.__func__ if isinstance(raw, (staticmethod, classmethod)) else raw
+            doc = getattr(func, "__doc__", None)
+            qualname = getattr(func, "__qualname__", None)
+            if callable(func) and doc and qualname and _signature_line(qualname).fullmatch(
+                    doc.partition("\n")[0]):
+                return True
+    return False
+
+
+_CYTHON_ATTRIBUTE_DOC = re.compile(r"\w+: '[^']*'")    # cdef public/readonly: "dx: 'double'"
+
+
+def runtime_doc(obj: object, *, kind: str, embeds: bool) -> str | None:
+    """``obj.__doc__`` without Cython's embedded signature line, cleaned; None if empty."""
+    doc = obj.__doc__
+    if kind == "class":
+        if doc is not None and embeds and "__init__" in vars(obj):
+            first, rest = _split_first_line(doc)
+            assert _signature_line(obj.__name__).fullmatch(first), (
+                f"{obj.__name__}: expected an embedded class signature, got {first!r}")
+            doc = rest
+    elif kind == "function":
+        if doc is not None:
+            first = doc.partition("\n")[0]
+            if _signature_line(obj.__qualname__).fullmatch(first):
+                doc = _split_first_line(doc)[1]
+            else:
+                assert not embeds, f"{obj.__qualname__}: embedded signature missing: {doc!r}"
+    elif kind == "attribute":
+        # Cython documents cdef public/readonly attributes with their C type only.
+        if doc is not None and _CYTHON_ATTRIBUTE_DOC.fullmatch(doc.strip()):
+            doc = None
+    doc = inspect.cleandoc(doc) if doc else None
+    return doc or None
+
+
+def _fail_unless_equal(where: str, runtime: str | None, stub: str | None, errors: list[str]):
+    if runtime != stub:
+        errors.append(f"{where}:\n  runtime: {runtime!r}\n  stub:    {stub!r}")
+
+
+# ---------------------------------------------------------------------------------------
+# 1-2: names and kinds
+
+@pytest.mark.parametrize("module", MODULES)
+def test_module_level_names_match(module):
+    mod = importlib.import_module(f"drivekin.{module}")
+    stub = parse_stub(module)
+    stub_names = {n for n in set(stub.classes) | stub.others if public(n)}
+    runtime = runtime_public_names(mod)
+    assert sorted(runtime - stub_names) == [], "public at runtime but missing from the stub"
+    assert sorted(stub_names - runtime) == [], "in the stub but missing at runtime"
+    for name in stub.classes:
+        if public(name):
+            assert isinstance(getattr(mod, name), type), f"{name} is not a class at runtime"
+
+
+@pytest.mark.parametrize("module", MODULES)
+def test_class_members_match(module):
+    mod = importlib.import_module(f"drivekin.{module}")
+    stub = parse_stub(module)
+    errors = []
+    for cname in public_classes(mod):
+        runtime = runtime_class_members(getattr(mod, cname))
+        stubbed = {k: v for k, v in stub_class_members(stub, cname).items() if public(k)}
+        for name in sorted(set(runtime) - set(stubbed)):
+            errors.append(f"{cname}.{name}: public at runtime, missing from the stub")
+        for name in sorted(set(stubbed) - set(runtime)):
+            errors.append(f"{cname}.{name}: in the stub, missing at runtime")
+        for name in sorted(set(runtime) & set(stubbed)):
+            rk, sk = runtime_kind(runtime[name]), stubbed[name].kind
+            if rk != sk:
+                errors.append(f"{cname}.{name}: runtime {rk}, stub {sk}")
+    assert not errors, "\n".join(errors)
+
+
+def _sample_instances() -> dict[str, object]:
+    """One instance per public class, for the writability check."""
+    from drivekin import (
+        DifferentialDriveKinematics, DifferentialDriveOdometry, DifferentialDriveWheelPositions,
+        MecanumDriveKinematics, MecanumDriveOdometry, MecanumDriveWheelPositions, Rotation2d,
+        SwerveDriveKinematics, SwerveDriveOdometry, SwerveModulePosition, Translation2d,
+    )
+    fl, fr, rl, rr = (Translation2d(x, y) for x, y in ((1, 1), (1, -1), (-1, 1), (-1, -1)))
+    swerve = SwerveDriveKinematics(fl, fr, rl, rr)
+    mecanum = MecanumDriveKinematics(fl, fr, rl, rr)
+    return {
+        "SwerveDriveKinematics": swerve,
+        "MecanumDriveKinematics": mecanum,
+        "DifferentialDriveKinematics": DifferentialDriveKinematics(0.6),
+        "DifferentialDriveWheelPositions": DifferentialDriveWheelPositions(0.0, 0.0),
+        "SwerveDriveOdometry": SwerveDriveOdometry(
+            swerve, Rotation2d(), [SwerveModulePosition() for _ in range(4)]),
+        "MecanumDriveOdometry": MecanumDriveOdometry(
+            mecanum, Rotation2d(), MecanumDriveWheelPositions()),
+        "DifferentialDriveOdometry": DifferentialDriveOdometry(Rotation2d(), 0.0, 0.0),
+    }
+
+
+@pytest.mark.parametrize("module", MODULES)
+def test_stub_attribute_writability_matches(module):
+    """A stub property has a setter (or is a plain annotated attribute) exactly when the
+    runtime attribute can be assigned."""
+    mod = importlib.import_module(f"drivekin.{module}")
+    stub = parse_stub(module)
+    samples = _sample_instances()
+    errors = []
+    for cname in public_classes(mod):
+        cls = getattr(mod, cname)
+        attrs = {n: m for n, m in stub_class_members(stub, cname).items()
+                 if public(n) and m.kind == "attribute"}
+        if not attrs:
+            continue
+        obj = samples[cname] if cname in samples else cls()   # else add a sample above
+        for name, member in sorted(attrs.items()):
+            try:
+                setattr(obj, name, getattr(obj, name))
+                writable = True
+            except AttributeError:
+                writable = False
+            if writable != member.writable:
+                errors.append(f"{cname}.{name}: runtime writable={writable}, "
+                              f"stub writable={member.writable}")
+    assert not errors, "\n".join(errors)
+
+
+# ---------------------------------------------------------------------------------------
+# 3: docstrings
+
+def _fake_function(qualname: str, doc: str | None):
+    def f():
+        pass
+    f.__qualname__ = qualname
+    f.__doc__ = doc
+    return f
+
+
+def _fake_class(doc: str, *, own_init: bool) -> type:
+    namespace: dict[str, object] = {"__doc__": doc}
+    if own_init:
+        namespace["__init__"] = lambda self: None
+    return type("K", (), namespace)
+
+
+@pytest.mark.parametrize("qualname, doc, embeds, expected", [
+    ("C.f", "C.f(self, double x)\n\nBody.", True, "Body."),
+    ("C.f", "C.f(self) -> int\n\nBody\n    more.", True, "Body\nmore."),
+    ("_Base.f", "_Base.f(self, _Base other)\n\nBody.", True, "Body."),
+    ("C.f", "C.f(self)", True, None),                        # no source docstring
+    ("C.g", "g(*a) or g(s, e)\n\nBody.", False, "g(*a) or g(s, e)\n\nBody."),
+    ("C.g", "C.g(self, first, *more)\n\ng(*a) or g(s, e)\n\nBody.", True,
+     "g(*a) or g(s, e)\n\nBody."),
+])
+def test_function_signature_line_is_stripped_exactly(qualname, doc, embeds, expected):
+    assert runtime_doc(_fake_function(qualname, doc), kind="function", embeds=embeds) == expected
+
+
+def test_function_without_embedded_signature_is_an_error_when_the_module_embeds():
+    with pytest.raises(AssertionError, match="embedded signature missing"):
+        runtime_doc(_fake_function("C.f", "Body."), kind="function", embeds=True)
+
+
+@pytest.mark.parametrize("doc, own_init, embeds, expected", [
+    ("K(a=None)\n\nK() or K(a)\n\nBody.", True, True, "K() or K(a)\n\nBody."),
+    ("K(*m)\n\nK(*m)\n\nBody.", True, True, "K(*m)\n\nBody."),     # identical lines
+    ("K(x=0.0)\n\n    Body.\n    ", False, True, "K(x=0.0)\n\nBody."),  # inherited __init__
+    ("K(*m)\n\nBody.", True, False, "K(*m)\n\nBody."),                # built without it
+])
+def test_class_signature_line_is_stripped_exactly(doc, own_init, embeds, expected):
+    cls = _fake_class(doc, own_init=own_init)
+    assert runtime_doc(cls, kind="class", embeds=embeds) == expected
+
+
+def test_cython_attribute_type_doc_counts_as_missing():
+    class Attr:
+        __doc__ = "dx: 'double'"
+    assert runtime_doc(Attr(), kind="attribute", embeds=True) is None
+
+
+def test_signature_stripping_on_the_real_modules():
+    import drivekin.geometry as geometry
+    import drivekin.kinematics as kinematics
+    from drivekin.kinematics import SwerveDriveKinematics
+
+    assert module_embeds_signatures(geometry) and module_embeds_signatures(kinematics)
+    # The embedded line equals the source's own first line here: exactly one goes.
+    raw = SwerveDriveKinematics.__doc__
+    first, blank, second = raw.split("\n")[:3]
+    assert first == second == "SwerveDriveKinematics(*moduleTranslations)" and blank == ""
+    cleaned = runtime_doc(SwerveDriveKinematics, kind="class", embeds=True)
+    assert cleaned == inspect.cleandoc(raw.split("\n", 2)[2])
+    assert cleaned.startswith(first + "\n")
+
+
+@pytest.mark.parametrize("module", MODULES)
+def test_docstrings_match(module):
+    mod = importlib.import_module(f"drivekin.{module}")
+    stub = parse_stub(module)
+    embeds = module_embeds_signatures(mod)
+    errors: list[str] = []
+    _fail_unless_equal(f"module {module}", runtime_doc(mod, kind="module", embeds=embeds),
+                       stub.doc, errors)
+    for cname in public_classes(mod):
+        cls = getattr(mod, cname)
+        _fail_unless_equal(cname, runtime_doc(cls, kind="class", embeds=embeds),
+                           stub.classes[cname].doc, errors)
+        runtime = runtime_class_members(cls)
+        for name, member in sorted(stub_class_members(stub, cname).items()):
+            if not public(name) or name not in runtime or member.kind == "constant":
+                continue        # dunders have no docstrings; constants are instances
+            distinct = set(d for d in member.docs if d is not None)
+            if len(distinct) > 1:
+                errors.append(f"{cname}.{name}: overloads carry different docstrings")
+                continue
+            stub_doc = distinct.pop() if distinct else None
+            raw = runtime[name]
+            if member.kind == "attribute":
+                rt = runtime_doc(raw, kind="attribute", embeds=embeds)
+            else:
+                rt = runtime_doc(getattr(cls, name), kind="function", embeds=embeds)
+            _fail_unless_equal(f"{cname}.{name}", rt, stub_doc, errors)
+    assert not errors, "\n".join(errors)
+
+
+# ---------------------------------------------------------------------------------------
+# 4: stubtest
+
+def test_stubtest(tmp_path):
+    pytest.importorskip("mypy.stubtest")
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(
+        [str(PKG_DIR.parent)] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
+    env["MYPY_CACHE_DIR"] = str(tmp_path / "mypy_cache")   # keep the work tree clean
+    cmd = [sys.executable, "-m", "mypy.stubtest",
+           *(f"drivekin.{m}" for m in MODULES), "--allowlist", str(ALLOWLIST)]
+    proc = subprocess.run(cmd, cwd=tmp_path, env=env, capture_output=True, text=True,
+                          timeout=300)
+    assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+# ---------------------------------------------------------------------------------------
+# 5: packaging
+
+def test_pyproject_ships_stubs_and_py_typed():
+    tomllib = pytest.importorskip("tomllib")
+    pyproject = REPO / "pyproject.toml"
+    if not pyproject.exists():
+        pytest.skip("not running from a source checkout")
+    data = tomllib.loads(pyproject.read_text(encoding="utf-8"))
+    package_data = data["tool"]["setuptools"]["package-data"]["drivekin"]
+    assert "*.pyi" in package_data and "py.typed" in package_data
+    assert (PKG_DIR / "py.typed").is_file()

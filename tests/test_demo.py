@@ -1,0 +1,131 @@
+"""End-to-end tests of the ``python -m drivekin`` demo (src/drivekin/__main__.py).
+
+Each test runs the demo in a subprocess with the interpreter running the tests, so the
+demo is exercised exactly as a newcomer would start it. The subprocess gets this
+process's environment, with the directory that holds the imported ``drivekin`` package
+put first on PYTHONPATH, so it runs the same (in-place built) package.
+"""
+from __future__ import annotations
+
+import json
+import os
+import re
+import subprocess
+import sys
+
+import pytest
+
+import drivekin
+
+_PACKAGE_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(drivekin.__file__)))
+
+
+def run_demo(*args: str) -> subprocess.CompletedProcess:
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(
+        p for p in (_PACKAGE_ROOT, env.get("PYTHONPATH", "")) if p)
+    return subprocess.run(
+        [sys.executable, "-m", "drivekin", *args],
+        env=env, capture_output=True, text=True, encoding="utf-8", timeout=300,
+    )
+
+
+def _row(text: str, label: str) -> str:
+    """The value column of the table row starting with ``label``."""
+    m = re.search(rf"^\s*{re.escape(label)}\s+(.+)$", text, re.MULTILINE)
+    assert m, f"no row {label!r} in output:\n{text}"
+    return m.group(1)
+
+
+DRIVETRAINS = ("swerve", "mecanum", "differential")
+ODOMETRY = {"swerve": "SwerveDriveOdometry", "mecanum": "MecanumDriveOdometry",
+            "differential": "DifferentialDriveOdometry"}
+
+
+@pytest.fixture(scope="module", params=DRIVETRAINS)
+def text_run(request) -> tuple[str, subprocess.CompletedProcess]:
+    return request.param, run_demo("--drivetrain", request.param, "--seconds", "5")
+
+
+def test_text_output_exit_code_and_sections(text_run):
+    drivetrain, result = text_run
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""
+    out = result.stdout
+    assert "250 steps" in out
+    for label in ("p50", "p99", "max", "mean"):
+        assert re.search(rf"^\s*{label}\s+\d+\.\d+ µs\s+\d+\.\d+ % of 20 ms", out, re.MULTILINE), \
+            f"latency row {label!r} missing:\n{out}"
+    pose = _row(out, "final pose")
+    assert re.match(r"x -?\d+\.\d+ m, y -?\d+\.\d+ m\s+heading -?\d+\.\d+°", pose), pose
+    distance = re.match(r"(\d+\.\d+) m\b", _row(out, "distance travelled"))
+    assert distance and float(distance.group(1)) > 0.0, out
+
+
+def test_header_names_drivetrain_and_odometry(text_run):
+    drivetrain, result = text_run
+    first_line = result.stdout.splitlines()[0]
+    assert f"50 Hz {drivetrain} drive control loop" in first_line, first_line
+    assert re.search(rf"^\s*odometry\s+{ODOMETRY[drivetrain]}\b", result.stdout, re.MULTILINE), \
+        result.stdout
+    assert f"{ODOMETRY[drivetrain]}.update" in result.stdout     # in the step chain
+
+
+def test_text_output_reports_zero_allocations(text_run):
+    out = text_run[1].stdout
+    assert _row(out, "traced peak - start").startswith("0 B")
+    assert _row(out, "traced end - start").startswith("0 B")
+    assert _row(out, "live blocks end - start").startswith("0 ")
+    assert _row(out, "passes agree").startswith("yes")
+
+
+@pytest.mark.parametrize("drivetrain", DRIVETRAINS)
+def test_json_run_moves_and_is_deterministic(drivetrain):
+    argv = ("--drivetrain", drivetrain, "--seconds", "5", "--json")
+    first, second = run_demo(*argv), run_demo(*argv)
+    assert first.returncode == 0, first.stderr
+    assert second.returncode == 0, second.stderr
+    a, b = json.loads(first.stdout), json.loads(second.stdout)
+    assert a["drivetrain"] == drivetrain
+    assert a["odometry"] == ODOMETRY[drivetrain]
+    assert a["steps"] == 250
+    assert a["distance_m"] > 0.0
+    assert (a["final_pose"]["x_m"], a["final_pose"]["y_m"]) != (0.0, 0.0)
+    # Deterministic: bit-identical across processes and between the two passes of a run.
+    assert a["final_pose"] == b["final_pose"]
+    assert a["distance_m"] == b["distance_m"]
+    assert a["passes_agree"] and b["passes_agree"]
+    assert a["allocations"] == {"traced_peak_bytes": 0, "traced_net_bytes": 0,
+                                "net_blocks": 0}
+    lat = a["latency_us"]
+    assert 0.0 < lat["p50"] <= lat["p99"] <= lat["max"]
+
+
+def test_default_drivetrain_is_swerve():
+    result = run_demo("--seconds", "0.1", "--json")
+    assert result.returncode == 0, result.stderr
+    data = json.loads(result.stdout)
+    assert (data["drivetrain"], data["odometry"]) == ("swerve", "SwerveDriveOdometry")
+
+
+def test_help_documents_every_option():
+    result = run_demo("--help")
+    assert result.returncode == 0
+    for option in ("--seconds", "--max-speed", "--max-omega", "--drivetrain", "--quiet",
+                   "--json"):
+        assert option in result.stdout
+    for drivetrain in DRIVETRAINS:
+        assert drivetrain in result.stdout
+
+
+def test_rejects_non_positive_seconds():
+    result = run_demo("--seconds", "0")
+    assert result.returncode == 2
+    assert "--seconds" in result.stderr
+
+
+def test_rejects_unknown_drivetrain():
+    result = run_demo("--drivetrain", "bogus")
+    assert result.returncode == 2
+    assert result.stdout == ""
+    assert "--drivetrain" in result.stderr and "invalid choice" in result.stderr
