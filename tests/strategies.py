@@ -131,6 +131,11 @@ def swerve_layouts(draw, min_modules: int = 2, max_modules: int = 8, sizes=None,
               (0.0, 0.5), (0.0, -0.5)]
     pts = draw(st.lists(st.one_of(st.sampled_from(common), st.tuples(coord, coord)),
                         min_size=n, max_size=n, unique=True))
+    if draw(st.booleans()):
+        # Clustered far from the origin: a poorly conditioned (but full-rank) layout.
+        k = draw(st.sampled_from([0.1, 0.03]))
+        cx, cy = draw(coord), draw(coord)
+        pts = [(cx + k * x, cy + k * y) for x, y in pts]
     for i in range(n):
         for j in range(i):
             assume(math.hypot(pts[i][0] - pts[j][0], pts[i][1] - pts[j][1])
