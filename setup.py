@@ -24,6 +24,9 @@ directives = {
     # Every value class defines __reduce__; the rest (kinematics caches, odometry) are
     # not meant to be pickled, so Cython need not generate pickling helpers.
     "auto_pickle": False,
+    # Plain method descriptors instead of cyfunctions: CPython calls them through its
+    # specialised fast path, about 85 instructions (~5 ns) less per call (benchmarks/).
+    "binding": False,
 }
 macros = [("NPY_NO_DEPRECATED_API", "NPY_1_7_API_VERSION")]
 if trace:

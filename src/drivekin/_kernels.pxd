@@ -302,3 +302,17 @@ cdef inline void odometry_step(pose2_t* p, rot2_t* prev_gyro,          # IN/OUT
     cdef double dtheta = rot_radians(rot_minus(gyro, prev_gyro[0]))
     p[0] = pose_transform_by(p[0], twist_exp(dx, dy, dtheta))
     prev_gyro[0] = gyro
+
+cdef inline void wheels_desaturate(Py_ssize_t n, const double* w, double attainable,
+                                   double* out                        # OUT (may be w)
+                                   ) noexcept nogil:
+    # Scale every wheel by attainable / max|w| if the fastest exceeds it, keeping ratios;
+    # WPILib's order of operations (w / max * attainable) and Java Math.max NaN rules.
+    cdef double real_max = max_abs(n, w, 1)
+    cdef Py_ssize_t i
+    if real_max > attainable:
+        for i in range(n):
+            out[i] = w[i] / real_max * attainable
+    elif out != w:
+        for i in range(n):
+            out[i] = w[i]

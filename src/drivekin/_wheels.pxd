@@ -5,6 +5,5 @@ cdef class _WheelValues:
     cdef _WheelValues _new(self)
     cdef _WheelValues _check(self, object other)
     cdef _WheelValues _lerp(self, _WheelValues end, double t)
-    cdef void _desaturate(self, double attainable, _WheelValues out) noexcept
     cdef bint _close(self, _WheelValues o) noexcept
     cdef str _fmt(self, str name, tuple labels, str unit)

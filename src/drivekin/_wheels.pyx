@@ -2,7 +2,6 @@
 cimport cython
 from libc.math cimport fabs
 
-from drivekin._kernels cimport max_abs
 from drivekin._format import f2
 
 
@@ -25,13 +24,6 @@ cdef class _WheelValues:
         for i in range(self.k):
             o.w[i] = self.w[i] + (end.w[i] - self.w[i]) * t
         return o
-
-    cdef void _desaturate(self, double attainable, _WheelValues out) noexcept:
-        # Scale every wheel by attainable / max|w| if the fastest exceeds it, keeping ratios.
-        cdef double real_max = max_abs(self.k, self.w, 1)
-        cdef Py_ssize_t i
-        for i in range(self.k):
-            out.w[i] = self.w[i] / real_max * attainable if real_max > attainable else self.w[i]
 
     cdef bint _close(self, _WheelValues o) noexcept:
         cdef Py_ssize_t i

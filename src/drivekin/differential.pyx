@@ -7,7 +7,7 @@ cimport cython
 from libc.math cimport isfinite
 
 from drivekin._wheels cimport _WheelValues
-from drivekin._kernels cimport clamp01
+from drivekin._kernels cimport clamp01, wheels_desaturate
 from drivekin.geometry cimport new_twist
 from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
 
@@ -62,13 +62,13 @@ cdef class DifferentialDriveWheelVelocities(_Wheel2):
     def desaturate(self, double attainableMaxSpeed):
         """Return new velocities scaled so neither wheel exceeds ``attainableMaxSpeed``
         (m/s), keeping their ratio; unchanged copy if already within it (2027)."""
-        cdef _WheelValues out = self._new()
-        self._desaturate(attainableMaxSpeed, out)
+        cdef _WheelValues out = init2(DifferentialDriveWheelVelocities.__new__(DifferentialDriveWheelVelocities), 0.0, 0.0)
+        wheels_desaturate(2, self.w, attainableMaxSpeed, out.w)
         return out
 
     def desaturateInPlace(self, double attainableMaxSpeed):
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
-        self._desaturate(attainableMaxSpeed, self)
+        wheels_desaturate(2, self.w, attainableMaxSpeed, self.w)
 
     def interpolate(self, DifferentialDriveWheelVelocities endValue not None, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""

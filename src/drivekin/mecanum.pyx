@@ -10,7 +10,7 @@ import numpy as np
 
 from drivekin._types cimport vec2_t, vec3_t
 from drivekin._wheels cimport _WheelValues
-from drivekin._kernels cimport clamp01, mat_vec, vec, vec_eq
+from drivekin._kernels cimport clamp01, mat_vec, vec, vec_eq, wheels_desaturate
 from drivekin.geometry cimport Translation2d, new_twist
 from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
 
@@ -88,13 +88,13 @@ cdef class MecanumDriveWheelVelocities(_Wheel4):
     def desaturate(self, double attainableMaxSpeed):
         """Return new velocities scaled so no wheel exceeds ``attainableMaxSpeed`` (m/s),
         keeping their ratios; an unchanged copy if already within it (2027)."""
-        cdef _WheelValues out = self._new()
-        self._desaturate(attainableMaxSpeed, out)
+        cdef _WheelValues out = blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
+        wheels_desaturate(4, self.w, attainableMaxSpeed, out.w)
         return out
 
     def desaturateInPlace(self, double attainableMaxSpeed):
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
-        self._desaturate(attainableMaxSpeed, self)
+        wheels_desaturate(4, self.w, attainableMaxSpeed, self.w)
 
     def interpolate(self, MecanumDriveWheelVelocities endValue not None, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""

@@ -233,7 +233,10 @@ def public_classes(mod: types.ModuleType) -> list[str]:
 # __init__, and then exactly one line, which must look like a signature.
 
 def _signature_line(name: str) -> re.Pattern[str]:
-    return re.compile(rf"{re.escape(name)}\(.*\)(?:\s*->\s*\S.*)?")
+    # With binding=False a static method's __qualname__ is its bare name while Cython
+    # embeds "Class.name(...)": a bare name may carry one class prefix.
+    prefix = "" if "." in name else r"(?:\w+\.)?"
+    return re.compile(rf"{prefix}{re.escape(name)}\(.*\)(?:\s*->\s*\S.*)?")
 
 
 def _split_first_line(doc: str) -> tuple[str, str]:
