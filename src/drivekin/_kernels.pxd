@@ -27,6 +27,15 @@ cdef inline double clamp01(double t) noexcept nogil:
     # MathUtil.clamp(t, 0, 1); NaN stays NaN.
     return jmax(0.0, jmin(t, 1.0))
 
+cdef inline double fhypot(double x, double y) noexcept nogil:
+    # sqrt(x² + y²) inlines (-fno-math-errno) and is within an ulp of libm's hypot, a call
+    # that costs more than the rest of a module's inverse kinematics. hypot is kept where
+    # squaring could overflow or underflow and for non-finite input (hypot(inf, nan) = inf).
+    cdef double r = sqrt(x * x + y * y)
+    if 1e-150 < r < 1e150:
+        return r
+    return hypot(x, y)
+
 # ---------------------------------------------------------------------------------------
 # Rotation2d
 
@@ -201,9 +210,9 @@ cdef inline void swerve_ik(Py_ssize_t n, const double* rx, const double* ry,
         # that a non-finite input spreads exactly as it does in WPILib (0 * inf = NaN).
         x = vx + 0.0 * vy + (-ry[i]) * omega
         y = 0.0 * vx + vy + rx[i] * omega
-        v = hypot(x, y)
+        v = fhypot(x, y)
         if v > 1e-6:
-            # Rotation2d(x, y) normalises by this same hypot.
+            # Rotation2d(x, y) normalises by this same length.
             hc[i] = x / v
             hs[i] = y / v
         speed[i] = v
@@ -227,7 +236,7 @@ cdef inline void swerve_ik_accel(Py_ssize_t n, const double* rx, const double* r
         # Rows [1, 0, -rx, -ry; 0, 1, -ry, rx] times [ax, ay, omega^2, alpha].
         x = ax + 0.0 * ay + (-rx[i]) * w2 + (-ry[i]) * alpha
         y = 0.0 * ax + ay + (-ry[i]) * w2 + rx[i] * alpha
-        a = hypot(x, y)
+        a = fhypot(x, y)
         acc[i] = a
         if a > 1e-6:
             oc[i] = x / a
@@ -277,7 +286,7 @@ cdef inline void desaturate_factors(double real_max, const desat_t* p,
     # Joystick normalisation: may slow wheels that are not saturated.
     if p.max_trans == 0.0 or p.max_rot == 0.0 or real_max == 0.0:
         return
-    kt = hypot(p.desired.x, p.desired.y) / p.max_trans
+    kt = fhypot(p.desired.x, p.desired.y) / p.max_trans
     kr = fabs(p.desired.z) / p.max_rot
     mul[0] = jmin(jmax(kt, kr) * p.max_module / real_max, 1.0)
 

@@ -1,0 +1,562 @@
+"""WPILib packed-struct serialization (struct spec v1.0) for drivekin's value types and
+kinematics classes, with the WPILib 2027 type names and schemas.
+
+The bytes are what WPILib 2027 Java/C++ writes for the same values to NetworkTables and
+DataLog (type string ``struct:<Name>``, arrays ``struct:<Name>[]``):
+
+* members in schema order, **little-endian**, no padding or alignment, nested structs
+  inlined; every member of every type here is an 8-byte IEEE-754 ``double``;
+* a Rotation2d is packed as its :meth:`~drivekin.Rotation2d.getRadians` — in 2027 the
+  wrapped ``atan2`` value in [−π, π], so ``Rotation2d(4.0)`` packs 4 − 2π — and unpacked
+  with ``Rotation2d(value)``. (WPILib 2026 and robotpy 2026 pack the constructor value
+  unwrapped; both agree for angles already in [−π, π].)
+
+Types, sizes and schemas (units: m, m/s, m/s², rad, rad/s, rad/s²):
+
+================================  =====  ====================================================
+type name                         bytes  schema
+================================  =====  ====================================================
+Translation2d                     16     ``double x;double y``
+Rotation2d                        8      ``double value``
+Pose2d, Transform2d               24     ``Translation2d translation;Rotation2d rotation``
+Twist2d                           24     ``double dx;double dy;double dtheta``
+ChassisVelocities                 24     ``double vx;double vy;double omega``
+ChassisAccelerations              24     ``double ax;double ay;double alpha``
+SwerveModuleVelocity              16     ``double velocity;Rotation2d angle``
+SwerveModulePosition              16     ``double distance;Rotation2d angle``
+SwerveModuleAccelerations (sic)   16     ``double acceleration;Rotation2d angle``
+MecanumDriveWheel{Velocities,     32     ``double front_left;double front_right;``
+Positions,Accelerations}                 ``double rear_left;double rear_right``
+DifferentialDriveWheel{Velocities,16     ``double left;double right``
+Positions,Accelerations}
+DifferentialDriveKinematics       8      ``double trackwidth``
+MecanumDriveKinematics            64     ``Translation2d front_left;Translation2d front_right;``
+                                         ``Translation2d rear_left;Translation2d rear_right``
+SwerveDriveKinematics__N          16·N   ``Translation2d modules[N]``
+================================  =====  ====================================================
+
+The class :class:`~drivekin.SwerveModuleAcceleration` is published under the type name
+``SwerveModuleAccelerations`` (plural), exactly as WPILib 2027 does.
+
+SwerveDriveKinematics has one struct type per module count N (``SwerveDriveKinematics__4``
+for four modules). Functions given an *instance* read N from it; given the *class* they
+need ``numModules=N`` — except :func:`unpack`, which infers ``N = (len(data) - offset) //
+16`` when ``numModules`` is omitted (the byte count must then be a multiple of 16 and at
+least 32, since a swerve drive has N ≥ 2).
+
+Only the kinematics *geometry* is serialized: a SwerveDriveKinematics' heading memory and
+sticky centre of rotation (and a MecanumDriveKinematics' centre of rotation) are not part
+of the struct, so an unpacked copy starts fresh, as in WPILib.
+
+Every function accepts any bytes-like object (bytes, bytearray, memoryview, a uint8
+numpy array, ...). Wrong types raise TypeError; wrong byte counts and values the drivekin
+constructors reject (e.g. a trackwidth ≤ 0, fewer than two swerve modules) raise
+ValueError.
+
+Example::
+
+    >>> from drivekin import ChassisVelocities
+    >>> from drivekin import wpistruct
+    >>> data = wpistruct.pack(ChassisVelocities(1.0, 2.0, 3.0))
+    >>> data.hex()
+    '000000000000f03f00000000000000400000000000000840'
+    >>> wpistruct.getTypeString(ChassisVelocities), wpistruct.getSchema(ChassisVelocities)
+    ('struct:ChassisVelocities', 'double vx;double vy;double omega')
+    >>> wpistruct.unpack(ChassisVelocities, data) == ChassisVelocities(1.0, 2.0, 3.0)
+    True
+"""
+from __future__ import annotations
+
+import operator
+import struct
+from collections.abc import Callable, Iterable
+from typing import Any, TypeVar, Union
+
+from drivekin.differential import (
+    DifferentialDriveKinematics,
+    DifferentialDriveWheelAccelerations,
+    DifferentialDriveWheelPositions,
+    DifferentialDriveWheelVelocities,
+)
+from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
+from drivekin.kinematics import (
+    ChassisAccelerations,
+    ChassisVelocities,
+    SwerveDriveKinematics,
+    SwerveModuleAcceleration,
+    SwerveModulePosition,
+    SwerveModuleVelocity,
+)
+from drivekin.mecanum import (
+    MecanumDriveKinematics,
+    MecanumDriveWheelAccelerations,
+    MecanumDriveWheelPositions,
+    MecanumDriveWheelVelocities,
+)
+
+__all__ = [
+    "STRUCT_TYPES",
+    "StructValue",
+    "forEachNested",
+    "getNested",
+    "getSchema",
+    "getSize",
+    "getTypeName",
+    "getTypeString",
+    "pack",
+    "packArray",
+    "packInto",
+    "unpack",
+    "unpackArray",
+    "unpackFrom",
+]
+
+StructValue = Union[
+    Translation2d, Rotation2d, Pose2d, Transform2d, Twist2d,
+    ChassisVelocities, ChassisAccelerations,
+    SwerveModuleVelocity, SwerveModulePosition, SwerveModuleAcceleration,
+    MecanumDriveWheelVelocities, MecanumDriveWheelPositions, MecanumDriveWheelAccelerations,
+    DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
+    DifferentialDriveWheelAccelerations,
+    DifferentialDriveKinematics, MecanumDriveKinematics, SwerveDriveKinematics,
+]
+"""Any object this module can pack (a union of the supported drivekin classes)."""
+
+#: Bytes-like input: anything exporting the buffer protocol as C-contiguous memory.
+BytesLike = Union[bytes, bytearray, memoryview, Any]
+
+T = TypeVar("T")
+
+
+class _Spec:
+    """Everything known about one struct type (internal).
+
+    ``flatten(obj)`` returns the struct's doubles in wire order; ``build(values, i)``
+    constructs an object from ``values[i : i + count]``.
+    """
+
+    __slots__ = ("cls", "name", "typeString", "schema", "size", "count", "struct",
+                 "nested", "flatten", "build")
+
+    def __init__(self, cls: type, name: str, schema: str, count: int,
+                 nested: tuple[type, ...],
+                 flatten: Callable[[Any], tuple[float, ...]],
+                 build: Callable[[tuple[float, ...], int], Any]) -> None:
+        self.cls = cls
+        self.name = name
+        self.typeString = "struct:" + name
+        self.schema = schema
+        self.count = count                      # number of doubles
+        self.size = 8 * count                   # bytes
+        self.struct = struct.Struct("<%dd" % count)
+        self.nested = nested
+        self.flatten = flatten
+        self.build = build
+
+
+# ---------------------------------------------------------------------------------------
+# Per-type flatten / build functions. Every member is a double, so a struct is a flat run
+# of little-endian doubles; nested structs contribute their doubles in place.
+
+_R = Rotation2d
+_T = Translation2d
+
+_MECANUM_WHEELS = "double front_left;double front_right;double rear_left;double rear_right"
+_DIFF_WHEELS = "double left;double right"
+
+
+def _flat_module(o: Any) -> tuple[float, ...]:
+    # SwerveModuleVelocity/Position/Acceleration iterate as (value, angle).
+    v, a = o
+    return (v, a.getRadians())
+
+
+def _flat_mecanum_kinematics(k: MecanumDriveKinematics) -> tuple[float, ...]:
+    fl, fr, rl, rr = k.getFrontLeft(), k.getFrontRight(), k.getRearLeft(), k.getRearRight()
+    return (fl.getX(), fl.getY(), fr.getX(), fr.getY(),
+            rl.getX(), rl.getY(), rr.getX(), rr.getY())
+
+
+def _checked(name: str, build: Callable[[tuple[float, ...], int], Any]
+             ) -> Callable[[tuple[float, ...], int], Any]:
+    """Wrap a kinematics constructor so that values it rejects (trackwidth <= 0, NaN/inf
+    module positions, ...) surface as ``ValueError("cannot unpack <name>: ...")``."""
+    def checked(v: tuple[float, ...], i: int) -> Any:
+        try:
+            return build(v, i)
+        except ValueError as e:   # includes numpy.linalg.LinAlgError
+            raise ValueError(f"cannot unpack {name}: {e}") from e
+    return checked
+
+
+_SPECS: dict[type, _Spec] = {}
+
+
+def _register(cls: type, name: str, schema: str, count: int, nested: tuple[type, ...],
+              flatten: Callable[[Any], tuple[float, ...]],
+              build: Callable[[tuple[float, ...], int], Any]) -> None:
+    _SPECS[cls] = _Spec(cls, name, schema, count, nested, flatten, build)
+
+
+_register(Translation2d, "Translation2d", "double x;double y", 2, (),
+          tuple, lambda v, i: _T(v[i], v[i + 1]))
+_register(Rotation2d, "Rotation2d", "double value", 1, (),
+          lambda r: (r.getRadians(),), lambda v, i: _R(v[i]))
+_register(Pose2d, "Pose2d", "Translation2d translation;Rotation2d rotation", 3,
+          (Translation2d, Rotation2d),
+          lambda p: (p.getX(), p.getY(), p.getRotation().getRadians()),
+          lambda v, i: Pose2d(v[i], v[i + 1], _R(v[i + 2])))
+_register(Transform2d, "Transform2d", "Translation2d translation;Rotation2d rotation", 3,
+          (Translation2d, Rotation2d),
+          lambda p: (p.getX(), p.getY(), p.getRotation().getRadians()),
+          lambda v, i: Transform2d(v[i], v[i + 1], _R(v[i + 2])))
+_register(Twist2d, "Twist2d", "double dx;double dy;double dtheta", 3, (),
+          lambda t: (t.dx, t.dy, t.dtheta),
+          lambda v, i: Twist2d(v[i], v[i + 1], v[i + 2]))
+_register(ChassisVelocities, "ChassisVelocities", "double vx;double vy;double omega", 3, (),
+          lambda c: (c.vx, c.vy, c.omega),
+          lambda v, i: ChassisVelocities(v[i], v[i + 1], v[i + 2]))
+_register(ChassisAccelerations, "ChassisAccelerations", "double ax;double ay;double alpha", 3,
+          (), lambda c: (c.ax, c.ay, c.alpha),
+          lambda v, i: ChassisAccelerations(v[i], v[i + 1], v[i + 2]))
+_register(SwerveModuleVelocity, "SwerveModuleVelocity", "double velocity;Rotation2d angle", 2,
+          (Rotation2d,), _flat_module,
+          lambda v, i: SwerveModuleVelocity(v[i], _R(v[i + 1])))
+_register(SwerveModulePosition, "SwerveModulePosition", "double distance;Rotation2d angle", 2,
+          (Rotation2d,), _flat_module,
+          lambda v, i: SwerveModulePosition(v[i], _R(v[i + 1])))
+# WPILib 2027 publishes SwerveModuleAcceleration under the plural name (sic).
+_register(SwerveModuleAcceleration, "SwerveModuleAccelerations",
+          "double acceleration;Rotation2d angle", 2, (Rotation2d,), _flat_module,
+          lambda v, i: SwerveModuleAcceleration(v[i], _R(v[i + 1])))
+for _cls in (MecanumDriveWheelVelocities, MecanumDriveWheelPositions,
+             MecanumDriveWheelAccelerations):
+    _register(_cls, _cls.__name__, _MECANUM_WHEELS, 4, (), tuple,
+              lambda v, i, c=_cls: c(v[i], v[i + 1], v[i + 2], v[i + 3]))
+for _cls in (DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
+             DifferentialDriveWheelAccelerations):
+    _register(_cls, _cls.__name__, _DIFF_WHEELS, 2, (), tuple,
+              lambda v, i, c=_cls: c(v[i], v[i + 1]))
+del _cls
+_register(DifferentialDriveKinematics, "DifferentialDriveKinematics", "double trackwidth", 1,
+          (), lambda k: (k.trackwidth,),
+          _checked("DifferentialDriveKinematics",
+                   lambda v, i: DifferentialDriveKinematics(v[i])))
+_register(MecanumDriveKinematics, "MecanumDriveKinematics",
+          "Translation2d front_left;Translation2d front_right;"
+          "Translation2d rear_left;Translation2d rear_right", 8,
+          (Translation2d,), _flat_mecanum_kinematics,
+          _checked("MecanumDriveKinematics",
+                   lambda v, i: MecanumDriveKinematics(
+                       _T(v[i], v[i + 1]), _T(v[i + 2], v[i + 3]),
+                       _T(v[i + 4], v[i + 5]), _T(v[i + 6], v[i + 7]))))
+
+# SwerveDriveKinematics: one spec per module count, created on first use.
+_SWERVE_SPECS: dict[int, _Spec] = {}
+
+
+def _flat_swerve(k: SwerveDriveKinematics) -> tuple[float, ...]:
+    out: list[float] = []
+    for m in k.getModules():
+        out.extend(m)
+    return tuple(out)
+
+
+def _swerve_spec(n: int) -> _Spec:
+    spec = _SWERVE_SPECS.get(n)
+    if spec is None:
+        if n < 2:
+            raise ValueError(f"a SwerveDriveKinematics struct needs numModules >= 2, got {n}")
+
+        def build(v: tuple[float, ...], i: int, n: int = n) -> SwerveDriveKinematics:
+            return SwerveDriveKinematics(
+                [_T(v[j], v[j + 1]) for j in range(i, i + 2 * n, 2)])
+
+        spec = _Spec(SwerveDriveKinematics, f"SwerveDriveKinematics__{n}",
+                     f"Translation2d modules[{n}]", 2 * n, (Translation2d,),
+                     _flat_swerve, _checked(f"SwerveDriveKinematics__{n}", build))
+        _SWERVE_SPECS[n] = spec
+    return spec
+
+
+#: Every drivekin class this module can serialize (SwerveDriveKinematics: any N >= 2).
+STRUCT_TYPES: tuple[type, ...] = (*_SPECS, SwerveDriveKinematics)
+
+_SUPPORTED = ", ".join(c.__name__ for c in STRUCT_TYPES)
+
+
+# ---------------------------------------------------------------------------------------
+# Lookup helpers
+
+def _num_modules(numModules: object) -> int:
+    try:
+        n = operator.index(numModules)  # type: ignore[arg-type]
+    except TypeError:
+        raise TypeError(
+            f"numModules must be an int, got {type(numModules).__name__}") from None
+    if isinstance(numModules, bool):
+        raise TypeError("numModules must be an int, got bool")
+    return n
+
+
+def _spec_of(x: object, numModules: int | None = None) -> _Spec:
+    """Spec for a supported class or instance (``numModules`` only for the swerve class)."""
+    if isinstance(x, type):
+        spec = _SPECS.get(x)
+        if spec is not None:
+            if numModules is not None:
+                raise TypeError(f"numModules applies only to SwerveDriveKinematics, "
+                                f"not {x.__name__}")
+            return spec
+        if x is SwerveDriveKinematics:
+            if numModules is None:
+                raise TypeError(
+                    "the SwerveDriveKinematics struct type depends on the module count: "
+                    "pass numModules=N or an instance")
+            return _swerve_spec(_num_modules(numModules))
+        raise TypeError(f"{x.__module__}.{x.__qualname__} has no WPILib struct "
+                        f"serialization here; supported: {_SUPPORTED}")
+    spec = _SPECS.get(type(x))
+    if spec is not None:
+        if numModules is not None:
+            raise TypeError(f"numModules applies only to SwerveDriveKinematics, "
+                            f"not {type(x).__name__}")
+        return spec
+    if type(x) is SwerveDriveKinematics:
+        n = x.getNumModules()  # type: ignore[attr-defined]
+        if numModules is not None and _num_modules(numModules) != n:
+            raise ValueError(f"numModules={numModules} does not match the instance's "
+                             f"{n} modules")
+        return _swerve_spec(n)
+    raise TypeError(f"cannot serialize a {type(x).__module__}.{type(x).__qualname__}; "
+                    f"supported drivekin types: {_SUPPORTED}")
+
+
+def _spec_of_class(cls: object, numModules: int | None, what: str) -> _Spec:
+    if not isinstance(cls, type):
+        raise TypeError(f"{what}() takes a class as its first argument (e.g. "
+                        f"drivekin.Pose2d), got a {type(cls).__name__} instance")
+    return _spec_of(cls, numModules)
+
+
+def _nbytes(mv: memoryview) -> int:
+    if not mv.c_contiguous:
+        raise TypeError("the buffer must be C-contiguous")
+    return mv.nbytes
+
+
+def _check_offset(offset: object) -> int:
+    try:
+        off = operator.index(offset)  # type: ignore[arg-type]
+    except TypeError:
+        raise TypeError(f"offset must be an int, got {type(offset).__name__}") from None
+    if off < 0:
+        raise ValueError(f"offset must be >= 0, got {off}")
+    return off
+
+
+def _view(data: object) -> memoryview:
+    try:
+        return memoryview(data)  # type: ignore[arg-type]
+    except TypeError:
+        raise TypeError(f"expected a bytes-like object (bytes, bytearray, memoryview), "
+                        f"got {type(data).__name__}") from None
+
+
+# ---------------------------------------------------------------------------------------
+# Descriptors
+
+def getTypeName(x: object, *, numModules: int | None = None) -> str:
+    """Return the WPILib struct type name of a supported class or instance.
+
+    ``getTypeName(ChassisVelocities)`` → ``"ChassisVelocities"``;
+    ``getTypeName(SwerveModuleAcceleration)`` → ``"SwerveModuleAccelerations"`` (sic);
+    ``getTypeName(kinematics4)`` → ``"SwerveDriveKinematics__4"``;
+    ``getTypeName(SwerveDriveKinematics, numModules=4)`` → the same (the class alone is a
+    TypeError: its name depends on N). Unsupported types raise TypeError.
+    """
+    return _spec_of(x, numModules).name
+
+
+def getTypeString(x: object, *, numModules: int | None = None) -> str:
+    """Return the NetworkTables/DataLog type string ``"struct:<Name>"`` (see
+    :func:`getTypeName`). An array of the type is published as ``getTypeString(x) + "[]"``.
+    """
+    return _spec_of(x, numModules).typeString
+
+
+def getSchema(x: object, *, numModules: int | None = None) -> str:
+    """Return the struct schema string, e.g. ``"double velocity;Rotation2d angle"`` or
+    ``"Translation2d modules[4]"`` (published under type ``structschema`` as
+    ``struct:<Name>``)."""
+    return _spec_of(x, numModules).schema
+
+
+def getSize(x: object, *, numModules: int | None = None) -> int:
+    """Return the packed size in bytes (8 per double; 16·N for SwerveDriveKinematics__N)."""
+    return _spec_of(x, numModules).size
+
+
+def getNested(x: object) -> tuple[type, ...]:
+    """Return the struct types nested *directly* in this one, in schema order, without
+    duplicates: ``(Translation2d, Rotation2d)`` for Pose2d/Transform2d, ``(Rotation2d,)``
+    for the swerve module values, ``(Translation2d,)`` for MecanumDriveKinematics and
+    SwerveDriveKinematics (any N), ``()`` for the plain-double types. Their own schemas
+    must be published too; :func:`forEachNested` walks the whole tree."""
+    if x is SwerveDriveKinematics or type(x) is SwerveDriveKinematics:
+        return (Translation2d,)
+    return _spec_of(x).nested
+
+
+def forEachNested(x: object, fn: Callable[[str, str], object], *,
+                  numModules: int | None = None) -> None:
+    """Call ``fn(typeString, schema)`` for every struct type needed to decode ``x``:
+    nested types first (depth-first, each once), then ``x``'s own type last — the order
+    robotpy's ``wpiutil.wpistruct.forEachNested`` uses. Publish each as a
+    ``structschema`` to make a log self-describing."""
+    seen: set[str] = set()
+
+    def visit(spec: _Spec) -> None:
+        for cls in spec.nested:
+            visit(_SPECS[cls])
+        if spec.typeString not in seen:
+            seen.add(spec.typeString)
+            fn(spec.typeString, spec.schema)
+
+    visit(_spec_of(x, numModules))
+
+
+# ---------------------------------------------------------------------------------------
+# Packing
+
+def pack(obj: StructValue) -> bytes:
+    """Return the packed little-endian bytes of ``obj`` (:func:`getSize` bytes).
+
+    Rotation2d members are written as ``getRadians()`` (wrapped to [−π, π]). Raises
+    TypeError for unsupported objects (including classes instead of instances)."""
+    spec = _SPECS.get(type(obj))
+    if spec is None:
+        spec = _spec_of(obj)
+    return spec.struct.pack(*spec.flatten(obj))
+
+
+def packInto(obj: StructValue, buffer: BytesLike, offset: int = 0) -> None:
+    """Write ``pack(obj)`` into the writable ``buffer`` at byte ``offset`` without
+    allocating a bytes object. ValueError if ``buffer[offset:]`` is shorter than
+    :func:`getSize` bytes; TypeError if ``buffer`` is read-only or not bytes-like."""
+    spec = _SPECS.get(type(obj))
+    if spec is None:
+        spec = _spec_of(obj)
+    off = _check_offset(offset)
+    with _view(buffer) as mv:
+        if mv.readonly:
+            raise TypeError(f"packInto() needs a writable buffer, got a read-only "
+                            f"{type(buffer).__name__}")
+        avail = _nbytes(mv) - off
+        if avail < spec.size:
+            raise ValueError(f"{spec.typeString} needs {spec.size} bytes at offset {off}, "
+                             f"the buffer has {max(avail, 0)}")
+        spec.struct.pack_into(mv, off,
+                              *spec.flatten(obj))
+
+
+def packArray(seq: Iterable[StructValue]) -> bytes:
+    """Pack a sequence of objects of one type as the ``struct:<Name>[]`` value: the
+    packed elements back to back, no count prefix. An empty sequence packs to ``b""``.
+    Mixed element types (or SwerveDriveKinematics with different module counts) raise
+    TypeError."""
+    items = list(seq)
+    if not items:
+        return b""
+    first = items[0]
+    spec = _spec_of(first)
+    cls = type(first)
+    flatten = spec.flatten
+    values: list[float] = []
+    extend = values.extend
+    for i, o in enumerate(items):
+        if type(o) is not cls:
+            raise TypeError(f"packArray() elements must all be {cls.__name__}; element {i} "
+                            f"is {type(o).__name__}")
+        extend(flatten(o))
+    if len(values) != spec.count * len(items):
+        # Only possible for SwerveDriveKinematics with differing module counts.
+        counts = sorted({o.getNumModules() for o in items})
+        raise TypeError(f"packArray() elements must share one struct type; got "
+                        f"SwerveDriveKinematics with {counts} modules")
+    return struct.pack("<%dd" % len(values), *values)
+
+
+# ---------------------------------------------------------------------------------------
+# Unpacking
+
+def unpack(cls: type[T], data: BytesLike, offset: int = 0, *,
+           numModules: int | None = None) -> T:
+    """Decode one ``cls`` from ``data[offset:]``, which must be exactly
+    :func:`getSize` bytes long (as robotpy and WPILib C++ require). Returns a new object;
+    Rotation2d members come back as ``Rotation2d(value)``.
+
+    For ``cls=SwerveDriveKinematics`` the module count N is ``numModules`` if given, else
+    inferred as ``(len(data) - offset) // 16`` (the length must be a multiple of 16 and
+    at least 32 bytes). To read a struct embedded in a longer buffer use
+    :func:`unpackFrom`.
+
+    TypeError: ``cls`` is not a supported class or ``data`` is not bytes-like.
+    ValueError: wrong byte count, or values the drivekin constructor rejects.
+    """
+    if not isinstance(cls, type):
+        _spec_of_class(cls, numModules, "unpack")
+    off = _check_offset(offset)
+    with _view(data) as mv:
+        avail = _nbytes(mv) - off
+        if cls is SwerveDriveKinematics and numModules is None:
+            if avail < 32 or avail % 16:
+                raise ValueError(
+                    f"cannot infer the module count of a SwerveDriveKinematics from "
+                    f"{max(avail, 0)} bytes: need a multiple of 16 bytes, at least 32 "
+                    f"(N >= 2 modules)")
+            spec = _swerve_spec(avail // 16)
+        else:
+            spec = _spec_of_class(cls, numModules, "unpack")
+            if avail != spec.size:
+                raise ValueError(f"{spec.typeString} is {spec.size} bytes, got "
+                                 f"{max(avail, 0)} (buffer of {_nbytes(mv)} bytes, "
+                                 f"offset {off})")
+        values = spec.struct.unpack_from(mv, off)
+    obj: T = spec.build(values, 0)
+    return obj
+
+
+def unpackFrom(cls: type[T], data: BytesLike, offset: int = 0, *,
+               numModules: int | None = None) -> T:
+    """Like :func:`unpack` but reads :func:`getSize` bytes at ``offset`` and ignores any
+    bytes after them (``struct.unpack_from`` semantics), for structs embedded in a larger
+    buffer. ``SwerveDriveKinematics`` needs ``numModules`` here (nothing to infer it from).
+    ValueError if fewer than :func:`getSize` bytes follow ``offset``."""
+    spec = _spec_of_class(cls, numModules, "unpackFrom")
+    off = _check_offset(offset)
+    with _view(data) as mv:
+        avail = _nbytes(mv) - off
+        if avail < spec.size:
+            raise ValueError(f"{spec.typeString} is {spec.size} bytes, only "
+                             f"{max(avail, 0)} available at offset {off}")
+        values = spec.struct.unpack_from(mv, off)
+    obj: T = spec.build(values, 0)
+    return obj
+
+
+def unpackArray(cls: type[T], data: BytesLike, *,
+                numModules: int | None = None) -> list[T]:
+    """Decode a ``struct:<Name>[]`` value: ``len(data)`` must be a multiple of
+    :func:`getSize` (an empty buffer gives ``[]``). For SwerveDriveKinematics pass
+    ``numModules`` (the element size cannot be inferred from an array)."""
+    spec = _spec_of_class(cls, numModules, "unpackArray")
+    with _view(data) as mv:
+        nbytes = _nbytes(mv)
+        if nbytes % spec.size:
+            raise ValueError(f"a {spec.typeString}[] value must be a multiple of "
+                             f"{spec.size} bytes, got {nbytes}")
+        values = struct.unpack("<%dd" % (nbytes // 8),
+                               mv)
+    build = spec.build
+    return [build(values, i) for i in range(0, len(values), spec.count)]
