@@ -37,7 +37,7 @@ if trace:
 # exactly as in WPILib.
 compile_args = ["-O3", "-fno-math-errno"] if os.name != "nt" else []
 
-modules = ["geometry", "kinematics", "_wheels", "differential", "mecanum", "odometry"]
+modules = ["geometry", "kinematics", "_wheels", "differential", "mecanum", "odometry", "_alloccount"]
 extensions = [
     Extension(
         f"drivekin.{name}",

@@ -73,6 +73,7 @@ def test_header_names_drivetrain_and_odometry(text_run):
 
 def test_text_output_reports_zero_allocations(text_run):
     out = text_run[1].stdout
+    assert _row(out, "allocator calls").split()[0] == "0"
     assert _row(out, "traced peak - start").startswith("0 B")
     assert _row(out, "traced end - start").startswith("0 B")
     assert _row(out, "live blocks end - start").startswith("0 ")
@@ -95,8 +96,8 @@ def test_json_run_moves_and_is_deterministic(drivetrain):
     assert a["final_pose"] == b["final_pose"]
     assert a["distance_m"] == b["distance_m"]
     assert a["passes_agree"] and b["passes_agree"]
-    assert a["allocations"] == {"traced_peak_bytes": 0, "traced_net_bytes": 0,
-                                "net_blocks": 0}
+    assert a["allocations"] == {"allocator_calls": 0, "traced_peak_bytes": 0,
+                                "traced_net_bytes": 0, "net_blocks": 0}
     lat = a["latency_us"]
     assert 0.0 < lat["p50"] <= lat["p99"] <= lat["max"]
 

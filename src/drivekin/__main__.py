@@ -33,11 +33,10 @@ Measurement, in two passes over identical fresh simulations (so the poses must a
    distort the timings): traced bytes are read once before the loop, the peak is reset,
    and after the loop the peak and current traced bytes are compared with the start;
    ``sys.getallocatedblocks()`` before and after gives the net change in live blocks.
-   tracemalloc cannot count allocator calls, but CPython creates a new value before it
-   releases the one it replaces, so a per-step allocation shows up as a peak above the
-   start (even a freed 8-byte list buffer does). A 0 B peak with 0 net blocks therefore
-   means the steady-state loop is served entirely by freelists (floats, drivekin value
-   objects) and preallocated objects.
+   Around the loop, ``drivekin._alloccount.AllocationCounter`` hooks CPython's RAW, MEM
+   and OBJ allocator domains and counts every malloc/calloc/realloc call: 0 calls means
+   the steady-state loop is served entirely by freelists (floats, drivekin value
+   objects) and preallocated objects. The tracemalloc figures are a second opinion.
 
 Before each pass: ``gc.collect()``, then the measured simulation is built, then a
 throw-away simulation runs one full script cycle as warm-up (caches, specialised
@@ -60,6 +59,7 @@ import tracemalloc
 from array import array
 
 import drivekin
+from drivekin._alloccount import AllocationCounter
 from drivekin import (
     ChassisVelocities,
     DifferentialDriveKinematics,
@@ -533,6 +533,9 @@ def allocation_pass(args, steps: int):
     mem = array("q", [0, 0, 0])             # traced bytes: start, end, peak
     blk = array("q", [0, 0])                # sys.getallocatedblocks(): start, end
     gcc = array("q", [0] * 6)               # gc.get_count(): start, end
+    counter = AllocationCounter()
+    # Bound once here: looking the methods up inside the measured region would allocate.
+    count_on, count_off = counter.__enter__, counter.__exit__
     already = tracemalloc.is_tracing()
     if not already:
         tracemalloc.start()
@@ -540,8 +543,10 @@ def allocation_pass(args, steps: int):
     blk[0] = sys.getallocatedblocks()
     mem[0] = tracemalloc.get_traced_memory()[0]
     tracemalloc.reset_peak()                # peak := current == mem[0] (temporaries freed)
+    count_on()                              # hooks the allocators on top of tracemalloc's
     for _ in loop:
         step()
+    count_off(None, None, None)
     mem[1], mem[2] = tracemalloc.get_traced_memory()
     blk[1] = sys.getallocatedblocks()
     gcc[3], gcc[4], gcc[5] = gc.get_count()
@@ -549,6 +554,7 @@ def allocation_pass(args, steps: int):
         tracemalloc.stop()
     return {
         "sim": sim,
+        "allocator_calls": counter.calls,
         "peak_bytes": mem[2] - mem[0],
         "net_bytes": mem[1] - mem[0],
         "net_blocks": blk[1] - blk[0],
@@ -588,7 +594,8 @@ def run(args) -> dict:
         "budget_pct": {"p99": 100.0 * p99 / BUDGET_NS, "mean": 100.0 * mean / BUDGET_NS},
         "loop_wall_s": wall / 1e9,
         "realtime_factor": steps * DT / (wall / 1e9),
-        "allocations": {"traced_peak_bytes": alloc["peak_bytes"],
+        "allocations": {"allocator_calls": alloc["allocator_calls"],
+                        "traced_peak_bytes": alloc["peak_bytes"],
                         "traced_net_bytes": alloc["net_bytes"],
                         "net_blocks": alloc["net_blocks"]},
         "gc": {"count_growth_timing_pass": list(gc_growth),
@@ -639,6 +646,8 @@ def _table(r: dict) -> str:
         ("  whole loop", f"{r['loop_wall_s'] * 1e3:.1f} ms",
          f"{r['realtime_factor']:,.0f}× real time"),
         ("allocations (pass 2)", "", ""),
+        ("  allocator calls", f"{al['allocator_calls']}",
+         f"PyMem/PyObject malloc+calloc+realloc in {r['steps']} steps"),
         ("  traced peak - start", f"{al['traced_peak_bytes']} B", "tracemalloc"),
         ("  traced end - start", f"{al['traced_net_bytes']} B", ""),
         ("  live blocks end - start", f"{al['net_blocks']}", "sys.getallocatedblocks()"),
