@@ -11,29 +11,36 @@ DataLog (type string ``struct:<Name>``, arrays ``struct:<Name>[]``):
   with ``Rotation2d(value)``. (WPILib 2026 and robotpy 2026 pack the constructor value
   unwrapped; both agree for angles already in [−π, π].)
 
-Types, sizes and schemas (units: m, m/s, m/s², rad, rad/s, rad/s²):
+Types, sizes and schemas (units: m, m/s, m/s², rad, rad/s, rad/s²)::
 
-================================  =====  ====================================================
-type name                         bytes  schema
-================================  =====  ====================================================
-Translation2d                     16     ``double x;double y``
-Rotation2d                        8      ``double value``
-Pose2d, Transform2d               24     ``Translation2d translation;Rotation2d rotation``
-Twist2d                           24     ``double dx;double dy;double dtheta``
-ChassisVelocities                 24     ``double vx;double vy;double omega``
-ChassisAccelerations              24     ``double ax;double ay;double alpha``
-SwerveModuleVelocity              16     ``double velocity;Rotation2d angle``
-SwerveModulePosition              16     ``double distance;Rotation2d angle``
-SwerveModuleAccelerations (sic)   16     ``double acceleration;Rotation2d angle``
-MecanumDriveWheel{Velocities,     32     ``double front_left;double front_right;``
-Positions,Accelerations}                 ``double rear_left;double rear_right``
-DifferentialDriveWheel{Velocities,16     ``double left;double right``
-Positions,Accelerations}
-DifferentialDriveKinematics       8      ``double trackwidth``
-MecanumDriveKinematics            64     ``Translation2d front_left;Translation2d front_right;``
-                                         ``Translation2d rear_left;Translation2d rear_right``
-SwerveDriveKinematics__N          16·N   ``Translation2d modules[N]``
-================================  =====  ====================================================
+    type name                            bytes  schema
+    Translation2d                          16   double x;double y
+    Rotation2d                              8   double value
+    Pose2d, Transform2d                    24   Translation2d translation;Rotation2d rotation
+    Twist2d                                24   double dx;double dy;double dtheta
+    ChassisVelocities                      24   double vx;double vy;double omega
+    ChassisAccelerations                   24   double ax;double ay;double alpha
+    SwerveModuleVelocity                   16   double velocity;Rotation2d angle
+    SwerveModulePosition                   16   double distance;Rotation2d angle
+    SwerveModuleAccelerations (sic)        16   double acceleration;Rotation2d angle
+    MecanumDriveWheelVelocities,           32   double front_left;double front_right;
+      ...Positions, ...Accelerations                double rear_left;double rear_right
+    DifferentialDriveWheelVelocities,      16   double left;double right
+      ...Positions, ...Accelerations
+    DifferentialDriveKinematics             8   double trackwidth
+    MecanumDriveKinematics                 64   Translation2d front_left;
+                                                Translation2d front_right;
+                                                Translation2d rear_left;
+                                                Translation2d rear_right
+    SwerveDriveKinematics__N             16·N   Translation2d modules[N]
+
+(Schema strings have no spaces after the semicolons.)
+
+Functions: :func:`getTypeName`, :func:`getTypeString`, :func:`getSchema`,
+:func:`getSize`, :func:`getNested`, :func:`forEachNested` (describe a type, from the
+class or an instance); :func:`pack`, :func:`packInto`, :func:`packArray`;
+:func:`unpack`, :func:`unpackFrom`, :func:`unpackArray`. :data:`STRUCT_TYPES` lists the
+supported classes.
 
 The class :class:`~drivekin.SwerveModuleAcceleration` is published under the type name
 ``SwerveModuleAccelerations`` (plural), exactly as WPILib 2027 does.
@@ -48,10 +55,12 @@ Only the kinematics *geometry* is serialized: a SwerveDriveKinematics' heading m
 sticky centre of rotation (and a MecanumDriveKinematics' centre of rotation) are not part
 of the struct, so an unpacked copy starts fresh, as in WPILib.
 
-Every function accepts any bytes-like object (bytes, bytearray, memoryview, a uint8
-numpy array, ...). Wrong types raise TypeError; wrong byte counts and values the drivekin
-constructors reject (e.g. a trackwidth ≤ 0, fewer than two swerve modules) raise
-ValueError.
+Every function taking bytes accepts any C-contiguous bytes-like object (bytes,
+bytearray, memoryview, numpy arrays, ...); the sizes are byte counts. Wrong types raise
+TypeError; wrong byte counts and values the drivekin constructors reject (a trackwidth
+that is not positive and finite, fewer than two swerve modules, NaN/inf module positions)
+raise ValueError. (Apart from N ≥ 2, those checks are drivekin's own: bytes that WPILib
+would decode into a degenerate kinematics object are rejected here.)
 
 Example::
 
@@ -131,8 +140,8 @@ T = TypeVar("T")
 class _Spec:
     """Everything known about one struct type (internal).
 
-    ``flatten(obj)`` returns the struct's doubles in wire order; ``build(values, i)``
-    constructs an object from ``values[i : i + count]``.
+    ``flatten(obj)`` returns the struct's doubles in wire order; ``build(*values)``
+    constructs an object from them.
     """
 
     __slots__ = ("cls", "name", "typeString", "schema", "size", "count", "struct",
@@ -141,7 +150,7 @@ class _Spec:
     def __init__(self, cls: type, name: str, schema: str, count: int,
                  nested: tuple[type, ...],
                  flatten: Callable[[Any], tuple[float, ...]],
-                 build: Callable[[tuple[float, ...], int], Any]) -> None:
+                 build: Callable[..., Any]) -> None:
         self.cls = cls
         self.name = name
         self.typeString = "struct:" + name
@@ -165,25 +174,18 @@ _MECANUM_WHEELS = "double front_left;double front_right;double rear_left;double 
 _DIFF_WHEELS = "double left;double right"
 
 
-def _flat_module(o: Any) -> tuple[float, ...]:
-    # SwerveModuleVelocity/Position/Acceleration iterate as (value, angle).
-    v, a = o
-    return (v, a.getRadians())
-
-
 def _flat_mecanum_kinematics(k: MecanumDriveKinematics) -> tuple[float, ...]:
     fl, fr, rl, rr = k.getFrontLeft(), k.getFrontRight(), k.getRearLeft(), k.getRearRight()
     return (fl.getX(), fl.getY(), fr.getX(), fr.getY(),
             rl.getX(), rl.getY(), rr.getX(), rr.getY())
 
 
-def _checked(name: str, build: Callable[[tuple[float, ...], int], Any]
-             ) -> Callable[[tuple[float, ...], int], Any]:
+def _checked(name: str, build: Callable[..., Any]) -> Callable[..., Any]:
     """Wrap a kinematics constructor so that values it rejects (trackwidth <= 0, NaN/inf
     module positions, ...) surface as ``ValueError("cannot unpack <name>: ...")``."""
-    def checked(v: tuple[float, ...], i: int) -> Any:
+    def checked(*v: float) -> Any:
         try:
-            return build(v, i)
+            return build(*v)
         except ValueError as e:   # includes numpy.linalg.LinAlgError
             raise ValueError(f"cannot unpack {name}: {e}") from e
     return checked
@@ -194,62 +196,64 @@ _SPECS: dict[type, _Spec] = {}
 
 def _register(cls: type, name: str, schema: str, count: int, nested: tuple[type, ...],
               flatten: Callable[[Any], tuple[float, ...]],
-              build: Callable[[tuple[float, ...], int], Any]) -> None:
+              build: Callable[..., Any]) -> None:
     _SPECS[cls] = _Spec(cls, name, schema, count, nested, flatten, build)
 
 
+# Flatteners read attributes/getters: iterating the drivekin objects (their __iter__) is
+# about twice as slow.
 _register(Translation2d, "Translation2d", "double x;double y", 2, (),
-          tuple, lambda v, i: _T(v[i], v[i + 1]))
+          lambda t: (t.getX(), t.getY()), lambda x, y: _T(x, y))
 _register(Rotation2d, "Rotation2d", "double value", 1, (),
-          lambda r: (r.getRadians(),), lambda v, i: _R(v[i]))
+          lambda r: (r.getRadians(),), _R)
 _register(Pose2d, "Pose2d", "Translation2d translation;Rotation2d rotation", 3,
           (Translation2d, Rotation2d),
           lambda p: (p.getX(), p.getY(), p.getRotation().getRadians()),
-          lambda v, i: Pose2d(v[i], v[i + 1], _R(v[i + 2])))
+          lambda x, y, r: Pose2d(x, y, _R(r)))
 _register(Transform2d, "Transform2d", "Translation2d translation;Rotation2d rotation", 3,
           (Translation2d, Rotation2d),
           lambda p: (p.getX(), p.getY(), p.getRotation().getRadians()),
-          lambda v, i: Transform2d(v[i], v[i + 1], _R(v[i + 2])))
+          lambda x, y, r: Transform2d(x, y, _R(r)))
 _register(Twist2d, "Twist2d", "double dx;double dy;double dtheta", 3, (),
-          lambda t: (t.dx, t.dy, t.dtheta),
-          lambda v, i: Twist2d(v[i], v[i + 1], v[i + 2]))
+          lambda t: (t.dx, t.dy, t.dtheta), Twist2d)
 _register(ChassisVelocities, "ChassisVelocities", "double vx;double vy;double omega", 3, (),
-          lambda c: (c.vx, c.vy, c.omega),
-          lambda v, i: ChassisVelocities(v[i], v[i + 1], v[i + 2]))
+          lambda c: (c.vx, c.vy, c.omega), ChassisVelocities)
 _register(ChassisAccelerations, "ChassisAccelerations", "double ax;double ay;double alpha", 3,
-          (), lambda c: (c.ax, c.ay, c.alpha),
-          lambda v, i: ChassisAccelerations(v[i], v[i + 1], v[i + 2]))
+          (), lambda c: (c.ax, c.ay, c.alpha), ChassisAccelerations)
 _register(SwerveModuleVelocity, "SwerveModuleVelocity", "double velocity;Rotation2d angle", 2,
-          (Rotation2d,), _flat_module,
-          lambda v, i: SwerveModuleVelocity(v[i], _R(v[i + 1])))
+          (Rotation2d,), lambda s: (s.velocity, s.angle.getRadians()),
+          lambda m, a: SwerveModuleVelocity(m, _R(a)))
 _register(SwerveModulePosition, "SwerveModulePosition", "double distance;Rotation2d angle", 2,
-          (Rotation2d,), _flat_module,
-          lambda v, i: SwerveModulePosition(v[i], _R(v[i + 1])))
+          (Rotation2d,), lambda s: (s.distance, s.angle.getRadians()),
+          lambda m, a: SwerveModulePosition(m, _R(a)))
 # WPILib 2027 publishes SwerveModuleAcceleration under the plural name (sic).
 _register(SwerveModuleAcceleration, "SwerveModuleAccelerations",
-          "double acceleration;Rotation2d angle", 2, (Rotation2d,), _flat_module,
-          lambda v, i: SwerveModuleAcceleration(v[i], _R(v[i + 1])))
-for _cls in (MecanumDriveWheelVelocities, MecanumDriveWheelPositions,
-             MecanumDriveWheelAccelerations):
-    _register(_cls, _cls.__name__, _MECANUM_WHEELS, 4, (), tuple,
-              lambda v, i, c=_cls: c(v[i], v[i + 1], v[i + 2], v[i + 3]))
-for _cls in (DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
-             DifferentialDriveWheelAccelerations):
-    _register(_cls, _cls.__name__, _DIFF_WHEELS, 2, (), tuple,
-              lambda v, i, c=_cls: c(v[i], v[i + 1]))
-del _cls
+          "double acceleration;Rotation2d angle", 2, (Rotation2d,),
+          lambda s: (s.acceleration, s.angle.getRadians()),
+          lambda m, a: SwerveModuleAcceleration(m, _R(a)))
+
+
+_wcls: type
+for _wcls in (MecanumDriveWheelVelocities, MecanumDriveWheelPositions,
+              MecanumDriveWheelAccelerations):
+    _register(_wcls, _wcls.__name__, _MECANUM_WHEELS, 4, (),
+              lambda w: (w.frontLeft, w.frontRight, w.rearLeft, w.rearRight), _wcls)
+for _wcls in (DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
+              DifferentialDriveWheelAccelerations):
+    _register(_wcls, _wcls.__name__, _DIFF_WHEELS, 2, (),
+              lambda w: (w.left, w.right), _wcls)
+del _wcls
 _register(DifferentialDriveKinematics, "DifferentialDriveKinematics", "double trackwidth", 1,
           (), lambda k: (k.trackwidth,),
           _checked("DifferentialDriveKinematics",
-                   lambda v, i: DifferentialDriveKinematics(v[i])))
+                   DifferentialDriveKinematics))
 _register(MecanumDriveKinematics, "MecanumDriveKinematics",
           "Translation2d front_left;Translation2d front_right;"
           "Translation2d rear_left;Translation2d rear_right", 8,
           (Translation2d,), _flat_mecanum_kinematics,
           _checked("MecanumDriveKinematics",
-                   lambda v, i: MecanumDriveKinematics(
-                       _T(v[i], v[i + 1]), _T(v[i + 2], v[i + 3]),
-                       _T(v[i + 4], v[i + 5]), _T(v[i + 6], v[i + 7]))))
+                   lambda *v: MecanumDriveKinematics(
+                       _T(v[0], v[1]), _T(v[2], v[3]), _T(v[4], v[5]), _T(v[6], v[7]))))
 
 # SwerveDriveKinematics: one spec per module count, created on first use.
 _SWERVE_SPECS: dict[int, _Spec] = {}
@@ -258,7 +262,7 @@ _SWERVE_SPECS: dict[int, _Spec] = {}
 def _flat_swerve(k: SwerveDriveKinematics) -> tuple[float, ...]:
     out: list[float] = []
     for m in k.getModules():
-        out.extend(m)
+        out += (m.getX(), m.getY())
     return tuple(out)
 
 
@@ -268,9 +272,8 @@ def _swerve_spec(n: int) -> _Spec:
         if n < 2:
             raise ValueError(f"a SwerveDriveKinematics struct needs numModules >= 2, got {n}")
 
-        def build(v: tuple[float, ...], i: int, n: int = n) -> SwerveDriveKinematics:
-            return SwerveDriveKinematics(
-                [_T(v[j], v[j + 1]) for j in range(i, i + 2 * n, 2)])
+        def build(*v: float) -> SwerveDriveKinematics:
+            return SwerveDriveKinematics([_T(v[j], v[j + 1]) for j in range(0, len(v), 2)])
 
         spec = _Spec(SwerveDriveKinematics, f"SwerveDriveKinematics__{n}",
                      f"Translation2d modules[{n}]", 2 * n, (Translation2d,),
@@ -323,13 +326,23 @@ def _spec_of(x: object, numModules: int | None = None) -> _Spec:
                             f"not {type(x).__name__}")
         return spec
     if type(x) is SwerveDriveKinematics:
-        n = x.getNumModules()  # type: ignore[attr-defined]
+        n = x.getNumModules()
         if numModules is not None and _num_modules(numModules) != n:
             raise ValueError(f"numModules={numModules} does not match the instance's "
                              f"{n} modules")
         return _swerve_spec(n)
     raise TypeError(f"cannot serialize a {type(x).__module__}.{type(x).__qualname__}; "
                     f"supported drivekin types: {_SUPPORTED}")
+
+
+def _spec_of_instance(obj: object) -> _Spec:
+    spec = _SPECS.get(type(obj))
+    if spec is not None:
+        return spec
+    if isinstance(obj, type):
+        raise TypeError(f"cannot serialize the class {obj.__module__}.{obj.__qualname__} "
+                        f"itself: pass an instance")
+    return _spec_of(obj)
 
 
 def _spec_of_class(cls: object, numModules: int | None, what: str) -> _Spec:
@@ -436,17 +449,23 @@ def pack(obj: StructValue) -> bytes:
     TypeError for unsupported objects (including classes instead of instances)."""
     spec = _SPECS.get(type(obj))
     if spec is None:
-        spec = _spec_of(obj)
+        spec = _spec_of_instance(obj)
     return spec.struct.pack(*spec.flatten(obj))
 
 
 def packInto(obj: StructValue, buffer: BytesLike, offset: int = 0) -> None:
     """Write ``pack(obj)`` into the writable ``buffer`` at byte ``offset`` without
-    allocating a bytes object. ValueError if ``buffer[offset:]`` is shorter than
+    creating a bytes object (e.g. to fill a preallocated log record). ValueError if ``buffer[offset:]`` is shorter than
     :func:`getSize` bytes; TypeError if ``buffer`` is read-only or not bytes-like."""
     spec = _SPECS.get(type(obj))
     if spec is None:
-        spec = _spec_of(obj)
+        spec = _spec_of_instance(obj)
+    if type(buffer) is bytearray and type(offset) is int and 0 <= offset:
+        if len(buffer) - offset < spec.size:     # fast path, same checks as below
+            raise ValueError(f"{spec.typeString} needs {spec.size} bytes at offset "
+                             f"{offset}, the buffer has {max(len(buffer) - offset, 0)}")
+        spec.struct.pack_into(buffer, offset, *spec.flatten(obj))
+        return
     off = _check_offset(offset)
     with _view(buffer) as mv:
         if mv.readonly:
@@ -456,8 +475,7 @@ def packInto(obj: StructValue, buffer: BytesLike, offset: int = 0) -> None:
         if avail < spec.size:
             raise ValueError(f"{spec.typeString} needs {spec.size} bytes at offset {off}, "
                              f"the buffer has {max(avail, 0)}")
-        spec.struct.pack_into(mv, off,
-                              *spec.flatten(obj))
+        spec.struct.pack_into(mv, off, *spec.flatten(obj))
 
 
 def packArray(seq: Iterable[StructValue]) -> bytes:
@@ -465,26 +483,27 @@ def packArray(seq: Iterable[StructValue]) -> bytes:
     packed elements back to back, no count prefix. An empty sequence packs to ``b""``.
     Mixed element types (or SwerveDriveKinematics with different module counts) raise
     TypeError."""
-    items = list(seq)
+    items = seq if type(seq) is list or type(seq) is tuple else list(seq)
     if not items:
         return b""
     first = items[0]
-    spec = _spec_of(first)
+    spec = _spec_of_instance(first)
     cls = type(first)
+    if cls is SwerveDriveKinematics:
+        counts = {o.getNumModules() for o in items if type(o) is cls}
+        if len(counts) > 1:
+            raise TypeError(f"packArray() elements must share one struct type; got "
+                            f"SwerveDriveKinematics with {sorted(counts)} modules")
     flatten = spec.flatten
-    values: list[float] = []
-    extend = values.extend
-    for i, o in enumerate(items):
+    pack_one = spec.struct.pack
+    parts = []
+    for o in items:
         if type(o) is not cls:
-            raise TypeError(f"packArray() elements must all be {cls.__name__}; element {i} "
-                            f"is {type(o).__name__}")
-        extend(flatten(o))
-    if len(values) != spec.count * len(items):
-        # Only possible for SwerveDriveKinematics with differing module counts.
-        counts = sorted({o.getNumModules() for o in items})
-        raise TypeError(f"packArray() elements must share one struct type; got "
-                        f"SwerveDriveKinematics with {counts} modules")
-    return struct.pack("<%dd" % len(values), *values)
+            i = next(j for j, x in enumerate(items) if type(x) is not cls)
+            raise TypeError(f"packArray() elements must all be {cls.__name__}; element "
+                            f"{i} is {type(items[i]).__name__}")
+        parts.append(pack_one(*flatten(o)))
+    return b"".join(parts)
 
 
 # ---------------------------------------------------------------------------------------
@@ -504,6 +523,15 @@ def unpack(cls: type[T], data: BytesLike, offset: int = 0, *,
     TypeError: ``cls`` is not a supported class or ``data`` is not bytes-like.
     ValueError: wrong byte count, or values the drivekin constructor rejects.
     """
+    if (numModules is None and type(offset) is int and offset == 0
+            and (type(data) is bytes or type(data) is bytearray) and type(cls) is type):
+        fast = _SPECS.get(cls)                   # fast path, same checks as below
+        if fast is not None:
+            if len(data) != fast.size:
+                raise ValueError(f"{fast.typeString} is {fast.size} bytes, got {len(data)} "
+                                 f"(buffer of {len(data)} bytes, offset 0)")
+            result: T = fast.build(*fast.struct.unpack(data))
+            return result
     if not isinstance(cls, type):
         _spec_of_class(cls, numModules, "unpack")
     off = _check_offset(offset)
@@ -523,7 +551,7 @@ def unpack(cls: type[T], data: BytesLike, offset: int = 0, *,
                                  f"{max(avail, 0)} (buffer of {_nbytes(mv)} bytes, "
                                  f"offset {off})")
         values = spec.struct.unpack_from(mv, off)
-    obj: T = spec.build(values, 0)
+    obj: T = spec.build(*values)
     return obj
 
 
@@ -541,7 +569,7 @@ def unpackFrom(cls: type[T], data: BytesLike, offset: int = 0, *,
             raise ValueError(f"{spec.typeString} is {spec.size} bytes, only "
                              f"{max(avail, 0)} available at offset {off}")
         values = spec.struct.unpack_from(mv, off)
-    obj: T = spec.build(values, 0)
+    obj: T = spec.build(*values)
     return obj
 
 
@@ -556,7 +584,6 @@ def unpackArray(cls: type[T], data: BytesLike, *,
         if nbytes % spec.size:
             raise ValueError(f"a {spec.typeString}[] value must be a multiple of "
                              f"{spec.size} bytes, got {nbytes}")
-        values = struct.unpack("<%dd" % (nbytes // 8),
-                               mv)
+        rows = list(spec.struct.iter_unpack(mv))   # before the view is released
     build = spec.build
-    return [build(values, i) for i in range(0, len(values), spec.count)]
+    return [build(*row) for row in rows]
