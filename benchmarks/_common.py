@@ -1,8 +1,9 @@
 """Shared set-up for the drivekin benchmarks: the fixed robot, the fixed inputs, the
 prebuilt robotpy / drivekin argument objects, the loop compiler and the machine description.
 
-Used by ``conftest.py`` (pytest-benchmark) and by ``ratio_table.py`` (stand-alone timer), so
-both measure exactly the same statements on exactly the same inputs.
+Used by ``conftest.py`` and the ``bench_*.py`` files (pytest-benchmark; :func:`bench_tests`
+writes their test functions) and by ``ratio_table.py`` (stand-alone timer), so both measure
+exactly the same statements on exactly the same inputs.
 
 drivekin is imported from an installed copy if there is one, else from ``<repo>/src``
 (the in-tree build), so ``PYTHONPATH=src`` is optional when running from the repository.
@@ -50,6 +51,14 @@ class Inputs:
     max_rotation: float = 6.0
     pose: tuple = (1.0, 2.0, 0.5)         # x m, y m, heading rad
     twist: tuple = (0.02, 0.01, 0.03)     # dx m, dy m, dtheta rad
+    # mecanum: wheels at `modules` (FL, FR, RL, RR); IK gives 1.0, 2.0, -0.4, 3.4 m/s.
+    # differential: trackwidth W; IK gives left 0.9, right 2.1 m/s.
+    trackwidth: float = 0.6               # m
+    # desaturate with a limit above every wheel speed (no wheel is rescaled)
+    max_speed_unsaturated: float = 5.0    # m/s
+    # odometry: built at gyro `robot_angle` with zero wheel distances and initial pose
+    # `pose`; the benchmarked update passes gyro robot_angle + omega*dt and the distances
+    # of one dt at the IK wheel speeds (module angles of the IK states for swerve).
 
 
 INPUTS = Inputs()
@@ -61,17 +70,47 @@ def build_robotpy(inp: Inputs = INPUTS) -> SimpleNamespace:
 
     kin = k.SwerveDrive4Kinematics(*(g.Translation2d(x, y) for x, y in inp.modules))
     cs = k.ChassisSpeeds(inp.vx, inp.vy, inp.omega)
+    states = kin.toSwerveModuleStates(cs)             # tuple of 4 SwerveModuleState
+    mkin = k.MecanumDriveKinematics(*(g.Translation2d(x, y) for x, y in inp.modules))
+    mwheels = mkin.toWheelSpeeds(cs)
+    dkin = k.DifferentialDriveKinematics(inp.trackwidth)
+    dwheels = dkin.toWheelSpeeds(cs)
+    dt = inp.dt
     return SimpleNamespace(
         g=g, k=k,
         Kinematics=k.SwerveDrive4Kinematics,
         ChassisSpeeds=k.ChassisSpeeds,
         kin=kin,
         cs=cs,
-        states=kin.toSwerveModuleStates(cs),          # tuple of 4 SwerveModuleState
+        states=states,
         rot=g.Rotation2d(inp.robot_angle),
         pose=g.Pose2d(inp.pose[0], inp.pose[1], g.Rotation2d(inp.pose[2])),
         twist=g.Twist2d(*inp.twist),
+        # mecanum / differential
+        mkin=mkin,
+        MecanumDriveWheelSpeeds=k.MecanumDriveWheelSpeeds,
+        mwheels=mwheels,                               # MecanumDriveWheelSpeeds (IK of cs)
+        dkin=dkin,
+        DifferentialDriveWheelSpeeds=k.DifferentialDriveWheelSpeeds,
+        dwheels=dwheels,                               # DifferentialDriveWheelSpeeds
+        # odometry inputs
+        SwerveDrive4Odometry=k.SwerveDrive4Odometry,
+        MecanumDriveOdometry=k.MecanumDriveOdometry,
+        DifferentialDriveOdometry=k.DifferentialDriveOdometry,
+        gyro1=g.Rotation2d(inp.robot_angle + inp.omega * dt),
+        spos0=tuple(k.SwerveModulePosition(0.0, s.angle) for s in states),
+        spos1=tuple(k.SwerveModulePosition(s.speed * dt, s.angle) for s in states),
+        mpos0=k.MecanumDriveWheelPositions(),
+        mpos1=_mecanum_positions(k.MecanumDriveWheelPositions, mwheels, dt),
+        dpos1=(dwheels.left * dt, dwheels.right * dt),
     )
+
+
+def _mecanum_positions(cls, w, dt):
+    p = cls()
+    p.frontLeft, p.frontRight = w.frontLeft * dt, w.frontRight * dt
+    p.rearLeft, p.rearRight = w.rearLeft * dt, w.rearRight * dt
+    return p
 
 
 def build_drivekin_geometry(inp: Inputs = INPUTS) -> SimpleNamespace:
@@ -107,12 +146,62 @@ def build_drivekin(inp: Inputs = INPUTS) -> SimpleNamespace:
     ns.kin = kin
     ns.cv = cv
     ns.states = kin.toSwerveModuleVelocities(cv)    # tuple of 4 SwerveModuleVelocity
+    _add_drivetrains(ns, inp)
     return ns
+
+
+def _add_drivetrains(ns: SimpleNamespace, inp: Inputs) -> None:
+    """drivekin.mecanum / differential / odometry objects, the same inputs as robotpy's."""
+    from drivekin import differential as d, mecanum as m, odometry as o
+
+    k, dt = ns.k, inp.dt
+    ns.m, ns.d, ns.o = m, d, o
+    ns.mkin = m.MecanumDriveKinematics(*(ns.g.Translation2d(x, y) for x, y in inp.modules))
+    ns.MecanumDriveWheelVelocities = m.MecanumDriveWheelVelocities
+    ns.mwheels = ns.mkin.toWheelVelocities(ns.cv)
+    ns.dkin = d.DifferentialDriveKinematics(inp.trackwidth)
+    ns.DifferentialDriveWheelVelocities = d.DifferentialDriveWheelVelocities
+    ns.dwheels = ns.dkin.toWheelVelocities(ns.cv)
+    ns.SwerveDriveOdometry = o.SwerveDriveOdometry
+    ns.MecanumDriveOdometry = o.MecanumDriveOdometry
+    ns.DifferentialDriveOdometry = o.DifferentialDriveOdometry
+    ns.gyro1 = ns.g.Rotation2d(inp.robot_angle + inp.omega * dt)
+    ns.spos0 = tuple(k.SwerveModulePosition(0.0, s.angle) for s in ns.states)
+    ns.spos1 = tuple(k.SwerveModulePosition(s.velocity * dt, s.angle) for s in ns.states)
+    ns.mpos0 = m.MecanumDriveWheelPositions()
+    ns.mpos1 = m.MecanumDriveWheelPositions(*(x * dt for x in ns.mwheels))
+    ns.dpos1 = (ns.dwheels.left * dt, ns.dwheels.right * dt)
 
 
 def fresh_states(dk: SimpleNamespace) -> list:
     """A new list of N SwerveModuleVelocity equal to dk.states (for in-place variants)."""
     return [dk.SwerveModuleVelocity(s.velocity, s.angle) for s in dk.states]
+
+
+def rp_mecanum_speeds(rp: SimpleNamespace):
+    """A new robotpy MecanumDriveWheelSpeeds equal to rp.mwheels (desaturate mutates)."""
+    w = rp.mwheels
+    return rp.MecanumDriveWheelSpeeds(w.frontLeft, w.frontRight, w.rearLeft, w.rearRight)
+
+
+def dk_mecanum_velocities(dk: SimpleNamespace):
+    w = dk.mwheels
+    return dk.MecanumDriveWheelVelocities(w.frontLeft, w.frontRight, w.rearLeft, w.rearRight)
+
+
+def rp_differential_speeds(rp: SimpleNamespace):
+    return rp.DifferentialDriveWheelSpeeds(rp.dwheels.left, rp.dwheels.right)
+
+
+def dk_differential_velocities(dk: SimpleNamespace):
+    return dk.DifferentialDriveWheelVelocities(dk.dwheels.left, dk.dwheels.right)
+
+
+def positions_array(positions):
+    """N SwerveModulePosition as a float64 C-contiguous (N, 2) array [distance m, angle rad]."""
+    import numpy as np
+
+    return np.array([[p.distance, p.angle.getRadians()] for p in positions], dtype=np.float64)
 
 
 def states_array(dk: SimpleNamespace):
@@ -159,6 +248,40 @@ def compile_timer(stmt: str, env: dict):
     ns = dict(env, _rep=itertools.repeat, _clock=time.perf_counter)
     exec(compile(src, f"<timer: {stmt}>", "exec"), ns)
     return ns["_timer"]
+
+
+# ---------------------------------------------------------------------------------------
+# The pytest-benchmark test functions of a bench_<suite>.py file
+
+def bench_tests(*suites: str):
+    """Return ``(test_bench, test_values_agree)`` for the registry suites ``suites``.
+
+    A bench file is then ``test_bench, test_values_agree = bench_tests("chassis")``.
+    ``test_bench`` has three benchmarks per operation in one pytest-benchmark group
+    (robotpy, drivekin façade, drivekin allocation-free path, plus any extra variants; the
+    cases live in registry.py), run by ``pytest benchmarks --benchmark-only`` from the
+    repository root. ``test_values_agree`` is not a benchmark: it is skipped under
+    --benchmark-only and run by a plain ``pytest benchmarks``. The fixtures ``bench_op`` and
+    ``check_op`` come from conftest.py. Each call makes new function objects, so the
+    parametrize marks of one file never leak into another.
+    """
+    import pytest
+
+    import registry
+
+    ops = [op for s in suites for op in registry.suite(s)]
+
+    @pytest.mark.parametrize(
+        "op, variant",
+        [pytest.param(op, v, id=f"{op.key}-{v}") for op in ops for v in op.variants()])
+    def test_bench(bench_op, op, variant):
+        bench_op(op, variant)
+
+    @pytest.mark.parametrize("op", [pytest.param(op, id=op.key) for op in ops])
+    def test_values_agree(check_op, op):
+        check_op(op)
+
+    return test_bench, test_values_agree
 
 
 # ---------------------------------------------------------------------------------------

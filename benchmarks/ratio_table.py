@@ -1,6 +1,6 @@
 """drivekin vs robotpy-wpimath: per-call times and ratios as a Markdown table.
 
-    python benchmarks/ratio_table.py            # full run (about 10 s)
+    python benchmarks/ratio_table.py            # full run (about 20 s)
     python benchmarks/ratio_table.py --quick    # CI smoke run (about 2 s)
     python benchmarks/ratio_table.py --ir       # instruction counts under callgrind (~1 min)
     python benchmarks/ratio_table.py --from-json .benchmarks/run.json
@@ -53,6 +53,10 @@ sys.path.insert(0, str(HERE))
 from _common import (INNER, build_drivekin, build_drivekin_geometry, build_robotpy,  # noqa: E402
                      compile_timer, kinematics_available, machine_description)
 from registry import CALIBRATION, OPERATIONS, VARIANTS, evaluate, values_agree  # noqa: E402
+
+
+ROBOTS = ("4-module swerve at (±0.3, ±0.3) m, mecanum with wheels at the same points, "
+          "differential with trackwidth 0.6 m")
 
 
 # ---------------------------------------------------------------------------------------
@@ -338,7 +342,7 @@ def main(argv=None):
                 f"applied here to instruction ratios as a stricter proxy (robotpy spends more "
                 f"time per instruction, so its time ratios come out lower)")
         method = ["* method: valgrind callgrind instruction counts (deterministic); "
-                  "4-module swerve at (±0.3, ±0.3) m, prebuilt inputs"]
+                  f"{ROBOTS}, prebuilt inputs"]
 
         def get(key, v):
             return res.get((key, v))
@@ -354,7 +358,7 @@ def main(argv=None):
                 else "median over rounds of the per-round minimum")
         method = [f"* method: {args.rounds} rounds x {args.repeat} samples per case, "
                   f"~{args.sample_ms:g} ms per sample, cases interleaved, GC off; "
-                  f"4-module swerve at (±0.3, ±0.3) m, prebuilt inputs"]
+                  f"{ROBOTS}, prebuilt inputs"]
 
         def get(key, v):
             t = by.get((key, v))

@@ -2,7 +2,8 @@
 drivekin allocation-free path (+ optional extra variants) + target ratios.
 
 Both the pytest-benchmark files (``bench_*.py``) and ``ratio_table.py`` are generated from
-this list, so adding a drivetrain is a few lines here, e.g.::
+this list, so adding a drivetrain is a few lines here. The mecanum IK entry (written below
+by ``_wheel_drive_ops``, which also adds FK and desaturate) is, spelled out::
 
     register(Operation(
         key="mecanum.ik", title="mecanum IK toWheelVelocities", suite="mecanum",
@@ -13,13 +14,15 @@ this list, so adding a drivetrain is a few lines here, e.g.::
         alloc_free=Case("kin.toWheelVelocitiesInto(cv, out)",
                         lambda rp, dk: dict(kin=dk.mkin, cv=dk.cv,
                                             out=dk.MecanumDriveWheelVelocities()),
-                        value="wheels4(out)"),
-        targets=(0.15, 0.08)))
+                        value="wheels4(out)", note="out: MecanumDriveWheelVelocities"),
+        targets=DRIVETRAIN_TARGETS))        # (façade, alloc-free) = (0.25, 0.12)
 
 plus building ``rp.mkin`` (``wpimath.kinematics.MecanumDriveKinematics``), ``dk.mkin`` and
 ``dk.MecanumDriveWheelVelocities`` (``drivekin.mecanum``) in ``_common.build_robotpy`` /
-``build_drivekin``, and a ``bench_mecanum.py`` that is a copy of ``bench_chassis.py`` with
-``SUITE = "mecanum"``. ``ratio_table.py`` picks new entries up by itself.
+``_add_drivetrains``, and a bench file that collects the suite (``bench_drivetrains.py``
+collects ``mecanum``, ``differential`` and ``odometry``; a new suite's file is
+``test_bench, test_values_agree = _common.bench_tests("<suite>")``). ``ratio_table.py``
+picks new entries up by itself.
 
 A :class:`Case` is a one-line statement plus a ``setup(rp, dk) -> dict`` that returns the
 local names the statement uses. ``setup`` is called once per case, so mutable inputs and
@@ -33,7 +36,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Callable, Optional
 
-from _common import fresh_states, states_array
+from _common import (INPUTS, dk_differential_velocities, dk_mecanum_velocities, fresh_states,
+                     positions_array, rp_differential_speeds, rp_mecanum_speeds, states_array)
 
 #: The three columns of the ratio table, in order.
 VARIANTS = ("robotpy", "facade", "alloc_free")
@@ -111,9 +115,14 @@ def wheels4(w):
     return [w.frontLeft, w.frontRight, w.rearLeft, w.rearRight]
 
 
+def wheels2(w):
+    # differential wheel speeds/velocities: `left`, `right` in robotpy 2026 and drivekin
+    return [w.left, w.right]
+
+
 VALUE_HELPERS = dict(rp_states=rp_states, dk_states=dk_states, speeds3=speeds3,
                      rp_pose=rp_pose, dk_pose=dk_pose, flat_array=flat_array,
-                     wheels4=wheels4)
+                     wheels4=wheels4, wheels2=wheels2)
 
 
 def _np_zeros(shape):
@@ -267,6 +276,163 @@ register(Operation(
                     value="dk_pose(pose.exp(twist))"),
     targets=(0.15, 0.12),
     needs_kinematics=False))
+
+
+# ---------------------------------------------------------------------------------------
+# Mecanum (wheels at the swerve module positions, FL FR RL RR) and differential
+# (trackwidth 0.6 m). Same chassis input as swerve; robotpy gets prebuilt ChassisSpeeds and
+# wheel-speed objects.
+
+#: targets for every mecanum / differential / odometry operation (façade, alloc-free)
+DRIVETRAIN_TARGETS = (0.25, 0.12)
+
+# Desaturate, two rows per drivetrain. robotpy's 2026 `desaturate` and drivekin's
+# `desaturateInPlace` both mutate their object; drivekin's 2027 `desaturate` returns a new
+# object and leaves its input alone. Re-setting the four wheel values before every call
+# is not a fair fix: the setters would cost robotpy ~4 pybind11 attribute calls and drivekin
+# ~4 Cython property stores, and that difference would dominate. Instead:
+#   [saturated]   limit 1.0 m/s, below the IK wheel speeds. Every case has its own wheel
+#                 object. robotpy and desaturateInPlace rescale on their first (warm-up)
+#                 call only; from then on each call computes max|w|, finds it == the limit
+#                 and returns: the same work on both sides. The façade reads its unchanged
+#                 input, so it rescales and allocates the result on every timed call (more
+#                 work than robotpy). The value check runs on fresh objects, so it compares
+#                 one real rescale per case.
+#   [unsaturated] limit 5.0 m/s, above every wheel: no case ever rescales; all three
+#                 compute max|w| and compare, identical arithmetic on every call (the
+#                 façade also allocates its returned copy).
+def _desaturate_ops(drive, label, rp_wheels, dk_wheels, flat, wheels_note):
+    for kind, m in (("saturated", INPUTS.max_speed),
+                    ("unsaturated", INPUTS.max_speed_unsaturated)):
+        if kind == "saturated":
+            steady = (f"{wheels_note}, limit {m} m/s: rescales on its first call only, "
+                      "then max|w| + compare, no rescale (its own object)")
+            facade_note = ("returns a new object; its input is never changed, so it "
+                           "rescales on every call")
+        else:
+            steady = f"{wheels_note}, limit {m} m/s: max|w| + compare, never rescales"
+            facade_note = "returns a new (unscaled) copy on every call"
+        register(Operation(
+            key=f"{drive}.desat.{kind}", title=f"{label}.desaturate(max) [{kind}]",
+            suite=drive,
+            robotpy=Case("w.desaturate(m)",
+                         lambda rp, dk, f=rp_wheels, m=m: dict(w=f(rp), m=m),
+                         value=f"{flat}(w)", note="mutates, returns None; " + steady),
+            facade=Case("w.desaturate(m)",
+                        lambda rp, dk, f=dk_wheels, m=m: dict(w=f(dk), m=m),
+                        value=f"{flat}(w.desaturate(m))", note=facade_note),
+            alloc_free=Case("w.desaturateInPlace(m)",
+                            lambda rp, dk, f=dk_wheels, m=m: dict(w=f(dk), m=m),
+                            value=f"{flat}(w)", note="mutates, returns None; " + steady),
+            targets=DRIVETRAIN_TARGETS))
+
+
+def _wheel_drive_ops(drive, kin, wheels, wheel_cls, flat, rp_wheels, dk_wheels, wheels_note):
+    """IK, FK and the two desaturate rows of a drivetrain with a wheel-speed object.
+
+    ``kin`` / ``wheels`` name the prebuilt kinematics and IK wheel objects on ``rp`` and
+    ``dk`` (``mkin`` / ``mwheels``, ...); ``wheel_cls`` is drivekin's wheel-velocity class
+    (an attribute of ``dk``); ``flat`` the value helper that flattens a wheel object."""
+
+    register(Operation(
+        key=f"{drive}.ik", title=f"{drive} IK toWheelVelocities", suite=drive,
+        robotpy=Case("kin.toWheelSpeeds(cs)",
+                     lambda rp, dk: dict(kin=getattr(rp, kin), cs=rp.cs),
+                     value=f"{flat}(kin.toWheelSpeeds(cs))"),
+        facade=Case("kin.toWheelVelocities(cv)",
+                    lambda rp, dk: dict(kin=getattr(dk, kin), cv=dk.cv),
+                    value=f"{flat}(kin.toWheelVelocities(cv))"),
+        alloc_free=Case("kin.toWheelVelocitiesInto(cv, out)",
+                        lambda rp, dk: dict(kin=getattr(dk, kin), cv=dk.cv,
+                                            out=getattr(dk, wheel_cls)()),
+                        value=f"{flat}(out)", note=f"out: {wheel_cls}"),
+        targets=DRIVETRAIN_TARGETS))
+
+    register(Operation(
+        key=f"{drive}.fk", title=f"{drive} FK toChassisVelocities", suite=drive,
+        robotpy=Case("kin.toChassisSpeeds(w)",
+                     lambda rp, dk: dict(kin=getattr(rp, kin), w=getattr(rp, wheels)),
+                     value="speeds3(kin.toChassisSpeeds(w))"),
+        facade=Case("kin.toChassisVelocities(w)",
+                    lambda rp, dk: dict(kin=getattr(dk, kin), w=getattr(dk, wheels)),
+                    value="speeds3(kin.toChassisVelocities(w))"),
+        alloc_free=Case("kin.toChassisVelocitiesInto(w, out)",
+                        lambda rp, dk: dict(kin=getattr(dk, kin), w=getattr(dk, wheels),
+                                            out=dk.ChassisVelocities()),
+                        value="speeds3(out)", note="out: ChassisVelocities"),
+        targets=DRIVETRAIN_TARGETS))
+
+    _desaturate_ops(drive, f"{drive} {wheel_cls}", rp_wheels, dk_wheels, flat, wheels_note)
+
+
+_wheel_drive_ops("mecanum", "mkin", "mwheels", "MecanumDriveWheelVelocities", "wheels4",
+                 rp_mecanum_speeds, dk_mecanum_velocities, "wheels 1.0, 2.0, -0.4, 3.4 m/s")
+_wheel_drive_ops("differential", "dkin", "dwheels", "DifferentialDriveWheelVelocities",
+                 "wheels2", rp_differential_speeds, dk_differential_velocities,
+                 "wheels 0.9, 2.1 m/s")
+
+
+# ---------------------------------------------------------------------------------------
+# Odometry update. Each case builds its own odometry object (gyro `robot_angle`, zero
+# wheel distances, initial pose INPUTS.pose) and updates it with gyro + omega*dt and one
+# dt of wheel travel. The value check is that first update (a real move). While timing,
+# every later call sees zero wheel deltas and an unchanged gyro: neither library
+# short-cuts that, so both run the full FK + Twist2d.exp + pose composition on every call
+# and the pose stays put. drivekin has a single form (update returns a freelist Pose2d,
+# no allocator calls), so the alloc-free column times the same statement again on its own
+# odometry object.
+
+_ODO_NOTE = ("same call as the façade: drivekin's odometry update has one form (the "
+             "returned Pose2d comes from a freelist)")
+
+
+def _odometry_op(key, title, rp_case, dk_stmt, dk_setup, extras=None):
+    return register(Operation(
+        key=key, title=title, suite="odometry", robotpy=rp_case,
+        facade=Case(dk_stmt, dk_setup, value="dk_pose(odo.getPose())"),
+        alloc_free=Case(dk_stmt, dk_setup, value="dk_pose(odo.getPose())", note=_ODO_NOTE),
+        extras=extras or {}, targets=DRIVETRAIN_TARGETS))
+
+
+_odometry_op(
+    "odometry.swerve", "swerve odometry update(gyro, 4 positions)",
+    Case("odo.update(gyro, pos)",
+         lambda rp, dk: dict(odo=rp.SwerveDrive4Odometry(rp.kin, rp.rot, rp.spos0, rp.pose),
+                             gyro=rp.gyro1, pos=rp.spos1),
+         value="rp_pose(odo.getPose())",
+         note="SwerveDrive4Odometry; pos: tuple of 4 SwerveModulePosition"),
+    "odo.update(gyro, pos)",
+    lambda rp, dk: dict(odo=dk.SwerveDriveOdometry(dk.kin, dk.rot, dk.spos0, dk.pose),
+                        gyro=dk.gyro1, pos=dk.spos1),
+    extras={
+        "alloc_free[ndarray]": Case(
+            "odo.update(gyro, pos)",
+            lambda rp, dk: dict(odo=dk.SwerveDriveOdometry(dk.kin, dk.rot,
+                                                           positions_array(dk.spos0), dk.pose),
+                                gyro=dk.gyro1, pos=positions_array(dk.spos1)),
+            value="dk_pose(odo.getPose())",
+            note="pos: (4, 2) float64 ndarray [distance m, angle rad]"),
+    })
+
+_odometry_op(
+    "odometry.mecanum", "mecanum odometry update(gyro, wheel positions)",
+    Case("odo.update(gyro, pos)",
+         lambda rp, dk: dict(odo=rp.MecanumDriveOdometry(rp.mkin, rp.rot, rp.mpos0, rp.pose),
+                             gyro=rp.gyro1, pos=rp.mpos1),
+         value="rp_pose(odo.getPose())", note="pos: MecanumDriveWheelPositions"),
+    "odo.update(gyro, pos)",
+    lambda rp, dk: dict(odo=dk.MecanumDriveOdometry(dk.mkin, dk.rot, dk.mpos0, dk.pose),
+                        gyro=dk.gyro1, pos=dk.mpos1))
+
+_odometry_op(
+    "odometry.differential", "differential odometry update(gyro, left, right)",
+    Case("odo.update(gyro, left, right)",
+         lambda rp, dk: dict(odo=rp.DifferentialDriveOdometry(rp.rot, 0.0, 0.0, rp.pose),
+                             gyro=rp.gyro1, left=rp.dpos1[0], right=rp.dpos1[1]),
+         value="rp_pose(odo.getPose())", note="left, right: float distances, m"),
+    "odo.update(gyro, left, right)",
+    lambda rp, dk: dict(odo=dk.DifferentialDriveOdometry(dk.rot, 0.0, 0.0, dk.pose),
+                        gyro=dk.gyro1, left=dk.dpos1[0], right=dk.dpos1[1]))
 
 
 # ---------------------------------------------------------------------------------------

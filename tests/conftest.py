@@ -2,8 +2,11 @@
 
 * Hypothesis profiles: ``dev`` (default, quick) and ``ci`` (more examples). Pick one with
   the environment variable ``HYPOTHESIS_PROFILE``.
-* ``tests/`` is put on ``sys.path`` so test modules in sub-directories can
-  ``import strategies`` (there are no ``__init__.py`` files in the test tree).
+* ``tests/`` is put on ``sys.path`` so test modules in sub-directories can import the
+  shared helper modules (there are no ``__init__.py`` files in the test tree):
+  ``strategies`` (hypothesis strategies, tolerances, reference models), ``alloc`` (the
+  allocation harness) and ``wpilib_port`` (kEpsilon, JUnit-style ``assert_close`` and
+  WPILib's (±12, ±12) test robot for the ported WPILib tests).
 * The robotpy-wpimath oracle is optional: ``wpimath_kin`` / ``wpimath_geo`` fixtures and
   :func:`require_wpimath` skip cleanly when it is not installed.
 """

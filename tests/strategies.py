@@ -144,6 +144,36 @@ def swerve_layouts(draw, min_modules: int = 2, max_modules: int = 8, sizes=None,
     return pts
 
 
+def effective_cor(cor, prev=(0.0, 0.0)):
+    """The centre of rotation the inverse rows are built for. WPILib rebuilds them only
+    when the CoR differs from the previous one under Translation2d equality (both
+    components within 1e-9 m means "the same"), so a nearby CoR keeps ``prev``."""
+    if abs(cor[0] - prev[0]) < 1e-9 and abs(cor[1] - prev[1]) < 1e-9:
+        return prev
+    return cor
+
+
+# ---------------------------------------------------------------------------------------
+# Mecanum layouts
+
+
+def mecanum_inverse_matrix(points, cor=(0.0, 0.0)) -> np.ndarray:
+    """4×3 inverse-kinematics matrix for wheels FL, FR, RL, RR at ``points``
+    (rows FL/RR [1, −1, −(rx + ry)] and FR/RL [1, 1, rx − ry] with r = point − cor)."""
+    rows = []
+    for i, (x, y) in enumerate(points):
+        rx, ry = x - cor[0], y - cor[1]
+        if i in (0, 3):                  # front left, rear right
+            rows.append([1.0, -1.0, -(rx + ry)])
+        else:                            # front right, rear left
+            rows.append([1.0, 1.0, rx - ry])
+    return np.array(rows, dtype=float)
+
+
+# ---------------------------------------------------------------------------------------
+# Chassis velocities
+
+
 def chassis_tuples(bound: float = 1e3):
     """(vx, vy, omega); sometimes with exact zeros in some components."""
     comp = st.one_of(st.just(0.0), finite_floats(bound))
@@ -187,7 +217,7 @@ def log_rel(theta: float, rel: float = 1e-12) -> float:
       absolute error is about min(|θ|/2, ε/|θ|) (at θ = 1e-9, cos θ rounds to 1 and
       c = 0 instead of 5e-10).
     """
-    return rel + _log_part(theta) + _exp_part(theta)
+    return rel + _log_part(theta) + exp_rounding(theta)
 
 
 def _log_part(theta: float) -> float:
@@ -195,9 +225,27 @@ def _log_part(theta: float) -> float:
     return 0.0 if cm1 < 1e-9 else 8 * EPS / cm1
 
 
-def _exp_part(theta: float) -> float:
+def exp_rounding(theta: float) -> float:
+    """Absolute error (per metre of twist) of WPILib's c = (1 − cos θ)/θ in Twist2d.exp
+    outside its series branch: about min(|θ|, ε/|θ|), at most ~1e-8 near |θ| = 1.5e-8.
+    Two implementations of that formula can differ by this much when their θ differ in
+    the last bits."""
     a = abs(theta)
     return 0.0 if a < 1e-9 else min(a, 4 * EPS / a)
+
+
+def compose_exp(x, y, th, dx, dy, dth):
+    """pose ∘ exp(twist) in plain math: the pose (x, y, th) moved by the twist
+    (dx, dy, dth). (1 − cos θ)/θ is written as 2·sin²(θ/2)/θ, which has no cancellation,
+    so the only special case is θ = 0 exactly."""
+    if dth == 0.0:
+        s, c = 1.0, 0.0
+    else:
+        s = math.sin(dth) / dth
+        c = 2.0 * math.sin(0.5 * dth) ** 2 / dth
+    tx, ty = s * dx - c * dy, c * dx + s * dy
+    ct, st_ = math.cos(th), math.sin(th)
+    return x + ct * tx - st_ * ty, y + st_ * tx + ct * ty, th + dth
 
 
 def angle_diff(a: float, b: float) -> float:

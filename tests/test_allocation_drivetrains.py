@@ -1,31 +1,19 @@
 """Allocation tests for the mecanum / differential hot paths and the odometry loops.
 
-After a warm-up, 10 000 calls must make no allocator calls at all:
-
-* ``tracemalloc`` is started right before the measured loop (so the starting traced size
-  is 0) and both the traced size and the traced *peak* must still be 0 afterwards — a
-  temporary allocation freed within the same call would still raise the peak;
-* ``gc.get_count()[0]`` (new GC-tracked objects) must not grow, measured with the
-  collector disabled during the loop.
-
-Objects drawn from a freelist (drivekin's Cython freelists, CPython's float freelist) are
-not allocator calls; that is how ``pose = odo.update(...)`` and ``pose.getX()`` stay free.
-``gc.collect()`` empties CPython's own freelists, so the loop is warmed up again after it.
-The helper here is deliberately not tests/test_allocation.py's ``measure``: that one warms
-up *before* ``gc.collect()``, so a loop whose body returns floats (``pose.getX()``) shows
-24 B per float still alive at the end (e.g. 72 B for getX/getY/getRadians) — a harness
-artefact, not a drivekin allocation. This one re-warms after collecting;
-:func:`test_harness_detects_allocations` shows it is not vacuous.
+After a warm-up, 10 000 iterations of each loop body must make no allocator calls at all
+(traced peak, traced size and ``gc.get_count()[0]`` unchanged). The harness is
+``tests/alloc.py`` (shared with ``test_allocation.py``, which also holds its self-tests): it
+warms up again after ``gc.collect()``, so bodies that return floats (``pose.getX()``) from
+CPython's float freelist measure as the zero they are. Objects drawn from a freelist
+(drivekin's Cython freelists, CPython's float freelist) are not allocator calls; that is how
+``pose = odo.update(...)`` and ``pose.getX()`` stay free.
 """
 from __future__ import annotations
-
-import gc
-import itertools
-import tracemalloc
 
 import numpy as np
 import pytest
 
+from alloc import assert_no_allocations
 from drivekin import (
     ChassisVelocities,
     DifferentialDriveKinematics,
@@ -42,63 +30,6 @@ from drivekin import (
     SwerveModulePosition,
     Translation2d,
 )
-
-CALLS = 10_000
-WARMUP = 200
-
-
-def measure(loop, n=CALLS):
-    """Run ``loop(iterator)`` over ``n`` items; return (traced size, traced peak, growth
-    of gc.get_count()[0]) for the measured run. ``loop`` is a function whose body is the
-    code under test inside ``for _ in it:`` (so the iteration makes no int objects)."""
-    loop(itertools.repeat(None, WARMUP))
-    it = itertools.repeat(None, n)
-    enabled = gc.isenabled()
-    gc.collect()
-    gc.disable()
-    try:
-        loop(itertools.repeat(None, WARMUP))       # refill the freelists gc.collect emptied
-        gc.get_count()                              # warm the harness's own tuple
-        tracemalloc.start()
-        try:
-            count0 = gc.get_count()[0]
-            loop(it)
-            count1 = gc.get_count()[0]
-            size, peak = tracemalloc.get_traced_memory()
-        finally:
-            tracemalloc.stop()
-    finally:
-        if enabled:
-            gc.enable()
-    return size, peak, count1 - count0
-
-
-def assert_no_allocations(loop, what):
-    size, peak, gc_growth = measure(loop)
-    assert (size, peak, gc_growth) == (0, 0, 0), (
-        f"{what}: {CALLS} calls left {size} B traced, peak {peak} B above the start, "
-        f"{gc_growth} new GC-tracked objects")
-
-
-def test_harness_detects_allocations():
-    def empty(it):
-        for _ in it:
-            pass
-
-    def temporary(it):
-        for _ in it:
-            object()                                # freed at once: only the peak shows it
-
-    def tracked(it, keep=[]):
-        for _ in it:
-            keep.append([[]])
-
-    assert measure(empty) == (0, 0, 0)
-    size, peak, _ = measure(temporary)
-    assert size == 0 and peak > 0
-    size, peak, growth = measure(tracked, n=100)
-    assert size > 0 and peak > 0 and growth > 0
-
 
 # ---------------------------------------------------------------------------------------
 # Mecanum kinematics

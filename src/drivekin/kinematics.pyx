@@ -20,7 +20,7 @@ import numpy as np
 
 from drivekin._types cimport desat_t, rot2_t, vec2_t, vec3_t
 from drivekin._kernels cimport (
-    chassis_discretize, clamp01, desaturate_factors, forward_solve, jmax, jmin, max_abs, rot_eq,
+    chassis_discretize, clamp01, desaturate_factors, forward_solve, jmax, max_abs, rot_eq,
     rot_interp, rot_minus, rot_neg, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
     vec, vec_eq, vec_rotate,
 )

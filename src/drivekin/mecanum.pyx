@@ -8,7 +8,7 @@ cimport cython
 
 import numpy as np
 
-from drivekin._types cimport vec2_t, vec3_t
+from drivekin._types cimport vec2_t
 from drivekin._wheels cimport _WheelValues
 from drivekin._kernels cimport clamp01, mat_vec, vec, vec_eq, wheels_desaturate
 from drivekin.geometry cimport Translation2d, new_twist

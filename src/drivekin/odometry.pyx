@@ -10,7 +10,7 @@ comes from a freelist, so a 50 Hz loop runs without allocator calls.
 cimport cython
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 
-from drivekin._types cimport pose2_t, rot2_t
+from drivekin._types cimport pose2_t
 from drivekin._wheels cimport _WheelValues
 from drivekin._kernels cimport forward_solve, mat_vec, odometry_step, pose, rot_xy, vec
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose

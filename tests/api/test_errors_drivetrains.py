@@ -33,11 +33,8 @@ from drivekin import (
     Translation2d,
     Twist2d,
 )
+from wpilib_port import BL, BR, FL, FR
 
-FL = Translation2d(12, 12)
-FR = Translation2d(12, -12)
-BL = Translation2d(-12, 12)
-BR = Translation2d(-12, -12)
 ZERO = Rotation2d.kZero
 
 

@@ -34,18 +34,6 @@ EPS = S.EPS
 # Mecanum layouts and the independent model
 
 
-def mecanum_inverse_matrix(points, cor=(0.0, 0.0)) -> np.ndarray:
-    """4×3 inverse-kinematics matrix for wheels FL, FR, RL, RR at ``points``."""
-    rows = []
-    for i, (x, y) in enumerate(points):
-        rx, ry = x - cor[0], y - cor[1]
-        if i in (0, 3):                  # front left, rear right
-            rows.append([1.0, -1.0, -(rx + ry)])
-        else:                            # front right, rear left
-            rows.append([1.0, 1.0, rx - ry])
-    return np.array(rows, dtype=float)
-
-
 MAX_MECANUM_COND = 1e4
 
 
@@ -62,7 +50,7 @@ def random_layouts(draw, bound: float = 3.0):
     """Any four wheel positions whose inverse matrix has full column rank (cond ≤ 1e4)."""
     coord = st.floats(-bound, bound, allow_nan=False, allow_subnormal=False)
     pts = draw(st.lists(st.tuples(coord, coord), min_size=4, max_size=4))
-    assume(np.linalg.cond(mecanum_inverse_matrix(pts)) < MAX_MECANUM_COND)
+    assume(np.linalg.cond(S.mecanum_inverse_matrix(pts)) < MAX_MECANUM_COND)
     return pts
 
 
@@ -79,15 +67,7 @@ def wheels_of(w):
 
 def fk_rel(layout):
     """Relative error allowance of a least-squares solve on this layout."""
-    return max(1e-13, 64 * EPS * np.linalg.cond(mecanum_inverse_matrix(layout)))
-
-
-def effective_cor(cor, prev=(0.0, 0.0)):
-    """The inverse rows are rebuilt only when the CoR differs from the previous one under
-    Translation2d equality (both components within 1e-9 m means "the same")."""
-    if abs(cor[0] - prev[0]) < 1e-9 and abs(cor[1] - prev[1]) < 1e-9:
-        return prev
-    return cor
+    return max(1e-13, 64 * EPS * np.linalg.cond(S.mecanum_inverse_matrix(layout)))
 
 
 velocity_tuples = S.chassis_tuples(1e2)
@@ -104,7 +84,7 @@ def test_mecanum_inverse_matches_rows_and_forward_inverse_identity(layout, v):
     kin = make_mecanum(layout)
     w = kin.toWheelVelocities(ChassisVelocities(*v))
     assert type(w) is MecanumDriveWheelVelocities
-    expected = mecanum_inverse_matrix(layout) @ np.array(v)
+    expected = S.mecanum_inverse_matrix(layout) @ np.array(v)
     scale = float(np.abs(expected).max(initial=1.0))
     for got, e, name in zip(wheels_of(w), expected, ("fl", "fr", "rl", "rr")):
         S.assert_close(got, float(e), scale, rel=1e-14, what=name)
@@ -122,7 +102,7 @@ def test_mecanum_forward_is_least_squares(layout, wheels):
     chassis velocity, and toTwist2d is the same solve on distances."""
     kin = make_mecanum(layout)
     cv = kin.toChassisVelocities(MecanumDriveWheelVelocities(*wheels))
-    ref = np.linalg.lstsq(mecanum_inverse_matrix(layout), np.array(wheels), rcond=None)[0]
+    ref = np.linalg.lstsq(S.mecanum_inverse_matrix(layout), np.array(wheels), rcond=None)[0]
     scale = max(1.0, max(abs(x) for x in wheels))
     for got, e in zip((cv.vx, cv.vy, cv.omega), ref):
         S.assert_close(got, float(e), scale, rel=fk_rel(layout))
@@ -141,10 +121,10 @@ def test_mecanum_forward_is_least_squares(layout, wheels):
 def test_mecanum_center_of_rotation_only_affects_inverse(layout, v, cor):
     kin, fresh = make_mecanum(layout), make_mecanum(layout)
     vx, vy, w = v
-    eff = effective_cor(cor)
+    eff = S.effective_cor(cor)
     wheels = kin.toWheelVelocities(ChassisVelocities(*v), Translation2d(*cor))
     # Inverse: the rows built about the CoR.
-    expected = mecanum_inverse_matrix(layout, eff) @ np.array(v)
+    expected = S.mecanum_inverse_matrix(layout, eff) @ np.array(v)
     scale = float(np.abs(expected).max(initial=1.0))
     for got, e in zip(wheels_of(wheels), expected):
         S.assert_close(got, float(e), scale, rel=1e-14)

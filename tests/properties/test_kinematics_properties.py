@@ -35,14 +35,6 @@ def module_vectors(layout, vx, vy, omega, cor=(0.0, 0.0)):
     return (m @ np.array([vx, vy, omega])).reshape(-1, 2)
 
 
-def effective_cor(cor, prev=(0.0, 0.0)):
-    """WPILib rebuilds the inverse rows only when the CoR differs from the previous one
-    under Translation2d equality (both components within 1e-9 m means "same")."""
-    if abs(cor[0] - prev[0]) < 1e-9 and abs(cor[1] - prev[1]) < 1e-9:
-        return prev
-    return cor
-
-
 def states_as_xy(states):
     return np.array([[s.velocity * s.angle.getCos(), s.velocity * s.angle.getSin()]
                      for s in states])
@@ -68,7 +60,7 @@ def test_inverse_matches_rigid_body_formula(layout, v, cor):
     states = kin.toSwerveModuleVelocities(cv, Translation2d(*cor))
     assert isinstance(states, tuple) and len(states) == len(layout)
     assert all(type(s) is SwerveModuleVelocity for s in states)
-    expected = module_vectors(layout, *v, cor=effective_cor(cor))
+    expected = module_vectors(layout, *v, cor=S.effective_cor(cor))
     scale = float(np.abs(expected).max(initial=1.0))
     got = states_as_xy(states)
     for i, s in enumerate(states):
@@ -113,7 +105,7 @@ def test_forward_inverse_with_center_of_rotation(layout, v, cor):
     forward kinematics is always solved about the origin."""
     kin = make_kin(layout)
     vx, vy, w = v
-    cor = effective_cor(cor)
+    cor = S.effective_cor(cor)
     speeds = np.hypot(*module_vectors(layout, vx, vy, w, cor).T)
     assume(v == (0.0, 0.0, 0.0) or speeds.min() > 1e-5)
     back = kin.toChassisVelocities(kin.toSwerveModuleVelocities(ChassisVelocities(*v),
@@ -204,7 +196,7 @@ def test_module_on_center_of_rotation_keeps_heading(layout, data, heading, speed
     S.assert_rot_close(after[j].angle, Rotation2d(heading), rel=1e-14)
     # The others move on circles about module j (about the effective CoR, which is the
     # origin when module j is within 1e-9 m of it): perpendicular to r_i − CoR.
-    c = effective_cor(layout[j])
+    c = S.effective_cor(layout[j])
     for i, s in enumerate(after):
         if i == j:
             continue

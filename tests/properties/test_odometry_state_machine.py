@@ -41,7 +41,6 @@ from drivekin import (
 )
 
 TAU = 2.0 * math.pi
-EPS = S.EPS
 REL = 1e-9
 
 MACHINE_SETTINGS = settings(max_examples=40, stateful_step_count=30, deadline=None)
@@ -50,35 +49,8 @@ MACHINE_SETTINGS = settings(max_examples=40, stateful_step_count=30, deadline=No
 # The hand-written model
 
 
-def compose_exp(x, y, th, dx, dy, dth):
-    """pose ∘ exp(twist) in plain math. (1 − cos θ)/θ is written as 2·sin²(θ/2)/θ, which
-    has no cancellation, so the only special case is θ = 0 exactly."""
-    if dth == 0.0:
-        s, c = 1.0, 0.0
-    else:
-        s = math.sin(dth) / dth
-        c = 2.0 * math.sin(0.5 * dth) ** 2 / dth
-    tx, ty = s * dx - c * dy, c * dx + s * dy
-    ct, st_ = math.cos(th), math.sin(th)
-    return x + ct * tx - st_ * ty, y + st_ * tx + ct * ty, th + dth
-
-
-def exp_rounding(dth):
-    """Absolute error (per metre of twist) of WPILib's c = (1 − cos θ)/θ outside its
-    series branch: about min(|θ|, ε/|θ|), at most ~1e-8 near |θ| = 1.5e-8."""
-    a = abs(dth)
-    return 0.0 if a < 1e-9 else min(a, 4 * EPS / a)
-
-
 def wrapped(a):
     return math.remainder(a, TAU)
-
-
-def mecanum_inverse_matrix(points):
-    rows = []
-    for i, (x, y) in enumerate(points):
-        rows.append([1.0, -1.0, -(x + y)] if i in (0, 3) else [1.0, 1.0, x - y])
-    return np.array(rows, dtype=float)
 
 
 # ---------------------------------------------------------------------------------------
@@ -123,12 +95,12 @@ class OdometryMachine(RuleBasedStateMachine):
         dx, dy = self._model_twist(self.wheels, new_wheels)
         dth = wrapped(new_gyro - self.gyro)
         returned = self._update(Rotation2d(new_gyro), new_wheels, data)
-        self.x, self.y, self.th = compose_exp(self.x, self.y, self.th, dx, dy, dth)
+        self.x, self.y, self.th = S.compose_exp(self.x, self.y, self.th, dx, dy, dth)
         self.wheels, self.gyro = new_wheels, new_gyro
         d = math.hypot(dx, dy)
         self.steps += 1
         self.path += d
-        self.allow += exp_rounding(dth) * d
+        self.allow += S.exp_rounding(dth) * d
         self._seen()
         got = self.odo.getPose()
         assert type(returned) is Pose2d
@@ -255,7 +227,7 @@ MECANUM_LAYOUTS = st.one_of(
     st.tuples(st.floats(0.05, 2.0), st.floats(0.05, 2.0)).map(
         lambda ab: [(ab[0], ab[1]), (ab[0], -ab[1]), (-ab[0], ab[1]), (-ab[0], -ab[1])]),
     st.lists(st.tuples(st.floats(-3.0, 3.0), st.floats(-3.0, 3.0)), min_size=4, max_size=4)
-    .filter(lambda pts: np.linalg.cond(mecanum_inverse_matrix(pts)) < 1e4),
+    .filter(lambda pts: np.linalg.cond(S.mecanum_inverse_matrix(pts)) < 1e4),
 )
 
 
@@ -263,7 +235,7 @@ class MecanumOdometryMachine(OdometryMachine):
     @initialize(layout=MECANUM_LAYOUTS, data=st.data(), gyro=GYROS, x=COORDS, y=COORDS,
                 th=HEADINGS)
     def setup(self, layout, data, gyro, x, y, th):
-        self.matrix = mecanum_inverse_matrix(layout)
+        self.matrix = S.mecanum_inverse_matrix(layout)
         self.kin = MecanumDriveKinematics(*[Translation2d(px, py) for px, py in layout])
         wheels = self._draw_absolute(data)
         self.odo = MecanumDriveOdometry(self.kin, Rotation2d(gyro),

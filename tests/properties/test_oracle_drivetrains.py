@@ -61,18 +61,11 @@ except metadata.PackageNotFoundError:  # pragma: no cover - installed some other
 # Conversions and helpers
 
 
-def mecanum_inverse_matrix(points):
-    rows = []
-    for i, (x, y) in enumerate(points):
-        rows.append([1.0, -1.0, -(x + y)] if i in (0, 3) else [1.0, 1.0, x - y])
-    return np.array(rows, dtype=float)
-
-
 RECTANGLES = st.tuples(st.floats(0.05, 2.0), st.floats(0.05, 2.0)).map(
     lambda ab: [(ab[0], ab[1]), (ab[0], -ab[1]), (-ab[0], ab[1]), (-ab[0], -ab[1])])
 RANDOM_LAYOUTS = st.lists(st.tuples(st.floats(-3.0, 3.0), st.floats(-3.0, 3.0)),
                           min_size=4, max_size=4).filter(
-    lambda pts: np.linalg.cond(mecanum_inverse_matrix(pts)) < 1e4)
+    lambda pts: np.linalg.cond(S.mecanum_inverse_matrix(pts)) < 1e4)
 MECANUM_LAYOUTS = st.one_of(RECTANGLES, RANDOM_LAYOUTS)
 TRACKWIDTHS = st.floats(0.05, 5.0, allow_nan=False)
 VELOCITIES = S.chassis_tuples(1e2)
@@ -82,7 +75,7 @@ LIMITS = st.floats(0.0, 2e2, allow_nan=False)
 
 
 def fk_rel(layout):
-    return max(REL, 64 * EPS * np.linalg.cond(mecanum_inverse_matrix(layout)))
+    return max(REL, 64 * EPS * np.linalg.cond(S.mecanum_inverse_matrix(layout)))
 
 
 def mecanum_pair(layout):
@@ -130,7 +123,7 @@ def test_mecanum_to_wheel_speeds(layout, v, cors):
     calls = [None] + list(cors) + [None]
     for cor in calls:
         # Scale: Σ|M_ij|·|v_j| bounds every term of the wheel sums (M about any CoR used).
-        scale = max(float((np.abs(mecanum_inverse_matrix(
+        scale = max(float((np.abs(S.mecanum_inverse_matrix(
             [(x - c[0], y - c[1]) for x, y in layout])) @ np.abs(v)).max())
             for c in [(0.0, 0.0)] + list(cors))
         if cor is None:
@@ -238,13 +231,6 @@ OPS = st.sampled_from(["update", "update", "update", "update", "wrap", "resetPos
                        "resetTranslation", "resetPosition"])
 
 
-def exp_rounding(dth):
-    """Both libraries use WPILib's (1 − cos θ)/θ, whose rounding (≈ ε/|θ| for
-    1e-9 ≤ |θ| ≲ 1e-6) can differ when their θ differ in the last bits."""
-    a = abs(dth)
-    return 0.0 if a < 1e-9 else min(a, 4 * EPS / a)
-
-
 class Swerve:
     def __init__(self, data):
         self.layout = data.draw(S.swerve_layouts(sizes=(2, 3, 4, 6)), label="layout")
@@ -295,7 +281,7 @@ class Mecanum:
     def __init__(self, data):
         self.layout = data.draw(MECANUM_LAYOUTS, label="layout")
         self.kin, self.wkin = mecanum_pair(self.layout)
-        m = mecanum_inverse_matrix(self.layout)
+        m = S.mecanum_inverse_matrix(self.layout)
         self.cond = float(np.linalg.cond(m))
         self.gain = float(np.linalg.norm(np.linalg.pinv(m), 2) * 2.0)
 
@@ -388,7 +374,7 @@ def test_odometry_matches_robotpy(drive_cls, data):
             # |twist| ≤ gain · (largest wheel travel); the path length joins the scale.
             travel = drive.gain * max(abs(a - b) for a, b in zip(np.ravel(new_wheels),
                                                                   np.ravel(wheels)))
-            allow += exp_rounding(math.remainder(new_gyro - gyro, TAU)) * travel
+            allow += S.exp_rounding(math.remainder(new_gyro - gyro, TAU)) * travel
             gyro, wheels = new_gyro, new_wheels
             steps += 1
             mag = max(mag, abs(exp.x), abs(exp.y)) + travel
@@ -412,18 +398,6 @@ def test_odometry_matches_robotpy(drive_cls, data):
 
 # ---------------------------------------------------------------------------------------
 # resetRotation: robotpy 2026's C++ sign bug, and drivekin's correct answer
-
-
-def compose_exp(x, y, th, dx, dy, dth):
-    """pose ∘ exp(twist), plain math (2·sin²(θ/2)/θ has no cancellation)."""
-    if dth == 0.0:
-        s, c = 1.0, 0.0
-    else:
-        s = math.sin(dth) / dth
-        c = 2.0 * math.sin(0.5 * dth) ** 2 / dth
-    tx, ty = s * dx - c * dy, c * dx + s * dy
-    return (x + math.cos(th) * tx - math.sin(th) * ty,
-            y + math.sin(th) * tx + math.cos(th) * ty, th + dth)
 
 
 @pytest.mark.parametrize("drive_cls", [Swerve, Mecanum, Differential],
@@ -457,7 +431,7 @@ def test_reset_rotation_robotpy_2026_bug(drive_cls, data, g0, h, rot, t2):
     if drive_cls is Differential:
         dx, dy = ((new_wheels[0] - wheels[0]) + (new_wheels[1] - wheels[1])) / 2.0, 0.0
     elif drive_cls is Mecanum:
-        sol = np.linalg.lstsq(mecanum_inverse_matrix(drive.layout),
+        sol = np.linalg.lstsq(S.mecanum_inverse_matrix(drive.layout),
                               np.subtract(new_wheels, wheels), rcond=None)[0]
         dx, dy = float(sol[0]), float(sol[1])
     else:
@@ -468,7 +442,7 @@ def test_reset_rotation_robotpy_2026_bug(drive_cls, data, g0, h, rot, t2):
                               rcond=None)[0]
         dx, dy = float(sol[0]), float(sol[1])
     dth = math.remainder((g0 + h + t2) - (g0 + h), TAU)
-    ex, ey, eth = compose_exp(0.0, 0.0, rot, dx, dy, dth)
+    ex, ey, eth = S.compose_exp(0.0, 0.0, rot, dx, dy, dth)
     scale = max(1.0, math.hypot(dx, dy))
     rel = max(REL, 64 * EPS * drive.cond)
     S.assert_close(got.getX(), ex, scale, rel=rel, what="drivekin x")

@@ -31,15 +31,9 @@ from drivekin import (
     DifferentialDriveWheelVelocities,
     MecanumDriveWheelPositions,
 )
+from wpilib_port import assert_close
 
-EPS = 1e-9  # WPILib kEpsilon
 TRACKWIDTH = 0.381 * 2
-
-
-def assert_close(expected, actual, tol=EPS):
-    """JUnit assertEquals(expected, actual, delta): |expected - actual| <= delta."""
-    assert math.isclose(actual, expected, rel_tol=0.0, abs_tol=tol), (
-        f"expected {expected!r}, got {actual!r} (|diff| = {abs(actual - expected)!r} > {tol!r})")
 
 
 def lr(w):

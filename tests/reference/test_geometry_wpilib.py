@@ -19,14 +19,7 @@ import math
 import numpy as np
 
 from drivekin import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
-
-EPS = 1e-9  # WPILib kEpsilon
-
-
-def assert_close(expected, actual, tol=EPS):
-    """JUnit assertEquals(expected, actual, delta): |expected - actual| <= delta."""
-    assert math.isclose(actual, expected, rel_tol=0.0, abs_tol=tol), (
-        f"expected {expected!r}, got {actual!r} (|diff| = {abs(actual - expected)!r} > {tol!r})")
+from wpilib_port import assert_close
 
 
 # =========================================================================================

@@ -33,20 +33,7 @@ from drivekin import (
     MecanumDriveWheelVelocities,
     Translation2d,
 )
-
-EPS = 1e-9  # WPILib kEpsilon
-
-FL = Translation2d(12, 12)
-FR = Translation2d(12, -12)
-BL = Translation2d(-12, 12)
-BR = Translation2d(-12, -12)
-WHEELS = (FL, FR, BL, BR)
-
-
-def assert_close(expected, actual, tol=EPS):
-    """JUnit assertEquals(expected, actual, delta): |expected - actual| <= delta."""
-    assert math.isclose(actual, expected, rel_tol=0.0, abs_tol=tol), (
-        f"expected {expected!r}, got {actual!r} (|diff| = {abs(actual - expected)!r} > {tol!r})")
+from wpilib_port import BL, BR, EPS, FL, FR, WHEELS, assert_close
 
 
 def assert_wheels(expected, wheels, tol=EPS):

@@ -38,19 +38,7 @@ from drivekin import (
     SwerveModulePosition,
     Translation2d,
 )
-
-EPS = 1e-9  # WPILib kEpsilon
-
-FL = Translation2d(12, 12)
-FR = Translation2d(12, -12)
-BL = Translation2d(-12, 12)
-BR = Translation2d(-12, -12)
-
-
-def assert_close(expected, actual, tol=EPS):
-    """JUnit assertEquals(expected, actual, delta): |expected - actual| <= delta."""
-    assert math.isclose(actual, expected, rel_tol=0.0, abs_tol=tol), (
-        f"expected {expected!r}, got {actual!r} (|diff| = {abs(actual - expected)!r} > {tol!r})")
+from wpilib_port import BL, BR, EPS, FL, FR, assert_close
 
 
 def assert_pose(expected, pose, tol=EPS):
@@ -154,82 +142,24 @@ class TestMecanumDriveOdometry:
         assert_close(0.0, pose.getRotation().getRadians(), 0.1)
 
     def test_accuracy_facing_trajectory(self):
-        generate = trajectory_generator()
-        kinematics = MecanumDriveKinematics(Translation2d(1, 1), Translation2d(1, -1),
-                                            Translation2d(-1, -1), Translation2d(-1, 1))
-        positions = MecanumDriveWheelPositions()
-        odometry = MecanumDriveOdometry(kinematics, Rotation2d.kZero, positions, Pose2d.kZero)
-        trajectory = generate(MECANUM_WAYPOINTS, 0.5, 2.0)
-        rand = JavaRandom(5190)
-        dt, t = 0.02, 0.0
-        max_error, error_sum = -math.inf, 0.0
-        odometry_distance, trajectory_distance = 0.0, 0.0
-        duration = trajectory.totalTime()
-        while t <= duration:
-            truth = trajectory.sample(t)
-            trajectory_distance += truth.velocity * dt + 0.5 * truth.acceleration * dt * dt
-            wheels = kinematics.toWheelVelocities(
-                ChassisVelocities(truth.velocity, 0, truth.velocity * truth.curvature))
-            wheels.frontLeft += rand.next_gaussian() * 0.1
-            wheels.frontRight += rand.next_gaussian() * 0.1
-            wheels.rearLeft += rand.next_gaussian() * 0.1
-            wheels.rearRight += rand.next_gaussian() * 0.1
-            positions.frontLeft += wheels.frontLeft * dt
-            positions.frontRight += wheels.frontRight * dt
-            positions.rearLeft += wheels.rearLeft * dt
-            positions.rearRight += wheels.rearRight * dt
-            last_pose = odometry.getPose()
-            truth_rotation = Rotation2d(truth.pose.rotation().radians())
-            x_hat = odometry.update(
-                truth_rotation.plus(Rotation2d(rand.next_gaussian() * 0.05)), positions)
-            odometry_distance += last_pose.getTranslation().getDistance(x_hat.getTranslation())
-            error = Translation2d(truth.pose.X(), truth.pose.Y()).getDistance(
-                x_hat.getTranslation())
-            max_error = max(max_error, error)
-            error_sum += error
-            t += dt
-        assert_close(0.0, error_sum / (duration / dt), 0.35)  # "Incorrect mean error"
+        mean_error, max_error, distance_ratio = mecanum_accuracy(
+            lambda truth: ChassisVelocities(truth.velocity, 0, truth.velocity * truth.curvature),
+            lambda truth, noise: Rotation2d(truth.pose.rotation().radians()).plus(noise))
+        assert_close(0.0, mean_error, 0.35)  # "Incorrect mean error"
         assert_close(0.0, max_error, 0.35)  # "Incorrect max error"
-        assert_close(1.0, odometry_distance / trajectory_distance, 0.05)  # distance travelled
+        assert_close(1.0, distance_ratio, 0.05)  # distance travelled
 
     def test_accuracy_facing_x_axis(self):
-        generate = trajectory_generator()
-        kinematics = MecanumDriveKinematics(Translation2d(1, 1), Translation2d(1, -1),
-                                            Translation2d(-1, -1), Translation2d(-1, 1))
-        positions = MecanumDriveWheelPositions()
-        odometry = MecanumDriveOdometry(kinematics, Rotation2d.kZero, positions, Pose2d.kZero)
-        trajectory = generate(MECANUM_WAYPOINTS, 0.5, 2.0)
-        rand = JavaRandom(5190)
-        dt, t = 0.02, 0.0
-        max_error, error_sum = -math.inf, 0.0
-        odometry_distance, trajectory_distance = 0.0, 0.0
-        duration = trajectory.totalTime()
-        while t <= duration:
-            truth = trajectory.sample(t)
-            trajectory_distance += truth.velocity * dt + 0.5 * truth.acceleration * dt * dt
+        def velocities(truth):
             heading = truth.pose.rotation().radians()
-            wheels = kinematics.toWheelVelocities(
-                ChassisVelocities(truth.velocity * math.cos(heading),
-                                  truth.velocity * math.sin(heading), 0))
-            wheels.frontLeft += rand.next_gaussian() * 0.1
-            wheels.frontRight += rand.next_gaussian() * 0.1
-            wheels.rearLeft += rand.next_gaussian() * 0.1
-            wheels.rearRight += rand.next_gaussian() * 0.1
-            positions.frontLeft += wheels.frontLeft * dt
-            positions.frontRight += wheels.frontRight * dt
-            positions.rearLeft += wheels.rearLeft * dt
-            positions.rearRight += wheels.rearRight * dt
-            last_pose = odometry.getPose()
-            x_hat = odometry.update(Rotation2d(rand.next_gaussian() * 0.05), positions)
-            odometry_distance += last_pose.getTranslation().getDistance(x_hat.getTranslation())
-            error = Translation2d(truth.pose.X(), truth.pose.Y()).getDistance(
-                x_hat.getTranslation())
-            max_error = max(max_error, error)
-            error_sum += error
-            t += dt
-        assert_close(0.0, error_sum / (duration / dt), 0.15)  # "Incorrect mean error"
+            return ChassisVelocities(truth.velocity * math.cos(heading),
+                                     truth.velocity * math.sin(heading), 0)
+
+        mean_error, max_error, distance_ratio = mecanum_accuracy(
+            velocities, lambda truth, noise: noise)
+        assert_close(0.0, mean_error, 0.15)  # "Incorrect mean error"
         assert_close(0.0, max_error, 0.3)  # "Incorrect max error"
-        assert_close(1.0, odometry_distance / trajectory_distance, 0.05)  # distance travelled
+        assert_close(1.0, distance_ratio, 0.05)  # distance travelled
 
 
 # =========================================================================================
@@ -306,75 +236,39 @@ class TestSwerveDriveOdometry:
         assert_close(90.0, new.getRotation().getDegrees(), 0.1)
 
     def test_accuracy_facing_trajectory(self):
-        generate = trajectory_generator()
-        kinematics = SwerveDriveKinematics(Translation2d(1, 1), Translation2d(1, -1),
-                                           Translation2d(-1, -1), Translation2d(-1, 1))
-        odometry = SwerveDriveOdometry(kinematics, Rotation2d.kZero, zeros4())
-        fl, fr, bl, br = zeros4()
-        trajectory = generate(SWERVE_WAYPOINTS, 0.5, 2.0)
-        rand = JavaRandom(4915)
-        dt, t = 0.02, 0.0
-        max_error, error_sum = -math.inf, 0.0
-        duration = trajectory.totalTime()
-        while t <= duration:
-            truth = trajectory.sample(t)
+        def step(truth, rand, kinematics, modules):
             module_velocities = kinematics.toSwerveModuleVelocities(
                 ChassisVelocities(truth.velocity, 0.0, truth.velocity * truth.curvature))
             for mv in module_velocities:
                 mv.angle = mv.angle.plus(Rotation2d(rand.next_gaussian() * 0.005))
                 mv.velocity += rand.next_gaussian() * 0.1
-            fl.distance += module_velocities[0].velocity * dt
-            fr.distance += module_velocities[1].velocity * dt
-            bl.distance += module_velocities[2].velocity * dt
-            br.distance += module_velocities[3].velocity * dt
-            fl.angle = module_velocities[0].angle
-            fr.angle = module_velocities[1].angle
-            bl.angle = module_velocities[2].angle
-            br.angle = module_velocities[3].angle
+            for m, mv in zip(modules, module_velocities):
+                m.distance += mv.velocity * DT
+                m.angle = mv.angle
             truth_rotation = Rotation2d(truth.pose.rotation().radians())
-            x_hat = odometry.update(
-                truth_rotation.plus(Rotation2d(rand.next_gaussian() * 0.05)), [fl, fr, bl, br])
-            error = Translation2d(truth.pose.X(), truth.pose.Y()).getDistance(
-                x_hat.getTranslation())
-            max_error = max(max_error, error)
-            error_sum += error
-            t += dt
-        final = odometry.getPose()
+            return truth_rotation.plus(Rotation2d(rand.next_gaussian() * 0.05))
+
+        final, mean_error, max_error = swerve_accuracy(step)
         assert_close(0.0, final.getX(), 1e-1)  # "Incorrect Final X"
         assert_close(0.0, final.getY(), 1e-1)  # "Incorrect Final Y"
         assert_close(math.pi / 4, final.getRotation().getRadians(), 10 * math.pi / 180)
-        assert_close(0.0, error_sum / (duration / dt), 0.05)  # "Incorrect mean error"
+        assert_close(0.0, mean_error, 0.05)  # "Incorrect mean error"
         assert_close(0.0, max_error, 0.125)  # "Incorrect max error"
 
     def test_accuracy_facing_x_axis(self):
-        generate = trajectory_generator()
-        kinematics = SwerveDriveKinematics(Translation2d(1, 1), Translation2d(1, -1),
-                                           Translation2d(-1, -1), Translation2d(-1, 1))
-        odometry = SwerveDriveOdometry(kinematics, Rotation2d.kZero, zeros4())
-        fl, fr, bl, br = zeros4()
-        trajectory = generate(SWERVE_WAYPOINTS, 0.5, 2.0)
-        rand = JavaRandom(4915)
-        dt, t = 0.02, 0.0
-        max_error, error_sum = -math.inf, 0.0
-        duration = trajectory.totalTime()
-        while t <= duration:
-            truth = trajectory.sample(t)
-            travelled = truth.velocity * dt + 0.5 * truth.acceleration * dt * dt
+        def step(truth, rand, kinematics, modules):
+            travelled = truth.velocity * DT + 0.5 * truth.acceleration * DT * DT
             heading = Rotation2d(truth.pose.rotation().radians())
-            for m in (fl, fr, bl, br):
+            for m in modules:
                 m.distance += travelled
                 m.angle = heading
-            x_hat = odometry.update(Rotation2d(rand.next_gaussian() * 0.05), [fl, fr, bl, br])
-            error = Translation2d(truth.pose.X(), truth.pose.Y()).getDistance(
-                x_hat.getTranslation())
-            max_error = max(max_error, error)
-            error_sum += error
-            t += dt
-        final = odometry.getPose()
+            return Rotation2d(rand.next_gaussian() * 0.05)
+
+        final, mean_error, max_error = swerve_accuracy(step)
         assert_close(0.0, final.getX(), 1e-1)  # "Incorrect Final X"
         assert_close(0.0, final.getY(), 1e-1)  # "Incorrect Final Y"
         assert_close(0.0, final.getRotation().getRadians(), 10 * math.pi / 180)
-        assert_close(0.0, error_sum / (duration / dt), 0.06)  # "Incorrect max error" (sic)
+        assert_close(0.0, mean_error, 0.06)  # "Incorrect max error" (sic)
         assert_close(0.0, max_error, 0.125)  # "Incorrect max error"
 
 
@@ -383,6 +277,75 @@ MECANUM_WAYPOINTS = [(0, 0, 0.0), (20, 20, 0.0), (10, 10, math.pi), (30, 30, 0.0
                      (20, 20, math.pi), (10, 10, 0.0)]
 SWERVE_WAYPOINTS = [(0, 0, math.radians(45)), (3, 0, -math.pi / 2), (0, 0, math.radians(135)),
                     (-3, 0, -math.pi / 2), (0, 0, math.radians(45))]
+
+
+DT = 0.02  # s, the accuracy tests' time step
+
+
+def drive_along(odometry, waypoints, seed, step):
+    """The accuracy tests' loop. Follows the trajectory through ``waypoints`` (max 0.5 m/s,
+    2 m/s²) in steps of DT; at each step ``step(truth, rand)`` (``rand`` = JavaRandom(seed))
+    advances the simulated wheel positions and returns ``(gyro, positions)`` for
+    ``odometry.update``. Returns (mean error, max error, odometry distance / trajectory
+    distance), an error being the distance of the odometry pose from the true position."""
+    trajectory = trajectory_generator()(waypoints, 0.5, 2.0)
+    rand = JavaRandom(seed)
+    t = 0.0
+    max_error, error_sum = -math.inf, 0.0
+    odometry_distance, trajectory_distance = 0.0, 0.0
+    duration = trajectory.totalTime()
+    while t <= duration:
+        truth = trajectory.sample(t)
+        trajectory_distance += truth.velocity * DT + 0.5 * truth.acceleration * DT * DT
+        gyro, positions = step(truth, rand)
+        last_pose = odometry.getPose()
+        x_hat = odometry.update(gyro, positions)
+        odometry_distance += last_pose.getTranslation().getDistance(x_hat.getTranslation())
+        error = Translation2d(truth.pose.X(), truth.pose.Y()).getDistance(
+            x_hat.getTranslation())
+        max_error = max(max_error, error)
+        error_sum += error
+        t += DT
+    return error_sum / (duration / DT), max_error, odometry_distance / trajectory_distance
+
+
+def mecanum_accuracy(velocities, gyro):
+    """MecanumDriveOdometryTest's accuracy run: wheels at (±1, ±1) m, wheel velocities of
+    ``velocities(truth)`` plus N(0, 0.1) noise integrated into the wheel positions, gyro
+    reading ``gyro(truth, noise)`` with noise = Rotation2d(N(0, 0.05)). Returns
+    :func:`drive_along`'s numbers."""
+    kinematics = MecanumDriveKinematics(Translation2d(1, 1), Translation2d(1, -1),
+                                        Translation2d(-1, -1), Translation2d(-1, 1))
+    positions = MecanumDriveWheelPositions()
+    odometry = MecanumDriveOdometry(kinematics, Rotation2d.kZero, positions, Pose2d.kZero)
+
+    def step(truth, rand):
+        wheels = kinematics.toWheelVelocities(velocities(truth))
+        wheels.frontLeft += rand.next_gaussian() * 0.1
+        wheels.frontRight += rand.next_gaussian() * 0.1
+        wheels.rearLeft += rand.next_gaussian() * 0.1
+        wheels.rearRight += rand.next_gaussian() * 0.1
+        positions.frontLeft += wheels.frontLeft * DT
+        positions.frontRight += wheels.frontRight * DT
+        positions.rearLeft += wheels.rearLeft * DT
+        positions.rearRight += wheels.rearRight * DT
+        return gyro(truth, Rotation2d(rand.next_gaussian() * 0.05)), positions
+
+    return drive_along(odometry, MECANUM_WAYPOINTS, 5190, step)
+
+
+def swerve_accuracy(step):
+    """SwerveDriveOdometryTest's accuracy run: modules at (±1, ±1) m; ``step(truth, rand,
+    kinematics, modules)`` moves the four SwerveModulePosition ``modules`` and returns the
+    gyro reading. Returns (final pose, mean error, max error)."""
+    kinematics = SwerveDriveKinematics(Translation2d(1, 1), Translation2d(1, -1),
+                                       Translation2d(-1, -1), Translation2d(-1, 1))
+    odometry = SwerveDriveOdometry(kinematics, Rotation2d.kZero, zeros4())
+    modules = zeros4()
+    mean_error, max_error, _ = drive_along(
+        odometry, SWERVE_WAYPOINTS, 4915,
+        lambda truth, rand: (step(truth, rand, kinematics, modules), modules))
+    return odometry.getPose(), mean_error, max_error
 
 
 def trajectory_generator():
