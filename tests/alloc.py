@@ -14,7 +14,9 @@ Then start tracemalloc and run the body ``calls`` times with the cyclic GC disab
   through Python's allocators (objects, PyMem_Malloc buffers, numpy's data via PyDataMem
   with tracemalloc hooks) pushes it up, even when it is freed again within the same call;
 * the traced size must not have grown at the end (nothing kept);
-* ``gc.get_count()[0]`` (GC-tracked allocations minus deallocations) must not grow.
+* ``gc.get_count()[0]`` (GC-tracked allocations minus deallocations) must not grow;
+* in a second pass, drivekin's allocator hooks (``drivekin._alloccount``) must count zero
+  malloc/calloc/realloc calls in the RAW, MEM and OBJ domains.
 
 Objects drawn from a freelist (drivekin's Cython freelists, CPython's float and tuple
 freelists) are not allocator calls; that is how ``pose = odo.update(...)`` stays free.
@@ -83,6 +85,31 @@ def measure_loop(loop, calls=CALLS, warmup=WARMUP):
     return peak - start, current - start, gc1 - gc0
 
 
+def count_allocator_calls(loop, calls=CALLS, warmup=WARMUP):
+    """Exact number of PyMem/PyObject malloc/calloc/realloc calls made by ``loop(it)``
+    over ``calls`` items, counted by drivekin's allocator hooks (``_alloccount``) after
+    the same warm-ups as :func:`measure_loop`. tracemalloc sees bytes; this sees calls,
+    so a block freed and reallocated within one iteration cannot hide."""
+    from drivekin._alloccount import AllocationCounter
+
+    loop(itertools.repeat(None, warmup))
+    it = itertools.repeat(None, calls)
+    counter = AllocationCounter()
+    on, off = counter.__enter__, counter.__exit__     # bound before counting starts
+    enabled = gc.isenabled()
+    gc.collect()
+    gc.disable()
+    try:
+        loop(itertools.repeat(None, warmup))
+        on()
+        loop(it)
+        off(None, None, None)
+    finally:
+        if enabled:
+            gc.enable()
+    return counter.calls
+
+
 def measure(fn, calls=CALLS, warmup=WARMUP):
     """:func:`measure_loop` for the body ``fn()`` (one call per iteration)."""
     return measure_loop(calls_of(fn), calls, warmup)
@@ -95,6 +122,8 @@ def assert_no_allocations(loop, what, calls=CALLS):
         f"{what}: over {calls} iterations traced memory peaked {peak} B above the start, "
         f"{current} B were still allocated at the end, {gc_growth} GC-tracked objects were "
         "created and not freed")
+    n = count_allocator_calls(loop, calls)
+    assert n == 0, f"{what}: {n} allocator calls over {calls} iterations"
 
 
 def assert_allocation_free(fn, what=None):

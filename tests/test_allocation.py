@@ -13,7 +13,8 @@ import itertools
 import numpy as np
 import pytest
 
-from alloc import assert_allocation_free, assert_no_allocations, measure, measure_loop
+from alloc import (assert_allocation_free, assert_no_allocations, calls_of, count_allocator_calls,
+                   measure, measure_loop)
 from drivekin import (
     ChassisVelocities,
     Pose2d,
@@ -31,6 +32,13 @@ from drivekin import (
 
 def test_harness_baseline_is_zero():
     assert measure(lambda: None) == (0, 0, 0)
+    assert count_allocator_calls(calls_of(lambda: None)) == 0
+
+
+def test_allocator_call_counter_sees_every_call():
+    # The list object itself comes from CPython's list freelist; its item array is a real
+    # PyMem allocation on every call, freed again at once.
+    assert count_allocator_calls(calls_of(lambda: [0.5, 1.5]), calls=1000) >= 1000
 
 
 def test_harness_detects_transient_allocation():
