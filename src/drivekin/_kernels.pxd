@@ -3,7 +3,7 @@
 # Output parameters come last and are marked OUT. Formulas follow WPILib 2027
 # (see ../shared/reference/wpilib-kinematics.md); the comments say where they are subtle.
 
-from libc.math cimport M_PI, atan2, cos, fabs, hypot, sin, sqrt
+from libc.math cimport atan2, cos, fabs, hypot, sin, sqrt
 from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 
 # ---------------------------------------------------------------------------------------
@@ -39,10 +39,10 @@ cdef inline double fhypot(double x, double y) noexcept nogil:
 # ---------------------------------------------------------------------------------------
 # Rotation2d
 
-cdef inline rot2_t rot_xy(double x, double y) noexcept nogil:
-    # Rotation2d(x, y): normalise; a vector shorter than 1e-6 (or NaN) gives the identity.
+cdef inline rot2_t rot_scaled(double x, double y, double m) noexcept nogil:
+    # (x, y) / m with m = |(x, y)|; a vector shorter than 1e-6 (or NaN) gives the identity,
+    # as the Rotation2d(x, y) constructor does.
     cdef rot2_t r
-    cdef double m = hypot(x, y)
     if m > 1e-6:
         r.c = x / m
         r.s = y / m
@@ -51,19 +51,14 @@ cdef inline rot2_t rot_xy(double x, double y) noexcept nogil:
         r.s = 0.0
     return r
 
+cdef inline rot2_t rot_xy(double x, double y) noexcept nogil:
+    # Rotation2d(x, y) for arbitrary (user) vectors.
+    return rot_scaled(x, y, hypot(x, y))
+
 cdef inline rot2_t rot_unit(double x, double y) noexcept nogil:
-    # rot_xy for vectors that are unit length up to rounding (products of rotations):
-    # the same result, but sqrt(x² + y²) is inlined where libm hypot is a call that
-    # guards against overflow these inputs cannot reach.
-    cdef rot2_t r
-    cdef double m = sqrt(x * x + y * y)
-    if m > 1e-6:
-        r.c = x / m
-        r.s = y / m
-    else:
-        r.c = 1.0
-        r.s = 0.0
-    return r
+    # Re-normalising products of rotations (unit length up to rounding): sqrt(x² + y²)
+    # inlines where libm hypot is a call guarding against overflow these cannot reach.
+    return rot_scaled(x, y, sqrt(x * x + y * y))
 
 cdef inline rot2_t rot_rad(double theta) noexcept nogil:
     cdef rot2_t r
