@@ -14,7 +14,7 @@ from cpython.ref cimport Py_INCREF, PyObject
 from cpython.sequence cimport PySequence_Fast, PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
-from libc.math cimport M_PI, atan2, cos, fabs, signbit, sin
+from libc.math cimport M_PI, atan2, cos, fabs, isfinite, signbit, sin
 
 import numpy as np
 
@@ -658,6 +658,8 @@ cdef class SwerveDriveKinematics:
         for i, t in enumerate(mods):
             if not isinstance(t, Translation2d):
                 raise TypeError(f"module {i} must be a Translation2d, got {type(t).__name__}")
+            if not (isfinite((<Translation2d>t).v.x) and isfinite((<Translation2d>t).v.y)):
+                raise ValueError(f"module {i} position must be finite (m), got {t!r}")
         if self.buf != NULL:
             raise RuntimeError("SwerveDriveKinematics is already initialised")
         self.buf = <double*>PyMem_Malloc(sizeof(double) * (9 * n + 14 * n))

@@ -5,6 +5,7 @@ rear left, rear right. For a wheel at (x, y) relative to the centre of rotation 
 inverse rows are FL/RR ``[1, −1, −(x + y)]`` and FR/RL ``[1, 1, x − y]``.
 """
 cimport cython
+from libc.math cimport isfinite
 
 import numpy as np
 
@@ -169,6 +170,8 @@ cdef class MecanumDriveKinematics:
         for i in range(4):
             self.wx[i] = (<Translation2d>self.wheels[i]).v.x
             self.wy[i] = (<Translation2d>self.wheels[i]).v.y
+            if not (isfinite(self.wx[i]) and isfinite(self.wy[i])):
+                raise ValueError(f"wheel {i} position must be finite (m), got {self.wheels[i]!r}")
         # Force the first build, then keep the pseudo-inverse of the CoR = 0 matrix
         # (numpy's SVD pinv, as WPILib Java's EJML; built once, so its cost is irrelevant).
         self.cor = vec(float("nan"), 0.0)

@@ -377,3 +377,14 @@ def test_misuse_does_not_crash_the_interpreter():
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                        timeout=120)
     assert r.returncode == 0 and "survived" in r.stdout, (r.returncode, r.stderr[-2000:])
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf"), -float("inf")])
+def test_non_finite_module_positions_are_rejected(bad):
+    # A non-finite layout has no pseudo-inverse; say so instead of failing inside numpy.
+    from drivekin import MecanumDriveKinematics, SwerveDriveKinematics, Translation2d
+    with raises(ValueError, "finite"):
+        SwerveDriveKinematics(Translation2d(0.3, bad), Translation2d(-0.3, 0.3))
+    with raises(ValueError, "finite"):
+        MecanumDriveKinematics(Translation2d(bad, 0.3), Translation2d(0.3, -0.3),
+                               Translation2d(-0.3, 0.3), Translation2d(-0.3, -0.3))
