@@ -662,7 +662,8 @@ cdef class SwerveDriveKinematics:
                 raise ValueError(f"module {i} position must be finite (m), got {t!r}")
         if self.buf != NULL:
             raise RuntimeError("SwerveDriveKinematics is already initialised")
-        self.buf = <double*>PyMem_Malloc(sizeof(double) * (9 * n + 14 * n))
+        # 9 arrays of n (positions, CoR rows, headings, scratch) + f1 (3 x 2n) + f2 (4 x 2n)
+        self.buf = <double*>PyMem_Malloc(sizeof(double) * (9 * n + 6 * n + 8 * n))
         if self.buf == NULL:
             raise MemoryError()
         self.n = n
