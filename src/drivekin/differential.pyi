@@ -39,11 +39,11 @@ class DifferentialDriveWheelVelocities:
 
     @right.setter
     def right(self, value: float) -> None: ...
-    def desaturate(self, attainableMaxSpeed: float) -> DifferentialDriveWheelVelocities:
+    def desaturate(self, attainableMaxSpeed: float, /) -> DifferentialDriveWheelVelocities:
         """Return new velocities scaled so neither wheel exceeds ``attainableMaxSpeed``
         (m/s), keeping their ratio; unchanged copy if already within it (2027)."""
 
-    def desaturateInPlace(self, attainableMaxSpeed: float) -> None:
+    def desaturateInPlace(self, attainableMaxSpeed: float, /) -> None:
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
 
     def interpolate(

@@ -59,6 +59,7 @@ cdef class DifferentialDriveWheelVelocities(_Wheel2):
     cdef _WheelValues _new(self):
         return init2(DifferentialDriveWheelVelocities.__new__(DifferentialDriveWheelVelocities), 0.0, 0.0)
 
+    @cython.always_allow_keywords(False)   # METH_O: the 1-argument fast call (~3 ns)
     def desaturate(self, double attainableMaxSpeed):
         """Return new velocities scaled so neither wheel exceeds ``attainableMaxSpeed``
         (m/s), keeping their ratio; unchanged copy if already within it (2027)."""
@@ -66,6 +67,7 @@ cdef class DifferentialDriveWheelVelocities(_Wheel2):
         wheels_desaturate(2, self.w, attainableMaxSpeed, out.w)
         return out
 
+    @cython.always_allow_keywords(False)
     def desaturateInPlace(self, double attainableMaxSpeed):
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
         wheels_desaturate(2, self.w, attainableMaxSpeed, self.w)

@@ -58,11 +58,11 @@ class MecanumDriveWheelVelocities:
 
     @rearRight.setter
     def rearRight(self, value: float) -> None: ...
-    def desaturate(self, attainableMaxSpeed: float) -> MecanumDriveWheelVelocities:
+    def desaturate(self, attainableMaxSpeed: float, /) -> MecanumDriveWheelVelocities:
         """Return new velocities scaled so no wheel exceeds ``attainableMaxSpeed`` (m/s),
         keeping their ratios; an unchanged copy if already within it (2027)."""
 
-    def desaturateInPlace(self, attainableMaxSpeed: float) -> None:
+    def desaturateInPlace(self, attainableMaxSpeed: float, /) -> None:
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
 
     def interpolate(

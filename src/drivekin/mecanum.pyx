@@ -86,6 +86,7 @@ cdef class MecanumDriveWheelVelocities(_Wheel4):
     cdef _WheelValues _new(self):
         return blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
 
+    @cython.always_allow_keywords(False)   # METH_O: the 1-argument fast call (~3 ns)
     def desaturate(self, double attainableMaxSpeed):
         """Return new velocities scaled so no wheel exceeds ``attainableMaxSpeed`` (m/s),
         keeping their ratios; an unchanged copy if already within it (2027)."""
@@ -93,6 +94,7 @@ cdef class MecanumDriveWheelVelocities(_Wheel4):
         wheels_desaturate(4, self.w, attainableMaxSpeed, out.w)
         return out
 
+    @cython.always_allow_keywords(False)
     def desaturateInPlace(self, double attainableMaxSpeed):
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
         wheels_desaturate(4, self.w, attainableMaxSpeed, self.w)
