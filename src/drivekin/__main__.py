@@ -85,10 +85,6 @@ _cos = math.cos
 _hypot = math.hypot
 _from_radians = Rotation2d.fromRadians
 _desaturate_in_place = SwerveDriveKinematics.desaturateWheelVelocitiesInPlace
-# Newer builds optimize and cosine-scale a module target in place; older ones only have the
-# forms that return a new object. The swerve module model uses whichever is there.
-_IN_PLACE_MODULE_OPS = (hasattr(SwerveModuleVelocity, "optimizeInPlace")
-                        and hasattr(SwerveModuleVelocity, "cosineScaleInPlace"))
 
 # Hot-path rule for everything below: no Python ``for`` loops (list/tuple/range iterators
 # are heap objects), no new attributes (``__slots__``), no ints above 256 (small ints are
@@ -274,21 +270,13 @@ class SwerveModuleSim:
         position.distance = position.distance + v * DT
         position.angle = angle
 
-    def _update_in_place(self) -> None:
+    def update(self) -> None:
         target = self.target          # rewritten by inverse kinematics every step
         current = self.state.angle                    # Rotation2d (freelist)
         target.optimizeInPlace(current)
         angle = self._steer(current, target.angle)
         target.cosineScaleInPlace(angle)
         self._drive(target.velocity, angle)
-
-    def _update_returning(self) -> None:
-        current = self.state.angle                    # Rotation2d (freelist)
-        desired = self.target.optimize(current)       # new object (freelist)
-        angle = self._steer(current, desired.angle)
-        self._drive(desired.cosineScale(angle).velocity, angle)
-
-    update = _update_in_place if _IN_PLACE_MODULE_OPS else _update_returning
 
 
 class SwerveDrive(Drivetrain):
@@ -298,11 +286,9 @@ class SwerveDrive(Drivetrain):
     name = "swerve"
     ODOMETRY = SwerveDriveOdometry
     INPUT = "field-relative joystick"
-    _IP = "InPlace" if _IN_PLACE_MODULE_OPS else ""
     CHAIN = ("toRobotRelativeInto → discretizeInto → toSwerveModuleVelocitiesInto →",
-             f"desaturateWheelVelocitiesInPlace → module model: optimize{_IP}, steering limit,",
-             f"cosineScale{_IP}, wheel lag → SwerveDriveOdometry.update(gyro, positions)")
-    del _IP
+             "desaturateWheelVelocitiesInPlace → module model: optimizeInPlace, steering limit,",
+             "cosineScaleInPlace, wheel lag → SwerveDriveOdometry.update(gyro, positions)")
     HALF_TRACK = 0.3        # m, module offset from the robot centre in x and y
     WHEEL_TAU = 0.05        # s, wheel-speed time constant
     STEER_RATE = 4.0 * math.pi   # rad/s, steering rate limit
