@@ -6,4 +6,4 @@ cdef class _WheelValues:
     cdef _WheelValues _check(self, object other)
     cdef _WheelValues _lerp(self, _WheelValues end, double t)
     cdef bint _close(self, _WheelValues o) noexcept
-    cdef str _fmt(self, str name, tuple labels, str unit)
+    cdef str _fmt(self, tuple labels, str unit)

@@ -32,8 +32,9 @@ cdef class _WheelValues:
                 return False
         return True
 
-    cdef str _fmt(self, str name, tuple labels, str unit):
-        return f"{name}({', '.join(f'{lab}: {f2(self.w[i])} {unit}' for i, lab in enumerate(labels))})"
+    cdef str _fmt(self, tuple labels, str unit):
+        fields = ", ".join(f"{lab}: {f2(self.w[i])} {unit}" for i, lab in enumerate(labels))
+        return f"{type(self).__name__}({fields})"
 
     def plus(self, other):
         """Return the wheel-by-wheel sum."""

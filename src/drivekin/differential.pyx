@@ -77,7 +77,7 @@ cdef class DifferentialDriveWheelVelocities(_Wheel2):
         return self._lerp(endValue, clamp01(t))
 
     def __str__(self):
-        return self._fmt("DifferentialDriveWheelVelocities", ("Left", "Right"), "m/s")
+        return self._fmt(("Left", "Right"), "m/s")
 
 
 cdef class DifferentialDriveWheelPositions(_Wheel2):
@@ -110,7 +110,7 @@ cdef class DifferentialDriveWheelPositions(_Wheel2):
 
     def __str__(self):
         # WPILib's toString lacks the closing parenthesis; drivekin closes it.
-        return self._fmt("DifferentialDriveWheelPositions", ("Left", "Right"), "m")
+        return self._fmt(("Left", "Right"), "m")
 
 
 cdef class DifferentialDriveWheelAccelerations(_Wheel2):
@@ -127,7 +127,7 @@ cdef class DifferentialDriveWheelAccelerations(_Wheel2):
         return self._lerp(endValue, clamp01(t))
 
     def __str__(self):
-        return self._fmt("DifferentialDriveWheelAccelerations", ("Left", "Right"), "m/s²")
+        return self._fmt(("Left", "Right"), "m/s²")
 
 
 cdef inline DifferentialDriveWheelVelocities new_wheel_velocities(double l, double r):

@@ -521,10 +521,7 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
 
 cdef double* module_array(object arr, Py_ssize_t n, bint writable, str name) except NULL:
     """Validate a (n, 2) float64 C-contiguous native-endian array and return its data
-    (n = -1 accepts any number of rows)."""
-    if not cnp.PyArray_Check(arr):
-        raise TypeError(f"{name} must be a sequence of {n} module objects or a numpy array "
-                        f"of shape ({n}, 2), got {type(arr).__name__}")
+    (n = -1 accepts any number of rows). Callers have checked PyArray_Check(arr)."""
     cdef cnp.ndarray a = <cnp.ndarray>arr
     if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
         raise TypeError(f"{name} must have dtype float64 (native byte order), got {a.dtype}")

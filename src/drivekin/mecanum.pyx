@@ -104,7 +104,7 @@ cdef class MecanumDriveWheelVelocities(_Wheel4):
         return self._lerp(endValue, clamp01(t))
 
     def __str__(self):
-        return self._fmt("MecanumDriveWheelVelocities", LABELS, "m/s")
+        return self._fmt(LABELS, "m/s")
 
 
 cdef class MecanumDriveWheelPositions(_Wheel4):
@@ -135,7 +135,7 @@ cdef class MecanumDriveWheelPositions(_Wheel4):
     __hash__ = None
 
     def __str__(self):
-        return self._fmt("MecanumDriveWheelPositions", LABELS, "m")
+        return self._fmt(LABELS, "m")
 
 
 cdef class MecanumDriveWheelAccelerations(_Wheel4):
@@ -152,7 +152,7 @@ cdef class MecanumDriveWheelAccelerations(_Wheel4):
         return self._lerp(endValue, clamp01(t))
 
     def __str__(self):
-        return self._fmt("MecanumDriveWheelAccelerations", LABELS, "m/s²")
+        return self._fmt(LABELS, "m/s²")
 
 
 # ---------------------------------------------------------------------------------------
