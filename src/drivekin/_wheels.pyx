@@ -2,6 +2,7 @@
 cimport cython
 from libc.math cimport fabs
 
+from drivekin._errors import type_name
 from drivekin._format import f2
 
 
@@ -14,7 +15,7 @@ cdef class _WheelValues:
 
     cdef _WheelValues _check(self, object other):
         if type(other) is not type(self):
-            raise TypeError(f"expected a {type(self).__name__}, got {type(other).__name__}")
+            raise TypeError(f"expected a {type(self).__name__}, got {type_name(other)}")
         return <_WheelValues>other
 
     cdef _WheelValues _lerp(self, _WheelValues end, double t):

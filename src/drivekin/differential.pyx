@@ -10,6 +10,7 @@ from drivekin._wheels cimport _WheelValues
 from drivekin._kernels cimport clamp01, wheels_desaturate
 from drivekin.geometry cimport new_twist
 from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+from drivekin._errors import type_name
 
 
 cdef class _Wheel2(_WheelValues):
@@ -200,7 +201,7 @@ cdef class DifferentialDriveKinematics:
         if type(start) is DifferentialDriveWheelPositions or type(end) is DifferentialDriveWheelPositions:
             if type(start) is not type(end):
                 raise TypeError("toTwist2d takes two DifferentialDriveWheelPositions or two "
-                                f"distances, got {type(start).__name__} and {type(end).__name__}")
+                                f"distances, got {type_name(start)} and {type_name(end)}")
             l = (<_WheelValues>end).w[0] - (<_WheelValues>start).w[0]
             r = (<_WheelValues>end).w[1] - (<_WheelValues>start).w[1]
         else:
@@ -209,8 +210,8 @@ cdef class DifferentialDriveKinematics:
                 r = end
             except TypeError:
                 raise TypeError("toTwist2d takes two DifferentialDriveWheelPositions or two "
-                                f"distances in m, got {type(start).__name__} and "
-                                f"{type(end).__name__}") from None
+                                f"distances in m, got {type_name(start)} and "
+                                f"{type_name(end)}") from None
         return new_twist((l + r) / 2.0, 0.0, (r - l) / self._trackwidth)
 
     def toChassisAccelerations(self, DifferentialDriveWheelAccelerations wheelAccelerations not None):

@@ -16,6 +16,7 @@ from drivekin._kernels cimport (
     rot_neg, rot_plus, rot_rad, rot_radians, rot_times, rot_xy, transform_inverse,
     transform_log, twist_exp, vec, vec_eq, vec_rotate,
 )
+from drivekin._errors import refuse_delete, type_name
 from drivekin._format import f2
 
 cdef extern from *:
@@ -32,6 +33,27 @@ cdef extern from *:
 
 cdef double DEG = 180.0 / M_PI
 
+# Marks an argument that was not passed (None is a value callers may pass by mistake).
+cdef object MISSING = object()
+
+
+cdef int refuse_reinit(bint frozen, object self) except -1:
+    # Immutable values (and the shared constants such as Rotation2d.kZero) must not change
+    # when someone calls __init__ on an existing instance.
+    if frozen:
+        raise TypeError(f"{type(self).__name__} is immutable: __init__ cannot be called "
+                        "on an existing instance")
+    return 0
+
+
+cdef vec2_t vector2(object a) except *:
+    # Translation2d(vector): a numeric numpy array of shape (2,), read by value.
+    if a.dtype.kind not in "fiu":
+        raise TypeError(f"Translation2d(vector) needs a numeric array, got dtype {a.dtype}")
+    if a.shape != (2,):
+        raise ValueError(f"Translation2d(vector) needs shape (2,), got {a.shape}")
+    return vec(a[0], a[1])
+
 
 # ---------------------------------------------------------------------------------------
 @cython.freelist(64)
@@ -46,17 +68,22 @@ cdef class Translation2d:
     1e-9 m.
     """
 
-    def __init__(self, x=0.0, y=0.0):
+    def __init__(self, x=0.0, y=MISSING):
         cdef Rotation2d a
+        cdef vec2_t v
+        refuse_reinit(self.frozen, self)
         if isinstance(x, np.ndarray):
-            if (<object>x).shape != (2,):
-                raise ValueError(f"Translation2d(vector) needs shape (2,), got {(<object>x).shape}")
-            self.v = vec(x[0], x[1])
+            if y is not MISSING:
+                raise TypeError("Translation2d(vector) takes one argument, got a second: "
+                                f"{type_name(y)}")
+            v = vector2(x)
         elif isinstance(y, Rotation2d):
             a = <Rotation2d>y
-            self.v = vec(x * a.r.c, x * a.r.s)
+            v = vec(x * a.r.c, x * a.r.s)
         else:
-            self.v = vec(x, y)
+            v = vec(x, 0.0 if y is MISSING else y)
+        self.v = v
+        self.frozen = True
 
     @property
     def x(self):
@@ -214,13 +241,21 @@ cdef class Rotation2d:
     The constructor angle is not remembered: ``Rotation2d(3π/2).getDegrees()`` is −90.
     """
 
-    def __init__(self, value=0.0, y=None, /):
+    def __cinit__(self):
+        # A bare Rotation2d.__new__ is the identity, never the invalid (0, 0).
+        self.r.c = 1.0
+
+    def __init__(self, value=0.0, y=None):
+        cdef rot2_t r
+        refuse_reinit(self.frozen, self)
         if y is not None:
-            self.r = rot_xy(value, y)
+            r = rot_xy(value, y)
         elif isinstance(value, np.ndarray):
-            self.r = _rot_matrix(value)
+            r = _rot_matrix(value)
         else:
-            self.r = rot_rad(value)
+            r = rot_rad(value)
+        self.r = r
+        self.frozen = True
 
     @staticmethod
     def fromRadians(double radians):
@@ -369,17 +404,43 @@ cdef pose2_t _pose_matrix(object m) except *:
 
 
 def _rotation_from_cos_sin(double c, double s):
-    """Rebuild a Rotation2d from its stored (cos, sin) exactly (used by pickle)."""
+    """Rebuild a Rotation2d from its stored (cos, sin) exactly (used by pickle).
+
+    Only pairs a constructor can produce are accepted: a unit vector (within 1e-9) or the
+    NaN pair of a non-finite angle; anything else is a corrupted or crafted payload."""
     cdef rot2_t r
+    if not (c != c and s != s) and not fabs(hypot(c, s) - 1.0) <= 1e-9:
+        raise ValueError(f"a Rotation2d needs a unit (cos, sin) pair, got ({c!r}, {s!r})")
     r.c = c
     r.s = s
     return new_rotation(r)
 
 
 # ---------------------------------------------------------------------------------------
-cdef pose2_t _pose_args(object a, object b, object c, str cls) except *:
-    """Parse (), (Translation2d, Rotation2d), (x, y, Rotation2d) or (3×3 matrix)."""
+cdef pose2_t _pose_args(object a, object b, object c, object translation, object rotation,
+                        object x_, object y_, str cls) except *:
+    """Parse (), (Translation2d, Rotation2d), (x, y, Rotation2d) or (3×3 matrix), where
+    the documented keywords translation/rotation/x/y may stand for the positional ones."""
     cdef double x, y
+    if translation is not MISSING or x_ is not MISSING or y_ is not MISSING \
+            or rotation is not MISSING:
+        if (translation is not MISSING and (a is not None or x_ is not MISSING)) \
+                or (x_ is not MISSING and a is not None) \
+                or (y_ is not MISSING and b is not None):
+            raise TypeError(f"{cls}() got an argument both by position and by keyword")
+        if translation is not MISSING:
+            a = translation
+        if x_ is not MISSING:
+            a = x_
+        if y_ is not MISSING:
+            b = y_
+        if rotation is not MISSING:
+            if b is None and c is None:
+                b = rotation
+            elif c is None:
+                c = rotation
+            else:
+                raise TypeError(f"{cls}() takes rotation= with translation= or with x and y")
     if a is None and b is None and c is None:
         return pose(vec(0.0, 0.0), rot_xy(1.0, 0.0))
     if b is None and c is None and isinstance(a, np.ndarray):
@@ -393,7 +454,7 @@ cdef pose2_t _pose_args(object a, object b, object c, str cls) except *:
     raise TypeError(
         f"{cls}() takes (), (Translation2d, Rotation2d), (x: float, y: float, Rotation2d) "
         f"or (3x3 numpy matrix); "
-        f"got ({type(a).__name__}, {type(b).__name__}, {type(c).__name__})")
+        f"got ({type_name(a)}, {type_name(b)}, {type_name(c)})")
 
 
 # Pose2d and Transform2d share their layout (pose2_t) and every accessor; the freelist
@@ -402,8 +463,12 @@ cdef pose2_t _pose_args(object a, object b, object c, str cls) except *:
 cdef class _Frame2d:
     """Shared accessors of Pose2d and Transform2d (a translation in m and a rotation)."""
 
+    def __cinit__(self):
+        # A bare __new__ is the identity pose, never an invalid (0, 0) rotation.
+        self.p.r.c = 1.0
+
     cdef _Frame2d _new(self, pose2_t p):
-        raise NotImplementedError
+        raise TypeError("_Frame2d is an abstract base; use Pose2d or Transform2d")
 
     @property
     def x(self):
@@ -486,8 +551,11 @@ cdef class Pose2d(_Frame2d):
     Immutable; ``==`` compares translation within 1e-9 m and rotation within 1e-9.
     """
 
-    def __init__(self, a=None, b=None, c=None, /):
-        self.p = _pose_args(a, b, c, "Pose2d")
+    def __init__(self, a=None, b=None, c=None, /, *, translation=MISSING, rotation=MISSING,
+                 x=MISSING, y=MISSING):
+        refuse_reinit(self.frozen, self)
+        self.p = _pose_args(a, b, c, translation, rotation, x, y, "Pose2d")
+        self.frozen = True
 
     cdef _Frame2d _new(self, pose2_t p):
         return new_pose(p)
@@ -532,7 +600,11 @@ cdef class Pose2d(_Frame2d):
         ties broken by the smallest heading difference."""
         cdef Pose2d best = None, q
         cdef double bd = 0.0, ba = 0.0, d, a
-        for q in poses:
+        for o in poses:
+            # Exact type test: a typed loop variable would let None through.
+            if type(o) is not Pose2d:
+                raise TypeError(f"nearest() takes Pose2d objects, got {type_name(o)}")
+            q = <Pose2d>o
             d = hypot(q.p.t.x - self.p.t.x, q.p.t.y - self.p.t.y)
             a = fabs(rot_radians(rot_minus(self.p.r, q.p.r)))
             if best is None or d < bd or (d == bd and a < ba):
@@ -573,11 +645,22 @@ cdef class Transform2d(_Frame2d):
     transform that maps ``initial`` onto ``last``. Immutable; ``==`` as for Pose2d.
     """
 
-    def __init__(self, a=None, b=None, c=None, /):
+    def __init__(self, a=None, b=None, c=None, /, *, translation=MISSING, rotation=MISSING,
+                 x=MISSING, y=MISSING, initial=MISSING, last=MISSING):
+        refuse_reinit(self.frozen, self)
+        if initial is not MISSING or last is not MISSING:
+            if a is not None or b is not None:
+                raise TypeError("Transform2d() got an argument both by position and by keyword")
+            a = None if initial is MISSING else initial
+            b = None if last is MISSING else last
+            if not (isinstance(a, Pose2d) and isinstance(b, Pose2d)):
+                raise TypeError("Transform2d(initial, last) takes two Pose2d, got "
+                                f"{type_name(a)} and {type_name(b)}")
         if c is None and isinstance(a, Pose2d) and isinstance(b, Pose2d):
             self.p = pose_relative_to((<Pose2d>b).p, (<Pose2d>a).p)
         else:
-            self.p = _pose_args(a, b, c, "Transform2d")
+            self.p = _pose_args(a, b, c, translation, rotation, x, y, "Transform2d")
+        self.frozen = True
 
     cdef _Frame2d _new(self, pose2_t p):
         return new_transform(p)
@@ -662,6 +745,9 @@ cdef class Twist2d:
 
     def __reduce__(self):
         return (Twist2d, (self.t.dx, self.t.dy, self.t.dtheta))
+
+    def __delattr__(self, name):
+        refuse_delete(self, name)
 
     def __repr__(self):
         return f"Twist2d(dx={self.t.dx!r}, dy={self.t.dy!r}, dtheta={self.t.dtheta!r})"

@@ -25,6 +25,7 @@ from drivekin._kernels cimport (
     vec, vec_eq, vec_rotate,
 )
 from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
+from drivekin._errors import type_name
 from drivekin._format import f2
 
 cnp.import_array()
@@ -79,14 +80,14 @@ cdef class _ChassisVector:
         """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
         if type(out) is not type(self):
-            raise TypeError(f"out must be a {type(self).__name__}, got {type(out).__name__}")
+            raise TypeError(f"out must be a {type(self).__name__}, got {type_name(out)}")
         self._rotated_into(rot_neg(robotAngle.r), out)
 
     def toFieldRelativeInto(self, Rotation2d robotAngle not None, _ChassisVector out not None):
         """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
         if type(out) is not type(self):
-            raise TypeError(f"out must be a {type(self).__name__}, got {type(out).__name__}")
+            raise TypeError(f"out must be a {type(self).__name__}, got {type_name(out)}")
         self._rotated_into(robotAngle.r, out)
 
     def plus(self, _ChassisVector other not None):
@@ -125,7 +126,7 @@ cdef class _ChassisVector:
 
     cdef _check(self, _ChassisVector other):
         if type(other) is not type(self):
-            raise TypeError(f"expected a {type(self).__name__}, got {type(other).__name__}")
+            raise TypeError(f"expected a {type(self).__name__}, got {type_name(other)}")
 
     def __add__(self, other):
         if type(other) is type(self):
@@ -309,7 +310,7 @@ cdef rot2_t _angle_arg(object angle) except *:
         return IDENTITY
     if isinstance(angle, Rotation2d):
         return (<Rotation2d>angle).r
-    raise TypeError(f"angle must be a Rotation2d, got {type(angle).__name__}")
+    raise TypeError(f"angle must be a Rotation2d, got {type_name(angle)}")
 
 
 cdef inline void optimize_into(_ModuleVector v, rot2_t current, _ModuleVector out) noexcept:
@@ -342,7 +343,7 @@ cdef class _ModuleVector:
         """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
         must be of the same class."""
         if type(other) is not type(self):
-            raise TypeError(f"expected a {type(self).__name__}, got {type(other).__name__}")
+            raise TypeError(f"expected a {type(self).__name__}, got {type_name(other)}")
         cdef double a = self.m, b = other.m
         if a < b:
             return -1
@@ -359,7 +360,7 @@ cdef class _ModuleVector:
 
     cdef _ModuleVector _lerp(self, _ModuleVector end, double t):
         if type(end) is not type(self):
-            raise TypeError(f"expected a {type(self).__name__}, got {type(end).__name__}")
+            raise TypeError(f"expected a {type(self).__name__}, got {type_name(end)}")
         return self._new(self.m + (end.m - self.m) * t, rot_interp(self.a, end.a, t))
 
     def __eq__(self, other):
@@ -552,7 +553,7 @@ cdef inline object as_fast(object seq, str what):
     try:
         return PySequence_Fast(seq, "")
     except TypeError:
-        raise TypeError(f"{what} must be a sequence, got {type(seq).__name__}") from None
+        raise TypeError(f"{what} must be a sequence, got {type_name(seq)}") from None
 
 
 cdef object varargs(object first, tuple more, type cls):
@@ -566,7 +567,7 @@ cdef object varargs(object first, tuple more, type cls):
 cdef inline _ModuleVector item(PyObject** items, Py_ssize_t i, type cls, str what):
     if not exact_type(items[i], <PyObject*>cls):
         raise TypeError(f"{what}[{i}] must be a {cls.__name__}, "
-                        f"got {type(<object>items[i]).__name__}")
+                        f"got {type_name(<object>items[i])}")
     return <_ModuleVector>items[i]
 
 
@@ -654,7 +655,7 @@ cdef class SwerveDriveKinematics:
             raise ValueError(f"a swerve drive needs at least 2 modules, got {n}")
         for i, t in enumerate(mods):
             if not isinstance(t, Translation2d):
-                raise TypeError(f"module {i} must be a Translation2d, got {type(t).__name__}")
+                raise TypeError(f"module {i} must be a Translation2d, got {type_name(t)}")
             if not (isfinite((<Translation2d>t).v.x) and isfinite((<Translation2d>t).v.y)):
                 raise ValueError(f"module {i} position must be finite (m), got {t!r}")
         if self.buf != NULL:
@@ -737,7 +738,7 @@ cdef class SwerveDriveKinematics:
         for i in range(k):
             if not isinstance(<object>items[i], Rotation2d):
                 raise TypeError(f"moduleHeadings[{i}] must be a Rotation2d, "
-                                f"got {type(<object>items[i]).__name__}")
+                                f"got {type_name(<object>items[i])}")
         for i in range(k):
             self.hc[i] = (<Rotation2d>items[i]).r.c
             self.hs[i] = (<Rotation2d>items[i]).r.s
@@ -1009,7 +1010,7 @@ cdef int parse_desat(object first, object mm, object mt, object mr,
     if type(first) is not ChassisVelocities:
         if mm is not None or mt is not None or mr is not None:
             raise TypeError("the five-argument desaturateWheelVelocities form takes a "
-                            f"ChassisVelocities second, got {type(first).__name__}")
+                            f"ChassisVelocities second, got {type_name(first)}")
         p.five = False
         p.max_speed = first
         return 0

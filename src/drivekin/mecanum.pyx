@@ -14,6 +14,7 @@ from drivekin._wheels cimport _WheelValues
 from drivekin._kernels cimport clamp01, mat_vec, vec, vec_eq, wheels_desaturate
 from drivekin.geometry cimport Translation2d, new_twist
 from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+from drivekin._errors import type_name
 
 cdef Translation2d ORIGIN = Translation2d()
 cdef tuple LABELS = ("Front Left", "Front Right", "Rear Left", "Rear Right")
@@ -208,7 +209,7 @@ cdef class MecanumDriveKinematics:
 
     cdef void _inverse(self, const double* x, object cor, double* out) except *:
         if not isinstance(cor, Translation2d):
-            raise TypeError(f"centerOfRotation must be a Translation2d, got {type(cor).__name__}")
+            raise TypeError(f"centerOfRotation must be a Translation2d, got {type_name(cor)}")
         self._set_cor((<Translation2d>cor).v)
         mat_vec(4, 3, self.m, x, out)
 
@@ -266,7 +267,7 @@ cdef class MecanumDriveKinematics:
             for i in range(4):
                 d[i] = (<_WheelValues>end).w[i] - (<_WheelValues>start).w[i]
         else:
-            raise TypeError(f"end must be a MecanumDriveWheelPositions, got {type(end).__name__}")
+            raise TypeError(f"end must be a MecanumDriveWheelPositions, got {type_name(end)}")
         mat_vec(3, 4, self.f, d, r)
         return new_twist(r[0], r[1], r[2])
 

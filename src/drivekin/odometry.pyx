@@ -16,13 +16,14 @@ from drivekin._kernels cimport forward_solve, mat_vec, odometry_step, pose, rot_
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.kinematics cimport SwerveDriveKinematics, SwerveModulePosition
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
+from drivekin._errors import type_name
 
 
 cdef pose2_t initial(object p) except *:
     if p is None:
         return pose(vec(0.0, 0.0), rot_xy(1.0, 0.0))
     if not isinstance(p, Pose2d):
-        raise TypeError(f"initialPose must be a Pose2d, got {type(p).__name__}")
+        raise TypeError(f"initialPose must be a Pose2d, got {type_name(p)}")
     return (<Pose2d>p).p
 
 
