@@ -2,7 +2,7 @@
 cimport cython
 from libc.math cimport fabs
 
-from drivekin._errors import type_name
+from drivekin._errors import refuse_delete, type_name
 from drivekin._format import f2
 
 
@@ -11,7 +11,7 @@ cdef class _WheelValues:
     """Per-wheel values with component-wise arithmetic (operators + - * / and unary -)."""
 
     cdef _WheelValues _new(self):
-        raise NotImplementedError
+        raise TypeError("_WheelValues is an abstract base; use a wheel values class")
 
     cdef _WheelValues _check(self, object other):
         if type(other) is not type(self):
@@ -108,4 +108,7 @@ cdef class _WheelValues:
 
     def __reduce__(self):
         return (type(self), tuple([self.w[i] for i in range(self.k)]))
+
+    def __delattr__(self, name):
+        refuse_delete(self, name)
 

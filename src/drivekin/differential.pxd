@@ -21,3 +21,4 @@ cdef class DifferentialDriveWheelAccelerations(_Wheel2):
 @cython.final
 cdef class DifferentialDriveKinematics:
     cdef double _trackwidth      # m, distance between the left and right wheels
+    cdef int _ready(self) except -1

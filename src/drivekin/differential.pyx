@@ -146,9 +146,18 @@ cdef class DifferentialDriveKinematics:
     """
 
     def __init__(self, double trackwidth):
+        if self._trackwidth != 0.0:
+            raise TypeError("DifferentialDriveKinematics is already initialised (its "
+                            "trackwidth is read-only): __init__ cannot be called again")
         if not (isfinite(trackwidth) and trackwidth > 0.0):
             raise ValueError(f"trackwidth must be a positive finite distance in m, got {trackwidth!r}")
         self._trackwidth = trackwidth
+
+    cdef int _ready(self) except -1:
+        # 0 is what a bare __new__ leaves; __init__ admits only positive finite values.
+        if self._trackwidth == 0.0:
+            raise RuntimeError("DifferentialDriveKinematics.__init__ has not completed")
+        return 0
 
     @property
     def trackwidth(self):
@@ -164,6 +173,7 @@ cdef class DifferentialDriveKinematics:
     def toChassisVelocities(self, DifferentialDriveWheelVelocities wheelVelocities not None):
         """Return the robot velocity: vx = (left + right) / 2, vy = 0,
         omega = (right − left) / trackwidth."""
+        self._ready()
         cdef _WheelValues w = wheelVelocities
         return new_chassis_velocities((w.w[0] + w.w[1]) / 2.0, 0.0,
                                       (w.w[1] - w.w[0]) / self._trackwidth)
@@ -171,6 +181,7 @@ cdef class DifferentialDriveKinematics:
     def toChassisVelocitiesInto(self, DifferentialDriveWheelVelocities wheelVelocities not None,
                                 ChassisVelocities out not None):
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+        self._ready()
         cdef _WheelValues w = wheelVelocities
         out.v.x = (w.w[0] + w.w[1]) / 2.0
         out.v.y = 0.0
@@ -179,6 +190,7 @@ cdef class DifferentialDriveKinematics:
     def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
         """Return the wheel velocities for a robot velocity; ``vy`` is ignored (a
         differential drive cannot strafe)."""
+        self._ready()
         cdef ChassisVelocities c = chassisVelocities
         return new_wheel_velocities(c.v.x - self._trackwidth / 2.0 * c.v.z,
                                     c.v.x + self._trackwidth / 2.0 * c.v.z)
@@ -186,6 +198,7 @@ cdef class DifferentialDriveKinematics:
     def toWheelVelocitiesInto(self, ChassisVelocities chassisVelocities not None,
                               DifferentialDriveWheelVelocities out not None):
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
+        self._ready()
         cdef ChassisVelocities c = chassisVelocities
         cdef _WheelValues o = out
         o.w[0] = c.v.x - self._trackwidth / 2.0 * c.v.z
@@ -197,6 +210,7 @@ cdef class DifferentialDriveKinematics:
         Return the Twist2d (m, rad) for wheel distance changes: dx = (l + r) / 2, dy = 0,
         dtheta = (r − l) / trackwidth. With two DifferentialDriveWheelPositions the
         changes are end − start."""
+        self._ready()
         cdef double l, r
         if type(start) is DifferentialDriveWheelPositions or type(end) is DifferentialDriveWheelPositions:
             if type(start) is not type(end):
@@ -216,12 +230,14 @@ cdef class DifferentialDriveKinematics:
 
     def toChassisAccelerations(self, DifferentialDriveWheelAccelerations wheelAccelerations not None):
         """Return (ax = (l + r) / 2, ay = 0, alpha = (r − l) / trackwidth), m/s² and rad/s²."""
+        self._ready()
         cdef _WheelValues w = wheelAccelerations
         return ChassisAccelerations((w.w[0] + w.w[1]) / 2.0, 0.0,
                                     (w.w[1] - w.w[0]) / self._trackwidth)
 
     def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None):
         """Return the wheel accelerations (ax ∓ trackwidth/2 · alpha); ``ay`` is ignored."""
+        self._ready()
         cdef ChassisAccelerations c = chassisAccelerations
         return DifferentialDriveWheelAccelerations(c.v.x - self._trackwidth / 2.0 * c.v.z,
                                                    c.v.x + self._trackwidth / 2.0 * c.v.z)

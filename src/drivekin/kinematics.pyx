@@ -13,6 +13,7 @@ from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport Py_INCREF, PyObject
 from cpython.sequence cimport PySequence_Fast, PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
+from cpython.buffer cimport PyObject_CheckBuffer
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, atan2, cos, fabs, isfinite, signbit, sin
 
@@ -25,7 +26,7 @@ from drivekin._kernels cimport (
     vec, vec_eq, vec_rotate,
 )
 from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
-from drivekin._errors import type_name
+from drivekin._errors import refuse_delete, type_name
 from drivekin._format import f2
 
 cnp.import_array()
@@ -34,6 +35,9 @@ cdef rot2_t IDENTITY
 IDENTITY.c = 1.0
 IDENTITY.s = 0.0
 cdef Translation2d ORIGIN = Translation2d()
+# Module counts up to this are handled in stack memory by the static desaturation façade.
+cdef enum:
+    STACK_MODULES = 16
 
 
 cdef inline bint java_equals(double a, double b) noexcept:
@@ -53,7 +57,8 @@ cdef class _ChassisVector:
     """Shared arithmetic of ChassisVelocities and ChassisAccelerations (x, y, angular)."""
 
     cdef _ChassisVector _new(self, double x, double y, double z):
-        raise NotImplementedError
+        raise TypeError("_ChassisVector is an abstract base; use ChassisVelocities or "
+                        "ChassisAccelerations")
 
     cdef _rotated_into(self, rot2_t r, _ChassisVector out):
         cdef vec2_t t = vec_rotate(vec(self.v.x, self.v.y), r)
@@ -160,6 +165,9 @@ cdef class _ChassisVector:
 
     def __reduce__(self):
         return (type(self), (self.v.x, self.v.y, self.v.z))
+
+    def __delattr__(self, name):
+        refuse_delete(self, name)
 
 
 cdef class ChassisVelocities(_ChassisVector):
@@ -328,7 +336,7 @@ cdef class _ModuleVector:
     """Shared behaviour of the swerve module values: a scalar and an angle."""
 
     cdef _ModuleVector _new(self, double m, rot2_t a):
-        raise NotImplementedError
+        raise TypeError("_ModuleVector is an abstract base; use a SwerveModule... class")
 
     @property
     def angle(self):
@@ -375,6 +383,9 @@ cdef class _ModuleVector:
     def __reduce__(self):
         return (type(self), (self.m, new_rotation(self.a)))
 
+    def __delattr__(self, name):
+        refuse_delete(self, name)
+
     def __iter__(self):
         yield self.m
         yield new_rotation(self.a)
@@ -389,8 +400,8 @@ cdef class SwerveModuleVelocity(_ModuleVector):
     """
 
     def __init__(self, double velocity=0.0, angle=None):
-        self.m = velocity
         self.a = _angle_arg(angle)
+        self.m = velocity
 
     cdef _ModuleVector _new(self, double m, rot2_t a):
         return new_module_velocity(m, a)
@@ -447,8 +458,8 @@ cdef class SwerveModulePosition(_ModuleVector):
     """
 
     def __init__(self, double distance=0.0, angle=None):
-        self.m = distance
         self.a = _angle_arg(angle)
+        self.m = distance
 
     cdef _ModuleVector _new(self, double m, rot2_t a):
         return new_module_position(m, a)
@@ -485,8 +496,8 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
     """
 
     def __init__(self, double acceleration=0.0, angle=None):
-        self.m = acceleration
         self.a = _angle_arg(angle)
+        self.m = acceleration
 
     cdef _ModuleVector _new(self, double m, rot2_t a):
         cdef SwerveModuleAcceleration o = SwerveModuleAcceleration.__new__(SwerveModuleAcceleration)
@@ -550,6 +561,11 @@ cdef inline object as_fast(object seq, str what):
     """Return a list/tuple view of ``seq`` (no copy for lists and tuples)."""
     if PyTuple_CheckExact(seq) or PyList_CheckExact(seq):
         return seq
+    if PyObject_CheckBuffer(seq):
+        # Iterating a buffer yields numbers (or, for a 2-D memoryview, raises
+        # NotImplementedError), never value objects.
+        raise TypeError(f"{what} must be a sequence of objects, got {type_name(seq)}; "
+                        "where an (N, 2) array is accepted, pass a float64 numpy array")
     try:
         return PySequence_Fast(seq, "")
     except TypeError:
@@ -571,56 +587,61 @@ cdef inline _ModuleVector item(PyObject** items, Py_ssize_t i, type cls, str wha
     return <_ModuleVector>items[i]
 
 
-cdef object module_tuple(Py_ssize_t n, const double* m, const double* c, const double* s,
-                         type cls):
-    """Build a tuple of n new module values (drawn from the freelists)."""
+# Results are stored in two steps: the destination is built or validated first (which may
+# allocate or run Python code), then the kernel runs and store_modules copies its output
+# with nothing in between that could run a finalizer, another thread or a re-entrant call
+# on the shared scratch, and nothing changes if the destination is rejected.
+
+cdef object new_modules(Py_ssize_t n, type cls):
+    """Return a tuple of n new module values (from the freelists), to be filled."""
     cdef object t = PyTuple_New(n)
     cdef _ModuleVector o
     cdef Py_ssize_t i
-    cdef rot2_t a
     for i in range(n):
-        a.c = c[i]
-        a.s = s[i]
         if cls is SwerveModuleVelocity:
-            o = new_module_velocity(m[i], a)
+            o = SwerveModuleVelocity.__new__(SwerveModuleVelocity)
         elif cls is SwerveModulePosition:
-            o = new_module_position(m[i], a)
+            o = SwerveModulePosition.__new__(SwerveModulePosition)
         else:
             o = SwerveModuleAcceleration.__new__(SwerveModuleAcceleration)
-            o.m = m[i]
-            o.a = a
         Py_INCREF(o)
         PyTuple_SET_ITEM(t, i, o)
     return t
 
 
-cdef int write_modules(object out, Py_ssize_t n, const double* m, const double* c,
-                       const double* s, type cls, str what) except -1:
-    """Store n (scalar, angle) results into caller-owned objects or an (n, 2) array."""
+cdef object out_modules(object out, Py_ssize_t n, type cls, str what, double** data):
+    """Validate a caller's ``out``: return the list/tuple of its n ``cls`` objects, or None
+    with ``data[0]`` pointing at the memory of an (n, 2) float64 array."""
     cdef Py_ssize_t i
-    cdef double* d
-    cdef _ModuleVector o
     cdef object fast
-    cdef PyObject** items
+    data[0] = NULL
     if not (PyTuple_CheckExact(out) or PyList_CheckExact(out)) and cnp.PyArray_Check(out):
-        d = module_array(out, n, True, what)
-        for i in range(n):
-            d[2 * i] = m[i]
-            d[2 * i + 1] = atan2(s[i], c[i])
-        return 0
+        data[0] = module_array(out, n, True, what)
+        return None
     fast = as_fast(out, what)
     if PySequence_Fast_GET_SIZE(fast) != n:
         raise ValueError(f"{what} must hold {n} {cls.__name__} objects, "
                          f"got {PySequence_Fast_GET_SIZE(fast)}")
+    for i in range(n):
+        item(PySequence_Fast_ITEMS(fast), i, cls, what)
+    return fast
+
+
+cdef void store_modules(object fast, double* d, Py_ssize_t n, const double* m,
+                        const double* c, const double* s) noexcept:
+    """Copy n (scalar, cos, sin) into what out_modules/new_modules returned."""
+    cdef Py_ssize_t i
+    cdef PyObject** items
+    if d != NULL:
+        for i in range(n):
+            d[2 * i] = m[i]
+            d[2 * i + 1] = atan2(s[i], c[i])
+        return
     items = PySequence_Fast_ITEMS(fast)
     for i in range(n):
-        item(items, i, cls, what)
-    for i in range(n):
-        o = <_ModuleVector>items[i]
-        o.m = m[i]
-        o.a.c = c[i]
-        o.a.s = s[i]
-    return 0
+        (<_ModuleVector>items[i]).m = m[i]
+        (<_ModuleVector>items[i]).a.c = c[i]
+        (<_ModuleVector>items[i]).a.s = s[i]
 
 
 # ---------------------------------------------------------------------------------------
@@ -644,12 +665,14 @@ cdef class SwerveDriveKinematics:
         self.buf = NULL
 
     def __init__(self, *moduleTranslations):
+        if self.buf != NULL:
+            raise TypeError("SwerveDriveKinematics is already initialised: __init__ cannot "
+                            "be called again")
         if not moduleTranslations:
             raise ValueError("a swerve drive needs at least 2 modules, got 0")
-        mods = as_fast(varargs(moduleTranslations[0], moduleTranslations[1:], Translation2d),
-                       "SwerveDriveKinematics() takes Translation2d module positions or one "
-                       "sequence of them; the argument")
-        mods = tuple(mods)
+        mods = tuple(as_fast(varargs(moduleTranslations[0], moduleTranslations[1:], Translation2d),
+                             "SwerveDriveKinematics() takes Translation2d module positions or "
+                             "one sequence of them; the argument"))
         cdef Py_ssize_t n = len(mods), i, k
         if n < 2:
             raise ValueError(f"a swerve drive needs at least 2 modules, got {n}")
@@ -658,38 +681,12 @@ cdef class SwerveDriveKinematics:
                 raise TypeError(f"module {i} must be a Translation2d, got {type_name(t)}")
             if not (isfinite((<Translation2d>t).v.x) and isfinite((<Translation2d>t).v.y)):
                 raise ValueError(f"module {i} position must be finite (m), got {t!r}")
-        if self.buf != NULL:
-            raise RuntimeError("SwerveDriveKinematics is already initialised")
-        # 9 arrays of n (positions, CoR rows, headings, scratch) + f1 (3 x 2n) + f2 (4 x 2n)
-        self.buf = <double*>PyMem_Malloc(sizeof(double) * (9 * n + 6 * n + 8 * n))
-        if self.buf == NULL:
-            raise MemoryError()
-        self.n = n
-        self.modules = mods
-        self.mx = self.buf
-        self.my = self.mx + n
-        self.rx = self.my + n
-        self.ry = self.rx + n
-        self.hc = self.ry + n
-        self.hs = self.hc + n
-        self.s0 = self.hs + n
-        self.s1 = self.s0 + n
-        self.s2 = self.s1 + n
-        self.f1 = self.s2 + n            # 3 x 2n
-        self.f2 = self.f1 + 6 * n        # 4 x 2n
-        for i in range(n):
-            self.mx[i] = (<Translation2d>mods[i]).v.x
-            self.my[i] = (<Translation2d>mods[i]).v.y
-            self.rx[i] = self.mx[i]
-            self.ry[i] = self.my[i]
-            self.hc[i] = 1.0
-            self.hs[i] = 0.0
-        self.cor = vec(0.0, 0.0)
         # Forward kinematics is the least-squares inverse of the inverse-kinematics
         # matrices at CoR = 0. It is built once, so numpy's SVD pseudo-inverse (the same
         # as WPILib Java's EJML pinv, rank-deficient layouts included) costs nothing later.
-        xs = np.array([self.mx[i] for i in range(n)])
-        ys = np.array([self.my[i] for i in range(n)])
+        # Everything that can fail runs before the object is touched.
+        xs = np.array([(<Translation2d>t).v.x for t in mods])
+        ys = np.array([(<Translation2d>t).v.y for t in mods])
         m1 = np.zeros((2 * n, 3))
         m1[0::2, 0] = 1.0
         m1[1::2, 1] = 1.0
@@ -704,17 +701,69 @@ cdef class SwerveDriveKinematics:
         m2[1::2, 3] = xs
         cdef double[:, ::1] p1 = np.ascontiguousarray(np.linalg.pinv(m1))
         cdef double[:, ::1] p2 = np.ascontiguousarray(np.linalg.pinv(m2))
+        # 9 arrays of n (positions, CoR rows, headings, scratch) + f1 (3 x 2n) + f2 (4 x 2n)
+        cdef double* buf = <double*>PyMem_Malloc(sizeof(double) * (9 * n + 6 * n + 8 * n))
+        if buf == NULL:
+            raise MemoryError()
+        self.n = n
+        self.modules = mods
+        self.mx = buf
+        self.my = self.mx + n
+        self.rx = self.my + n
+        self.ry = self.rx + n
+        self.hc = self.ry + n
+        self.hs = self.hc + n
+        self.s0 = self.hs + n
+        self.s1 = self.s0 + n
+        self.s2 = self.s1 + n
+        self.f1 = self.s2 + n            # 3 x 2n
+        self.f2 = self.f1 + 6 * n        # 4 x 2n
+        for i in range(n):
+            self.mx[i] = xs[i]
+            self.my[i] = ys[i]
+            self.rx[i] = self.mx[i]
+            self.ry[i] = self.my[i]
+            self.hc[i] = 1.0
+            self.hs[i] = 0.0
+        self.cor = vec(0.0, 0.0)
         for i in range(2 * n):
             for k in range(3):
                 self.f1[k * 2 * n + i] = p1[k, i]
             for k in range(4):
                 self.f2[k * 2 * n + i] = p2[k, i]
+        # Set last: a non-NULL buf is what every method checks before computing.
+        self.buf = buf
 
     def __dealloc__(self):
         PyMem_Free(self.buf)
 
+    cdef int _ready(self) except -1:
+        if self.buf == NULL:
+            raise RuntimeError("SwerveDriveKinematics.__init__ has not completed")
+        return 0
+
     def __reduce__(self):
-        return (SwerveDriveKinematics, self.modules)
+        # The state (heading memory and the centre of rotation) makes a copy or an
+        # unpickled object behave exactly like the original.
+        self._ready()
+        cdef rot2_t h
+        cdef Py_ssize_t i
+        headings = []
+        for i in range(self.n):
+            h.c = self.hc[i]
+            h.s = self.hs[i]
+            headings.append(new_rotation(h))
+        return (SwerveDriveKinematics, self.modules,
+                (tuple(headings), Translation2d(self.cor.x, self.cor.y)))
+
+    def __setstate__(self, state):
+        """Restore heading memory and centre of rotation (used by copy and pickle)."""
+        self._ready()
+        if not (type(state) is tuple and len(state) == 2 and type(state[1]) is Translation2d):
+            raise TypeError("SwerveDriveKinematics state must be (headings, Translation2d)")
+        headings, cor = state
+        self.resetHeadings(headings)
+        self._set_cor((<Translation2d>cor).v)
 
     def __repr__(self):
         return f"SwerveDriveKinematics({', '.join(repr(m) for m in self.modules)})"
@@ -730,13 +779,14 @@ cdef class SwerveDriveKinematics:
     def resetHeadings(self, moduleHeadings, *more):
         """Replace the remembered module headings (N Rotation2d, as arguments or one
         sequence); used when the chassis velocity is zero or a module is on the CoR."""
+        self._ready()
         cdef object fast = as_fast(varargs(moduleHeadings, more, Rotation2d), "moduleHeadings")
         cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fast)
         if k != self.n:
             raise ValueError(f"expected {self.n} module headings (one per module), got {k}")
         cdef PyObject** items = PySequence_Fast_ITEMS(fast)
         for i in range(k):
-            if not isinstance(<object>items[i], Rotation2d):
+            if not exact_type(items[i], <PyObject*>Rotation2d):
                 raise TypeError(f"moduleHeadings[{i}] must be a Rotation2d, "
                                 f"got {type_name(<object>items[i])}")
         for i in range(k):
@@ -765,13 +815,15 @@ cdef class SwerveDriveKinematics:
         ``chassisVelocities`` (robot-relative, m/s and rad/s), rotating about
         ``centerOfRotation`` (robot frame, m). Module speeds are ≥ 0; the angles follow the
         heading-memory rules in the class docstring. Not desaturated."""
+        self._ready()
+        cdef object t = new_modules(self.n, SwerveModuleVelocity)
         self._ik(chassisVelocities, centerOfRotation)
-        return module_tuple(self.n, self.s0, self.s1, self.s2, SwerveModuleVelocity)
+        store_modules(t, NULL, self.n, self.s0, self.s1, self.s2)
+        return t
 
     def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
         """Same as :meth:`toSwerveModuleVelocities` about the robot origin."""
-        self._ik(chassisVelocities, ORIGIN)
-        return module_tuple(self.n, self.s0, self.s1, self.s2, SwerveModuleVelocity)
+        return self.toSwerveModuleVelocities(chassisVelocities, ORIGIN)
 
     def toSwerveModuleVelocitiesInto(self, ChassisVelocities chassisVelocities not None, out,
                                      Translation2d centerOfRotation not None=ORIGIN):
@@ -780,8 +832,11 @@ cdef class SwerveDriveKinematics:
         ``out`` is either a list/tuple of N SwerveModuleVelocity objects, updated in place,
         or a float64 C-contiguous writeable numpy array of shape (N, 2) that receives
         ``[velocity m/s, angle rad]`` per module. Returns None."""
+        cdef double* d
+        self._ready()
+        cdef object fast = out_modules(out, self.n, SwerveModuleVelocity, "out", &d)
         self._ik(chassisVelocities, centerOfRotation)
-        write_modules(out, self.n, self.s0, self.s1, self.s2, SwerveModuleVelocity, "out")
+        store_modules(fast, d, self.n, self.s0, self.s1, self.s2)
 
     cdef int _read(self, object states, type cls, str what) except -1:
         """Load N (scalar, cos, sin) from objects or an (N, 2) array into the scratch."""
@@ -790,6 +845,7 @@ cdef class SwerveDriveKinematics:
         cdef _ModuleVector o
         cdef object fast
         cdef PyObject** items
+        self._ready()
         if not (PyTuple_CheckExact(states) or PyList_CheckExact(states)) and cnp.PyArray_Check(states):
             d = module_array(states, n, False, what)
             for i in range(n):
@@ -845,6 +901,7 @@ cdef class SwerveDriveKinematics:
         return new_twist(r[0], r[1], r[2])
 
     cdef int _deltas(self, object start, object end) except -1:
+        self._ready()
         cdef object fs = as_fast(start, "start"), fe = as_fast(end, "end")
         cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fs)
         if PySequence_Fast_GET_SIZE(fe) != k:
@@ -876,16 +933,25 @@ cdef class SwerveDriveKinematics:
 
     def interpolate(self, startValue, endValue, double t):
         """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
-        cdef object fs = as_fast(startValue, "startValue"), fe = as_fast(endValue, "endValue")
-        cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fs)
-        if PySequence_Fast_GET_SIZE(fe) != k:
-            raise ValueError(f"Inconsistent number of modules: start has {k}, "
-                             f"end has {PySequence_Fast_GET_SIZE(fe)}")
-        return tuple([(<SwerveModulePosition?>fs[i]).interpolate(fe[i], t) for i in range(k)])
+        # Tuples hold their items, so the results' allocations (and any finalizer they
+        # trigger) cannot free an item under us.
+        cdef tuple fs = tuple(as_fast(startValue, "startValue"))
+        cdef tuple fe = tuple(as_fast(endValue, "endValue"))
+        cdef Py_ssize_t i, k = len(fs)
+        if len(fe) != k:
+            raise ValueError(f"Inconsistent number of modules: start has {k}, end has {len(fe)}")
+        for i in range(k):
+            item(PySequence_Fast_ITEMS(fs), i, SwerveModulePosition, "startValue")
+            item(PySequence_Fast_ITEMS(fe), i, SwerveModulePosition, "endValue")
+        return tuple([(<SwerveModulePosition>fs[i]).interpolate(fe[i], t) for i in range(k)])
 
     def copy(self, positions):
         """Return independent copies of the module positions (tuple)."""
-        return tuple([(<SwerveModulePosition?>p).copy() for p in positions])
+        cdef tuple ps = tuple(as_fast(positions, "positions"))
+        cdef Py_ssize_t i
+        for i in range(len(ps)):
+            item(PySequence_Fast_ITEMS(ps), i, SwerveModulePosition, "positions")
+        return tuple([(<SwerveModulePosition>p).copy() for p in ps])
 
     def copyInto(self, positions, output):
         """Copy each position's fields into the matching object of ``output``."""
@@ -914,11 +980,14 @@ cdef class SwerveDriveKinematics:
         results even when ``angularVelocity`` ≠ 0, and a module whose acceleration is at
         most 1e-6 gets angle 0 (there is no heading memory for accelerations)."""
         cdef ChassisAccelerations ca = chassisAccelerations
+        self._ready()
+        cdef object t = new_modules(self.n, SwerveModuleAcceleration)
         if not (ca.v.x == 0.0 and ca.v.y == 0.0 and ca.v.z == 0.0):
             self._set_cor(centerOfRotation.v)
         swerve_ik_accel(self.n, self.rx, self.ry, ca.v.x, ca.v.y, angularVelocity, ca.v.z,
                         self.s0, self.s1, self.s2)
-        return module_tuple(self.n, self.s0, self.s1, self.s2, SwerveModuleAcceleration)
+        store_modules(t, NULL, self.n, self.s0, self.s1, self.s2)
+        return t
 
     def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None):
         """Same as :meth:`toSwerveModuleAccelerations` with zero angular velocity about
@@ -954,20 +1023,31 @@ cdef class SwerveDriveKinematics:
         input is not modified (2027). In the five-argument form the second parameter is
         the desired ChassisVelocities."""
         cdef desat_t p
+        cdef double stack[3 * STACK_MODULES]
+        cdef double* buf = stack
+        cdef double div, mul
+        cdef Py_ssize_t i, n
+        cdef object t
         parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
                     attainableMaxTranslationalSpeed, attainableMaxRotationalVelocity, &p)
         cdef object fast = as_fast(moduleVelocities, "moduleVelocities")
-        cdef Py_ssize_t i, n = PySequence_Fast_GET_SIZE(fast)
-        cdef PyObject** items = PySequence_Fast_ITEMS(fast)
-        cdef double div, mul
-        desat_objects(items, n, &p, &div, &mul)
-        cdef object t = PyTuple_New(n)
-        cdef _ModuleVector o
-        for i in range(n):
-            o = <_ModuleVector>items[i]
-            o = new_module_velocity(o.m / div * mul, o.a)
-            Py_INCREF(o)
-            PyTuple_SET_ITEM(t, i, o)
+        n = PySequence_Fast_GET_SIZE(fast)
+        if n > STACK_MODULES:
+            buf = <double*>PyMem_Malloc(sizeof(double) * 3 * n)
+            if buf == NULL:
+                raise MemoryError()
+        try:
+            # The caller's list is read completely before the result tuple is allocated:
+            # that allocation can run the cyclic GC, whose finalizers may mutate the list.
+            read_velocities(PySequence_Fast_ITEMS(fast), n, buf)
+            desaturate_factors(max_abs(n, buf, 3), &p, &div, &mul)
+            t = new_modules(n, SwerveModuleVelocity)
+            for i in range(n):
+                buf[3 * i] = buf[3 * i] / div * mul
+            store_strided(t, n, buf)
+        finally:
+            if buf != stack:
+                PyMem_Free(buf)
         return t
 
     @staticmethod
@@ -997,6 +1077,7 @@ cdef class SwerveDriveKinematics:
         fast = as_fast(moduleVelocities, "moduleVelocities")
         n = PySequence_Fast_GET_SIZE(fast)
         items = PySequence_Fast_ITEMS(fast)
+        # Check and read, decide, write: nothing here allocates or runs Python code.
         desat_objects(items, n, &p, &div, &mul)
         for i in range(n):
             (<_ModuleVector>items[i]).m = (<_ModuleVector>items[i]).m / div * mul
@@ -1024,6 +1105,28 @@ cdef int parse_desat(object first, object mm, object mt, object mr,
     p.max_trans = mt
     p.max_rot = mr
     return 0
+
+
+cdef int read_velocities(PyObject** items, Py_ssize_t n, double* buf) except -1:
+    """Check n SwerveModuleVelocity and copy (velocity, cos, sin) to buf (stride 3)."""
+    cdef Py_ssize_t i
+    for i in range(n):
+        if not exact_type(items[i], <PyObject*>SwerveModuleVelocity):
+            item(items, i, SwerveModuleVelocity, "moduleVelocities")  # raises the TypeError
+        buf[3 * i] = (<_ModuleVector>items[i]).m
+        buf[3 * i + 1] = (<_ModuleVector>items[i]).a.c
+        buf[3 * i + 2] = (<_ModuleVector>items[i]).a.s
+    return 0
+
+
+cdef void store_strided(object t, Py_ssize_t n, const double* buf) noexcept:
+    """Copy n (scalar, cos, sin) triples into the module objects of tuple t."""
+    cdef Py_ssize_t i
+    cdef PyObject** items = PySequence_Fast_ITEMS(t)
+    for i in range(n):
+        (<_ModuleVector>items[i]).m = buf[3 * i]
+        (<_ModuleVector>items[i]).a.c = buf[3 * i + 1]
+        (<_ModuleVector>items[i]).a.s = buf[3 * i + 2]
 
 
 cdef int desat_objects(PyObject** items, Py_ssize_t n, const desat_t* p,

@@ -29,5 +29,6 @@ cdef class MecanumDriveKinematics:
     cdef vec2_t cor              # centre of rotation m was built for, m
     cdef tuple wheels            # the Translation2d objects
 
+    cdef int _ready(self) except -1
     cdef void _set_cor(self, vec2_t cor) noexcept
     cdef void _inverse(self, const double* x, object cor, double* out) except *

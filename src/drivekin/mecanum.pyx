@@ -169,23 +169,50 @@ cdef class MecanumDriveKinematics:
     def __init__(self, Translation2d frontLeftWheel not None, Translation2d frontRightWheel not None,
                  Translation2d rearLeftWheel not None, Translation2d rearRightWheel not None):
         cdef Py_ssize_t i
-        self.wheels = (frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
+        cdef Translation2d t
+        cdef tuple wheels = (frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
+        if self.wheels is not None:
+            raise TypeError("MecanumDriveKinematics is already initialised: __init__ cannot "
+                            "be called again")
         for i in range(4):
-            self.wx[i] = (<Translation2d>self.wheels[i]).v.x
-            self.wy[i] = (<Translation2d>self.wheels[i]).v.y
-            if not (isfinite(self.wx[i]) and isfinite(self.wy[i])):
-                raise ValueError(f"wheel {i} position must be finite (m), got {self.wheels[i]!r}")
-        # Force the first build, then keep the pseudo-inverse of the CoR = 0 matrix
-        # (numpy's SVD pinv, as WPILib Java's EJML; built once, so its cost is irrelevant).
-        self.cor = vec(float("nan"), 0.0)
-        self._set_cor(vec(0.0, 0.0))
-        cdef double[:, ::1] f = np.ascontiguousarray(
-            np.linalg.pinv(np.array([self.m[i] for i in range(12)]).reshape(4, 3)))
+            t = wheels[i]
+            if not (isfinite(t.v.x) and isfinite(t.v.y)):
+                raise ValueError(f"wheel {i} position must be finite (m), got {t!r}")
+        # The pseudo-inverse of the CoR = 0 matrix (numpy's SVD pinv, as WPILib Java's
+        # EJML; built once, so its cost is irrelevant), before the object is touched.
+        rows = []
+        for i in range(4):
+            t = wheels[i]
+            rows.append([1.0, -1.0, -(t.v.x + t.v.y)] if i == 0 or i == 3
+                        else [1.0, 1.0, t.v.x - t.v.y])
+        cdef double[:, ::1] f = np.ascontiguousarray(np.linalg.pinv(np.array(rows)))
+        for i in range(4):
+            t = wheels[i]
+            self.wx[i] = t.v.x
+            self.wy[i] = t.v.y
         for i in range(12):
             self.f[i] = f[i // 4, i % 4]
+        self.cor = vec(float("nan"), 0.0)       # forces the first build of the rows
+        self._set_cor(vec(0.0, 0.0))
+        self.wheels = wheels                    # last: what every method checks
+
+    cdef int _ready(self) except -1:
+        if self.wheels is None:
+            raise RuntimeError("MecanumDriveKinematics.__init__ has not completed")
+        return 0
 
     def __reduce__(self):
-        return (MecanumDriveKinematics, self.wheels)
+        # The sticky centre of rotation is state: a copy must behave like the original.
+        self._ready()
+        return (MecanumDriveKinematics, self.wheels, Translation2d(self.cor.x, self.cor.y))
+
+    def __setstate__(self, state):
+        """Restore the centre of rotation (used by copy and pickle)."""
+        self._ready()
+        if type(state) is not Translation2d:
+            raise TypeError(f"MecanumDriveKinematics state must be a Translation2d, "
+                            f"got {type_name(state)}")
+        self._set_cor((<Translation2d>state).v)
 
     def __repr__(self):
         return f"MecanumDriveKinematics({', '.join(repr(w) for w in self.wheels)})"
@@ -208,6 +235,7 @@ cdef class MecanumDriveKinematics:
         self.cor = cor
 
     cdef void _inverse(self, const double* x, object cor, double* out) except *:
+        self._ready()
         if not isinstance(cor, Translation2d):
             raise TypeError(f"centerOfRotation must be a Translation2d, got {type_name(cor)}")
         self._set_cor((<Translation2d>cor).v)
@@ -244,6 +272,7 @@ cdef class MecanumDriveKinematics:
 
     def toChassisVelocities(self, MecanumDriveWheelVelocities wheelVelocities not None):
         """Return the least-squares robot velocity for measured wheel velocities."""
+        self._ready()
         cdef ChassisVelocities out = new_chassis_velocities(0.0, 0.0, 0.0)
         mat_vec(3, 4, self.f, (<_WheelValues>wheelVelocities).w, &out.v.x)
         return out
@@ -251,6 +280,7 @@ cdef class MecanumDriveKinematics:
     def toChassisVelocitiesInto(self, MecanumDriveWheelVelocities wheelVelocities not None,
                                 ChassisVelocities out not None):
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+        self._ready()
         mat_vec(3, 4, self.f, (<_WheelValues>wheelVelocities).w, &out.v.x)
 
     def toTwist2d(self, MecanumDriveWheelPositions start not None, end=None):
@@ -261,6 +291,7 @@ cdef class MecanumDriveKinematics:
         cdef double d[4]
         cdef double r[3]
         cdef Py_ssize_t i
+        self._ready()
         if end is None:
             d = (<_WheelValues>start).w
         elif type(end) is MecanumDriveWheelPositions:
@@ -282,6 +313,7 @@ cdef class MecanumDriveKinematics:
     def toChassisAccelerations(self, MecanumDriveWheelAccelerations wheelAccelerations not None):
         """Return the least-squares chassis acceleration for wheel accelerations."""
         cdef double r[3]
+        self._ready()
         mat_vec(3, 4, self.f, (<_WheelValues>wheelAccelerations).w, r)
         return ChassisAccelerations(r[0], r[1], r[2])
 

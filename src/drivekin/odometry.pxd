@@ -10,12 +10,14 @@ from drivekin.mecanum cimport MecanumDriveKinematics
 cdef class _Odometry:
     cdef pose2_t pose            # current pose estimate (field frame, m)
     cdef rot2_t prev_gyro        # gyro reading at the last update/reset
+    cdef bint ready              # set by a completed __init__; nothing computes before
+    cdef int _start_init(self) except -1
+    cdef int _check(self) except -1
 
 @cython.final
 cdef class SwerveDriveOdometry(_Odometry):
     cdef SwerveDriveKinematics kin
     cdef double* prev            # module distances at the last update, m (n values)
-    cdef int _reset(self, Rotation2d gyroAngle, object modulePositions) except -1
 
 @cython.final
 cdef class MecanumDriveOdometry(_Odometry):

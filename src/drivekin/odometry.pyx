@@ -30,21 +30,36 @@ cdef pose2_t initial(object p) except *:
 cdef class _Odometry:
     """Pose state and the resets shared by every odometry class."""
 
+    cdef int _start_init(self) except -1:
+        if self.ready:
+            raise TypeError(f"{type(self).__name__} is already initialised: __init__ cannot "
+                            "be called again (use resetPosition)")
+        return 0
+
+    cdef int _check(self) except -1:
+        if not self.ready:
+            raise RuntimeError(f"{type(self).__name__}.__init__ has not completed")
+        return 0
+
     def getPose(self):
         """Return the current pose estimate (field frame, m)."""
+        self._check()
         return new_pose(self.pose)
 
     def resetPose(self, Pose2d pose not None):
         """Set the pose; the gyro and wheel baselines are left as they are."""
+        self._check()
         self.pose = pose.p
 
     def resetTranslation(self, Translation2d translation not None):
         """Set the position and keep the heading."""
+        self._check()
         self.pose.t = translation.v
 
     def resetRotation(self, Rotation2d rotation not None):
         """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
         here that makes the next update report a wrong heading; drivekin does not.)"""
+        self._check()
         self.pose.r = rotation.r
 
 
@@ -60,32 +75,33 @@ cdef class SwerveDriveOdometry(_Odometry):
 
     def __init__(self, SwerveDriveKinematics kinematics not None, Rotation2d gyroAngle not None,
                  modulePositions, initialPose=None):
-        if self.prev != NULL:
-            raise RuntimeError("SwerveDriveOdometry is already initialised")
-        self.prev = <double*>PyMem_Malloc(sizeof(double) * kinematics.n)
-        if self.prev == NULL:
+        cdef Py_ssize_t i
+        self._start_init()
+        cdef pose2_t p = initial(initialPose)
+        kinematics._read(modulePositions, SwerveModulePosition, "modulePositions")
+        cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kinematics.n)
+        if prev == NULL:
             raise MemoryError()
+        for i in range(kinematics.n):
+            prev[i] = kinematics.s0[i]
+        self.prev = prev
         self.kin = kinematics
-        self._reset(gyroAngle, modulePositions)
-        self.pose = initial(initialPose)
+        self.prev_gyro = gyroAngle.r
+        self.pose = p
+        self.ready = True
 
     def __dealloc__(self):
         PyMem_Free(self.prev)
 
     def resetPosition(self, Rotation2d gyroAngle not None, modulePositions, Pose2d pose not None):
         """Reset the pose, the gyro baseline and the module-position baseline."""
-        self._reset(gyroAngle, modulePositions)
-        self.pose = pose.p
-
-    cdef int _reset(self, Rotation2d gyroAngle, object modulePositions) except -1:
         cdef Py_ssize_t i
-        if self.kin is None:
-            raise RuntimeError("SwerveDriveOdometry.__init__ was not called")
+        self._check()
         self.kin._read(modulePositions, SwerveModulePosition, "modulePositions")
         for i in range(self.kin.n):
             self.prev[i] = self.kin.s0[i]
         self.prev_gyro = gyroAngle.r
-        return 0
+        self.pose = pose.p
 
     def update(self, Rotation2d gyroAngle not None, modulePositions):
         """Integrate the module-distance changes since the last call (at the current module
@@ -94,8 +110,7 @@ cdef class SwerveDriveOdometry(_Odometry):
         cdef Py_ssize_t i
         cdef double d
         cdef double r[3]
-        if k is None:
-            raise RuntimeError("SwerveDriveOdometry.__init__ was not called")
+        self._check()
         k._read(modulePositions, SwerveModulePosition, "modulePositions")
         for i in range(k.n):
             d = k.s0[i]
@@ -114,14 +129,18 @@ cdef class MecanumDriveOdometry(_Odometry):
 
     def __init__(self, MecanumDriveKinematics kinematics not None, Rotation2d gyroAngle not None,
                  MecanumDriveWheelPositions wheelPositions not None, initialPose=None):
+        self._start_init()
+        kinematics._ready()
+        self.pose = initial(initialPose)
         self.kin = kinematics
         self.prev = (<_WheelValues>wheelPositions).w
         self.prev_gyro = gyroAngle.r
-        self.pose = initial(initialPose)
+        self.ready = True
 
     def resetPosition(self, Rotation2d gyroAngle not None,
                       MecanumDriveWheelPositions wheelPositions not None, Pose2d pose not None):
         """Reset the pose, the gyro baseline and the wheel-position baseline."""
+        self._check()
         self.prev = (<_WheelValues>wheelPositions).w
         self.prev_gyro = gyroAngle.r
         self.pose = pose.p
@@ -134,8 +153,7 @@ cdef class MecanumDriveOdometry(_Odometry):
         cdef double r[3]
         cdef Py_ssize_t i
         cdef _WheelValues w = wheelPositions
-        if self.kin is None:
-            raise RuntimeError("MecanumDriveOdometry.__init__ was not called")
+        self._check()
         for i in range(4):
             d[i] = w.w[i] - self.prev[i]
         self.prev = w.w
@@ -153,14 +171,17 @@ cdef class DifferentialDriveOdometry(_Odometry):
 
     def __init__(self, Rotation2d gyroAngle not None, double leftDistance, double rightDistance,
                  initialPose=None):
+        self._start_init()
+        self.pose = initial(initialPose)
         self.prev_l = leftDistance
         self.prev_r = rightDistance
         self.prev_gyro = gyroAngle.r
-        self.pose = initial(initialPose)
+        self.ready = True
 
     def resetPosition(self, Rotation2d gyroAngle not None, double leftDistance,
                       double rightDistance, Pose2d pose not None):
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""
+        self._check()
         self.prev_l = leftDistance
         self.prev_r = rightDistance
         self.prev_gyro = gyroAngle.r
@@ -169,6 +190,7 @@ cdef class DifferentialDriveOdometry(_Odometry):
     def update(self, Rotation2d gyroAngle not None, double leftDistance, double rightDistance):
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
+        self._check()
         cdef double dl = leftDistance - self.prev_l, dr = rightDistance - self.prev_r
         self.prev_l = leftDistance
         self.prev_r = rightDistance
