@@ -10,9 +10,9 @@ owned by the caller. Kinematics objects carry heading memory and are not thread-
 cimport cython
 cimport numpy as cnp
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from cpython.ref cimport Py_INCREF, PyObject
+from cpython.ref cimport Py_DECREF, Py_INCREF, PyObject
 from cpython.sequence cimport PySequence_Fast, PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
-from cpython.list cimport PyList_CheckExact
+from cpython.list cimport PyList_CheckExact, PyList_GET_ITEM, PyList_GET_SIZE
 from cpython.buffer cimport PyObject_CheckBuffer
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, atan2, cos, fabs, isfinite, signbit, sin
@@ -572,6 +572,40 @@ cdef inline object as_fast(object seq, str what):
         raise TypeError(f"{what} must be a sequence, got {type_name(seq)}") from None
 
 
+cdef tuple snapshot(object seq, str what):
+    """Return a tuple of the items of ``seq`` that owns a reference to each.
+
+    ``tuple(a_list)`` is not enough: CPython allocates the tuple before copying the list's
+    item pointers, and that allocation can run a finalizer that empties the list, leaving
+    the copy reading freed items. Here the references are taken first, in memory whose
+    allocation never runs the garbage collector."""
+    cdef Py_ssize_t i, n
+    cdef PyObject** refs
+    cdef tuple t
+    if PyTuple_CheckExact(seq):
+        return <tuple>seq
+    if not PyList_CheckExact(seq):
+        return tuple(as_fast(seq, what))        # a fresh list or tuple: no one else sees it
+    n = PyList_GET_SIZE(seq)
+    refs = <PyObject**>PyMem_Malloc(sizeof(PyObject*) * (n + 1))
+    if refs == NULL:
+        raise MemoryError()
+    for i in range(n):
+        refs[i] = PyList_GET_ITEM(seq, i)
+        Py_INCREF(<object>refs[i])
+    try:
+        t = PyTuple_New(n)
+    except BaseException:
+        for i in range(n):
+            Py_DECREF(<object>refs[i])
+        PyMem_Free(refs)
+        raise
+    for i in range(n):
+        PyTuple_SET_ITEM(t, i, <object>refs[i])    # steals the reference taken above
+    PyMem_Free(refs)
+    return t
+
+
 cdef object varargs(object first, tuple more, type cls):
     """WPILib methods take Java varargs: accept f(a, b, c) or f([a, b, c]). Taking the
     first argument by name keeps the common one-sequence call free of tuple packing."""
@@ -670,9 +704,9 @@ cdef class SwerveDriveKinematics:
                             "be called again")
         if not moduleTranslations:
             raise ValueError("a swerve drive needs at least 2 modules, got 0")
-        mods = tuple(as_fast(varargs(moduleTranslations[0], moduleTranslations[1:], Translation2d),
-                             "SwerveDriveKinematics() takes Translation2d module positions or "
-                             "one sequence of them; the argument"))
+        mods = snapshot(varargs(moduleTranslations[0], moduleTranslations[1:], Translation2d),
+                        "SwerveDriveKinematics() takes Translation2d module positions or one "
+                        "sequence of them; the argument")
         cdef Py_ssize_t n = len(mods), i, k
         if n < 2:
             raise ValueError(f"a swerve drive needs at least 2 modules, got {n}")
@@ -935,8 +969,8 @@ cdef class SwerveDriveKinematics:
         """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
         # Tuples hold their items, so the results' allocations (and any finalizer they
         # trigger) cannot free an item under us.
-        cdef tuple fs = tuple(as_fast(startValue, "startValue"))
-        cdef tuple fe = tuple(as_fast(endValue, "endValue"))
+        cdef tuple fs = snapshot(startValue, "startValue")
+        cdef tuple fe = snapshot(endValue, "endValue")
         cdef Py_ssize_t i, k = len(fs)
         if len(fe) != k:
             raise ValueError(f"Inconsistent number of modules: start has {k}, end has {len(fe)}")
@@ -947,7 +981,7 @@ cdef class SwerveDriveKinematics:
 
     def copy(self, positions):
         """Return independent copies of the module positions (tuple)."""
-        cdef tuple ps = tuple(as_fast(positions, "positions"))
+        cdef tuple ps = snapshot(positions, "positions")
         cdef Py_ssize_t i
         for i in range(len(ps)):
             item(PySequence_Fast_ITEMS(ps), i, SwerveModulePosition, "positions")
