@@ -16,8 +16,10 @@ from drivekin._errors import type_name
 cdef class _Wheel2(_WheelValues):
     """Left and right wheel values."""
 
+    def __cinit__(self):
+        self.k = 2      # also for a bare __new__ and the internal factories
+
     def __init__(self, double left=0.0, double right=0.0):
-        self.k = 2
         self.w[0] = left
         self.w[1] = right
 
@@ -44,7 +46,6 @@ cdef class _Wheel2(_WheelValues):
 
 
 cdef inline _Wheel2 init2(_Wheel2 o, double l, double r):
-    o.k = 2
     o.w[0] = l
     o.w[1] = r
     return o
