@@ -650,11 +650,33 @@ def _table(r: dict) -> str:
     return "\n".join(f"{a:<{w0}}  {b:>{w1}}  {c}".rstrip() if b else a for a, b, c in rows)
 
 
-def _positive_float(text: str) -> float:
-    value = float(text)
-    if not (value > 0.0 and math.isfinite(value)):
-        raise argparse.ArgumentTypeError(f"must be a positive number, got {text}")
-    return value
+# Option ranges. The upper bounds keep a run's memory and time sane (--seconds sizes the
+# per-step sample array) and the inputs physically meaningful; NaN and infinities fail
+# every comparison and are refused with the rest.
+SECONDS_RANGE = (0.02, 3600.0)          # one 20 ms step .. one hour of robot time
+MAX_SPEED_RANGE = (0.0, 30.0)           # m/s, exclusive lower bound
+MAX_OMEGA_RANGE = (0.0, 100.0)          # rad/s, exclusive lower bound
+
+
+def _number_option(low: float, high: float, unit: str, low_inclusive: bool):
+    """An argparse ``type`` accepting a decimal number in the given range.
+
+    It raises only ArgumentTypeError, whose message argparse prints as is (any other
+    exception would make argparse name this function in the error)."""
+    expected = (f"a number from {low:g} to {high:g} {unit}" if low_inclusive else
+                f"a number greater than {low:g} and at most {high:g} {unit}")
+
+    def parse(text: str) -> float:
+        try:
+            value = float(text)
+        except ValueError:
+            value = math.nan
+        if not ((low <= value if low_inclusive else low < value) and value <= high):
+            shown = text if len(text) <= 32 else text[:29] + "..."
+            raise argparse.ArgumentTypeError(f"expected {expected}, got {shown!r}")
+        return value
+
+    return parse
 
 
 def parse_args(argv=None):
@@ -675,15 +697,18 @@ def parse_args(argv=None):
             "tracemalloc to count allocations."),
         epilog="Example: python -m drivekin --drivetrain mecanum --seconds 60 --max-speed 4",
     )
-    parser.add_argument("--seconds", type=_positive_float, default=180.0, metavar="S",
-                        help="simulated robot time in seconds; steps = S / 0.02 "
-                             "(default: 180, i.e. 9000 steps)")
-    parser.add_argument("--max-speed", type=_positive_float, default=4.5, metavar="MPS",
-                        help="attainable wheel speed in m/s: full stick deflection and the "
-                             "desaturation limit (default: 4.5)")
-    parser.add_argument("--max-omega", type=_positive_float, default=2.0 * math.pi,
-                        metavar="RADPS",
-                        help="rotation rate in rad/s at full rotation stick (default: 2π)")
+    parser.add_argument("--seconds", type=_number_option(*SECONDS_RANGE, "s", True),
+                        default=180.0, metavar="S",
+                        help="simulated robot time in seconds, 0.02 to 3600; "
+                             "steps = S / 0.02 (default: 180, i.e. 9000 steps)")
+    parser.add_argument("--max-speed", type=_number_option(*MAX_SPEED_RANGE, "m/s", False),
+                        default=4.5, metavar="MPS",
+                        help="attainable wheel speed in m/s (up to 30): full stick "
+                             "deflection and the desaturation limit (default: 4.5)")
+    parser.add_argument("--max-omega", type=_number_option(*MAX_OMEGA_RANGE, "rad/s", False),
+                        default=2.0 * math.pi, metavar="RADPS",
+                        help="rotation rate in rad/s (up to 100) at full rotation stick "
+                             "(default: 2π)")
     parser.add_argument("--drivetrain", choices=list(DRIVETRAINS), default="swerve",
                         help="drivetrain to simulate, with its kinematics and odometry classes "
                              "(default: swerve)")
@@ -698,9 +723,6 @@ def parse_args(argv=None):
 def main(argv=None) -> int:
     args = parse_args(argv)
     steps = round(args.seconds / DT)
-    if steps < 1:
-        print(f"--seconds {args.seconds} is shorter than one 20 ms step", file=sys.stderr)
-        return 2
     result = run(args)
     if args.json:
         print(json.dumps(result, indent=2))
