@@ -1,660 +1,45 @@
-"""``python -m drivekin``: a simulated 50 Hz drivetrain control loop on the allocation-free path.
+"""``python -m drivekin``: the command line of the drivetrain demo in :mod:`drivekin.demo`.
 
-The demo drives a swerve, mecanum or differential robot (``--drivetrain``) through a
-scripted joystick sequence for a few minutes of robot time and reports how long each
-20 ms control step took and whether the loop allocated memory. One step is exactly what a
-robot program does every 20 ms; for the default four-module swerve robot::
-
-    joystick script  -> ChassisVelocities (field-relative, one mutable object)
-    toRobotRelativeInto(gyro, cv)              field-relative -> robot-relative
-    cv.discretizeInto(0.02, cv)                remove the translate-while-turning drift
-    kin.toSwerveModuleVelocitiesInto(cv, targets)        inverse kinematics, in place
-    SwerveDriveKinematics.desaturateWheelVelocitiesInPlace(targets, max_speed)
-    module response model                      optimize(InPlace), rate-limited steering,
-                                               cosineScale(InPlace), lagged wheel, encoders
-    kin.toChassisVelocitiesInto(states, cv2)   simulated gyro: heading += omega * dt
-    pose = odometry.update(gyro, positions)    SwerveDriveOdometry; Pose2d from a freelist
-
-Mecanum: the same first two lines, then ``toWheelVelocitiesInto`` → ``desaturateInPlace``
-on a MecanumDriveWheelVelocities → first-order lag per wheel → wheel distances in one
-mutable MecanumDriveWheelPositions → ``MecanumDriveOdometry.update(gyro, positions)``.
-Differential (arcade drive): the forward and rotation sticks as robot-relative vx and
-omega, the sideways stick unused → ``toWheelVelocitiesInto`` → ``desaturateInPlace`` →
-lag per side → ``DifferentialDriveOdometry.update(gyro, left, right)``. In all three the
-simulated gyro is the true heading: the wheel model's forward kinematics
-(``toChassisVelocitiesInto`` of the measured wheel velocities) integrated over each step.
-
-Measurement, in two passes over identical fresh simulations (so the poses must agree):
-
-1. *Timing pass*, tracemalloc off: ``time.perf_counter_ns()`` around every step; the loop
-   runs flat out (no sleeping), the 20 ms period is only the budget the latencies are
-   compared with. The two clock reads (~0.1 µs) are included in each sample.
-2. *Allocation pass*, tracemalloc on (it slows every allocation down, so it must not
-   distort the timings): traced bytes are read once before the loop, the peak is reset,
-   and after the loop the peak and current traced bytes are compared with the start;
-   ``sys.getallocatedblocks()`` before and after gives the net change in live blocks.
-   Around the loop, ``drivekin._alloccount.AllocationCounter`` hooks CPython's RAW, MEM
-   and OBJ allocator domains and counts every malloc/calloc/realloc call: 0 calls means
-   the steady-state loop is served entirely by freelists (floats, drivekin value
-   objects) and preallocated objects. The tracemalloc figures are a second opinion.
-
-Before each pass: ``gc.collect()``, then the measured simulation is built, then a
-throw-away simulation runs one full script cycle as warm-up (caches, specialised
-bytecode) and is freed, refilling the freelists (see :func:`prepared_simulation`).
-
-Only the standard library and drivekin are used. Drivetrains plug in through
-:data:`DRIVETRAINS`: a :class:`Drivetrain` subclass with ``pose``, ``distance``,
-``describe()`` and ``step(command)``.
+This module only parses and validates the arguments and prints the report; the
+simulation and the measurements live in :mod:`drivekin.demo`.
 """
 from __future__ import annotations
 
 import argparse
-import gc
-import itertools
 import json
 import math
 import sys
-import time
-import tracemalloc
-from array import array
 
-import drivekin
-from drivekin._alloccount import AllocationCounter
-from drivekin import (
-    ChassisVelocities,
-    DifferentialDriveKinematics,
-    DifferentialDriveOdometry,
-    DifferentialDriveWheelVelocities,
-    MecanumDriveKinematics,
-    MecanumDriveOdometry,
-    MecanumDriveWheelPositions,
-    MecanumDriveWheelVelocities,
-    Pose2d,
-    Rotation2d,
-    SwerveDriveKinematics,
-    SwerveDriveOdometry,
-    SwerveModulePosition,
-    SwerveModuleVelocity,
-    Translation2d,
-)
+from drivekin.demo import DRIVETRAINS, DT, header, run, table
 
-DT = 0.02                   # control period, s (50 Hz)
-BUDGET_NS = 20_000_000      # the same period in ns, for the budget columns
 
-_cos = math.cos
-_hypot = math.hypot
-_from_radians = Rotation2d.fromRadians
-_desaturate_in_place = SwerveDriveKinematics.desaturateWheelVelocitiesInPlace
+# Option ranges. The upper bounds keep a run's memory and time sane (--seconds sizes the
+# per-step sample array) and the inputs physically meaningful; NaN and infinities fail
+# every comparison and are refused with the rest.
+SECONDS_RANGE = (0.02, 3600.0)          # one 20 ms step .. one hour of robot time
+MAX_SPEED_RANGE = (0.0, 30.0)           # m/s, exclusive lower bound
+MAX_OMEGA_RANGE = (0.0, 100.0)          # rad/s, exclusive lower bound
 
-# Hot-path rule for everything below: no Python ``for`` loops (list/tuple/range iterators
-# are heap objects), no new attributes (``__slots__``), no ints above 256 (small ints are
-# cached, larger ones are allocated), no containers built per step. Floats and drivekin
-# values are fine: they come from freelists.
 
+def _number_option(low: float, high: float, unit: str, low_inclusive: bool):
+    """An argparse ``type`` accepting a decimal number in the given range.
 
-# ---------------------------------------------------------------------------------------
-# Driver input
+    It raises only ArgumentTypeError, whose message argparse prints as is (any other
+    exception would make argparse name this function in the error)."""
+    expected = (f"a number from {low:g} to {high:g} {unit}" if low_inclusive else
+                f"a number greater than {low:g} and at most {high:g} {unit}")
 
-class JoystickScript:
-    """A deterministic driver: field-relative stick values, repeated every 30 s.
+    def parse(text: str) -> float:
+        try:
+            value = float(text)
+        except ValueError:
+            value = math.nan
+        if not ((low <= value if low_inclusive else low < value) and value <= high):
+            shown = text if len(text) <= 32 else text[:29] + "..."
+            raise argparse.ArgumentTypeError(f"expected {expected}, got {shown!r}")
+        return value
 
-    Segments (stick values in [-1, 1]; translation scaled by ``max_speed`` m/s, rotation
-    by ``max_omega`` rad/s):
-
-    ========  ====  ====================================================================
-    forward    3 s  +x at 0.5
-    strafe     3 s  +y (left) at 0.5
-    spin       3 s  rotate counter-clockwise at 0.5, no translation
-    figure-8  16 s  one lemniscate-like loop (x ~ sin ωt, y ~ sin 2ωt, returns to its
-                    start) while rotating at 0.35
-    return     3 s  -x and -y at 0.5, back towards the start
-    stop       2 s  sticks released
-    ========  ====  ====================================================================
-    """
-
-    SEGMENTS = (
-        ("forward", 3.0),
-        ("strafe", 3.0),
-        ("spin", 3.0),
-        ("figure-8", 16.0),
-        ("return", 3.0),
-        ("stop", 2.0),
-    )
-    CYCLE = sum(d for _, d in SEGMENTS)
-
-    __slots__ = ("_max_speed", "_max_omega", "_writers", "_durations", "_count", "_index",
-                 "_t", "_fig8_w")
-
-    def __init__(self, max_speed: float, max_omega: float) -> None:
-        self._max_speed = float(max_speed)
-        self._max_omega = float(max_omega)
-        # Plain functions, not bound methods: bound methods stored on self would form a
-        # reference cycle, leaving discarded simulations to the cyclic GC.
-        cls = type(self)
-        writers = {
-            "forward": cls._forward, "strafe": cls._strafe, "spin": cls._spin,
-            "figure-8": cls._figure8, "return": cls._return, "stop": cls._stop,
-        }
-        self._writers = tuple(writers[name] for name, _ in self.SEGMENTS)
-        self._durations = tuple(d for _, d in self.SEGMENTS)
-        self._count = len(self.SEGMENTS)
-        self._fig8_w = 2.0 * math.pi / dict(self.SEGMENTS)["figure-8"]
-        self._index = 0          # current segment (small int: no allocation)
-        self._t = 0.0            # time inside the segment, s
-
-    def write(self, cv: ChassisVelocities) -> None:
-        """Write this step's field-relative command (m/s, rad/s) into ``cv`` and advance
-        the script by one period."""
-        t = self._t
-        if t >= self._durations[self._index] - 1e-9:
-            self._index = (self._index + 1) % self._count
-            t = 0.0
-        self._writers[self._index](self, t, cv)
-        self._t = t + DT
-
-    def _set(self, cv, jx, jy, jr):
-        cv.vx = jx * self._max_speed
-        cv.vy = jy * self._max_speed
-        cv.omega = jr * self._max_omega
-
-    def _forward(self, t, cv):
-        self._set(cv, 0.5, 0.0, 0.0)
-
-    def _strafe(self, t, cv):
-        self._set(cv, 0.0, 0.5, 0.0)
-
-    def _spin(self, t, cv):
-        self._set(cv, 0.0, 0.0, 0.5)
-
-    def _figure8(self, t, cv):
-        w = self._fig8_w
-        self._set(cv, 0.3 * _cos(w * t), 0.3 * _cos(2.0 * w * t), 0.35)
-
-    def _return(self, t, cv):
-        self._set(cv, -0.5, -0.5, 0.0)
-
-    def _stop(self, t, cv):
-        self._set(cv, 0.0, 0.0, 0.0)
-
-
-# ---------------------------------------------------------------------------------------
-# Drivetrains
-
-class Drivetrain:
-    """Shared state of the simulated drivetrains: the simulated gyro, the odometry pose and
-    the path length. Subclasses set ``name``, ``ODOMETRY`` (the odometry class), ``INPUT``
-    and ``CHAIN`` (header text; CHAIN is one string per line) and implement ``describe()``
-    and ``step(command)``.
-
-    The gyro is the robot's true heading: the chassis rotation rate the wheel model
-    produces (its forward kinematics, ``toChassisVelocitiesInto`` of the measured wheel
-    velocities) integrated over each period. It is read like a real gyro, as a
-    continuous angle in a Rotation2d, and fed to the odometry together with the wheel
-    distances; the odometry trusts it for the heading."""
-
-    name = ""
-    ODOMETRY = None
-    INPUT = ""
-    CHAIN = ()
-
-    __slots__ = ("max_speed", "measured", "gyro", "odometry", "pose", "distance",
-                 "_gyro_rad", "_x", "_y")
-
-    def __init__(self, max_speed: float) -> None:
-        self.max_speed = float(max_speed)
-        self.measured = ChassisVelocities()   # wheel model's forward kinematics, per step
-        self._gyro_rad = 0.0                  # continuous (unwrapped) gyro angle, rad
-        self.gyro = Rotation2d()
-        self.distance = 0.0     # odometry path length: sum of per-step position changes, m
-        self._x = 0.0
-        self._y = 0.0
-        # Subclasses create ``self.odometry`` and then set ``self.pose`` from it.
-
-    def _gyro_step(self) -> Rotation2d:
-        """Advance the simulated gyro by the measured rotation rate; return the reading."""
-        angle = self._gyro_rad + self.measured.omega * DT
-        self._gyro_rad = angle
-        gyro = _from_radians(angle)
-        self.gyro = gyro
-        return gyro
-
-    def _record(self, pose: Pose2d) -> None:
-        """Keep the pose ``update`` returned and add its position change to the path."""
-        self.pose = pose
-        x = pose.x
-        y = pose.y
-        self.distance += _hypot(x - self._x, y - self._y)
-        self._x = x
-        self._y = y
-
-
-class SwerveModuleSim:
-    """One swerve module's response to its target, updating caller-visible objects in
-    place: ``state`` (measured SwerveModuleVelocity) and ``position`` (cumulative
-    SwerveModulePosition at the current module angle, like the encoders).
-
-    Model: WPILib's ``optimize`` (never steer more than 90°), steering rate-limited to
-    ``max_steer_rate`` rad/s towards the target, wheel speed a first-order lag with time
-    constant ``tau`` s towards the cosine-scaled target (a module that still points the
-    wrong way does not push). With ``optimizeInPlace``/``cosineScaleInPlace`` available
-    the target object itself is optimized and scaled; otherwise the returning forms are
-    used (new objects, from a freelist). Both give the same numbers."""
-
-    __slots__ = ("target", "state", "position", "_alpha", "_max_step")
-
-    def __init__(self, target: SwerveModuleVelocity, tau: float, max_steer_rate: float):
-        self.target = target
-        self.state = SwerveModuleVelocity(0.0, Rotation2d())
-        self.position = SwerveModulePosition(0.0, Rotation2d())
-        self._alpha = 1.0 - math.exp(-DT / tau)
-        self._max_step = max_steer_rate * DT
-
-    def _steer(self, current: Rotation2d, goal: Rotation2d) -> Rotation2d:
-        """The module angle after one period of rate-limited steering towards ``goal``."""
-        error = goal.minus(current).getRadians()
-        limit = self._max_step
-        if error > limit:
-            error = limit
-        elif error < -limit:
-            error = -limit
-        return current.plus(_from_radians(error))
-
-    def _drive(self, command: float, angle: Rotation2d) -> None:
-        """Lag the wheel speed towards ``command``; advance the encoder at ``angle``."""
-        state = self.state
-        state.angle = angle                           # the setter copies the value
-        v = state.velocity
-        v = v + (command - v) * self._alpha
-        state.velocity = v
-        position = self.position
-        position.distance = position.distance + v * DT
-        position.angle = angle
-
-    def update(self) -> None:
-        target = self.target          # rewritten by inverse kinematics every step
-        current = self.state.angle                    # Rotation2d (freelist)
-        target.optimizeInPlace(current)
-        angle = self._steer(current, target.angle)
-        target.cosineScaleInPlace(angle)
-        self._drive(target.velocity, angle)
-
-
-class SwerveDrive(Drivetrain):
-    """Four-module swerve robot: inverse kinematics with desaturation, the module model,
-    the simulated gyro and SwerveDriveOdometry, all writing into preallocated objects."""
-
-    name = "swerve"
-    ODOMETRY = SwerveDriveOdometry
-    INPUT = "field-relative joystick"
-    CHAIN = ("toRobotRelativeInto → discretizeInto → toSwerveModuleVelocitiesInto →",
-             "desaturateWheelVelocitiesInPlace → module model: optimizeInPlace, steering limit,",
-             "cosineScaleInPlace, wheel lag → SwerveDriveOdometry.update(gyro, positions)")
-    HALF_TRACK = 0.3        # m, module offset from the robot centre in x and y
-    WHEEL_TAU = 0.05        # s, wheel-speed time constant
-    STEER_RATE = 4.0 * math.pi   # rad/s, steering rate limit
-
-    __slots__ = ("kinematics", "targets", "states", "positions", "_m0", "_m1", "_m2", "_m3")
-
-    def __init__(self, max_speed: float) -> None:
-        super().__init__(max_speed)
-        h = self.HALF_TRACK
-        self.kinematics = SwerveDriveKinematics(
-            Translation2d(h, h), Translation2d(h, -h), Translation2d(-h, h), Translation2d(-h, -h))
-        self.targets = [SwerveModuleVelocity() for _ in range(4)]
-        modules = [SwerveModuleSim(t, self.WHEEL_TAU, self.STEER_RATE) for t in self.targets]
-        self._m0, self._m1, self._m2, self._m3 = modules
-        self.states = [m.state for m in modules]
-        self.positions = [m.position for m in modules]
-        self.odometry = SwerveDriveOdometry(self.kinematics, self.gyro, self.positions)
-        self.pose = self.odometry.getPose()
-
-    def describe(self) -> str:
-        h = self.HALF_TRACK
-        return (f"swerve, 4 modules at (±{h:.2f}, ±{h:.2f}) m; wheel lag τ = "
-                f"{self.WHEEL_TAU * 1000:.0f} ms, steering ≤ {self.STEER_RATE:.1f} rad/s")
-
-    def step(self, command: ChassisVelocities) -> None:
-        """Run one control period for a field-relative ``command`` (overwritten: it is the
-        scratch object the chain works in)."""
-        command.toRobotRelativeInto(self.gyro, command)
-        command.discretizeInto(DT, command)
-        kinematics = self.kinematics
-        kinematics.toSwerveModuleVelocitiesInto(command, self.targets)
-        _desaturate_in_place(self.targets, self.max_speed)
-        # Unrolled on purpose: a ``for`` over the modules would allocate an iterator.
-        self._m0.update()
-        self._m1.update()
-        self._m2.update()
-        self._m3.update()
-        kinematics.toChassisVelocitiesInto(self.states, self.measured)
-        self._record(self.odometry.update(self._gyro_step(), self.positions))
-
-
-class MecanumDrive(Drivetrain):
-    """Four-wheel mecanum robot: inverse kinematics, desaturation, a first-order lag per
-    wheel, wheel distances in one mutable MecanumDriveWheelPositions, the simulated gyro
-    and MecanumDriveOdometry."""
-
-    name = "mecanum"
-    ODOMETRY = MecanumDriveOdometry
-    INPUT = "field-relative joystick"
-    CHAIN = ("toRobotRelativeInto → discretizeInto → toWheelVelocitiesInto → desaturateInPlace",
-             "→ wheel lag → MecanumDriveWheelPositions (in place) → "
-             "MecanumDriveOdometry.update")
-    HALF_LENGTH = 0.3       # m, wheel offset from the robot centre in x
-    HALF_WIDTH = 0.25       # m, wheel offset from the robot centre in y
-    WHEEL_TAU = 0.05        # s, wheel-speed time constant
-
-    __slots__ = ("kinematics", "targets", "wheels", "positions", "_alpha")
-
-    def __init__(self, max_speed: float) -> None:
-        super().__init__(max_speed)
-        x, y = self.HALF_LENGTH, self.HALF_WIDTH
-        self.kinematics = MecanumDriveKinematics(
-            Translation2d(x, y), Translation2d(x, -y), Translation2d(-x, y), Translation2d(-x, -y))
-        self.targets = MecanumDriveWheelVelocities()
-        self.wheels = MecanumDriveWheelVelocities()      # measured wheel velocities
-        self.positions = MecanumDriveWheelPositions()    # encoder distances
-        self._alpha = 1.0 - math.exp(-DT / self.WHEEL_TAU)
-        self.odometry = MecanumDriveOdometry(self.kinematics, self.gyro, self.positions)
-        self.pose = self.odometry.getPose()
-
-    def describe(self) -> str:
-        return (f"mecanum, 4 wheels at (±{self.HALF_LENGTH:.2f}, ±{self.HALF_WIDTH:.2f}) m; "
-                f"wheel lag τ = {self.WHEEL_TAU * 1000:.0f} ms")
-
-    def step(self, command: ChassisVelocities) -> None:
-        """Run one control period for a field-relative ``command`` (overwritten)."""
-        command.toRobotRelativeInto(self.gyro, command)
-        command.discretizeInto(DT, command)
-        kinematics = self.kinematics
-        t = self.targets
-        kinematics.toWheelVelocitiesInto(command, t)
-        t.desaturateInPlace(self.max_speed)
-        w = self.wheels
-        p = self.positions
-        a = self._alpha
-        v = w.frontLeft
-        v = v + (t.frontLeft - v) * a
-        w.frontLeft = v
-        p.frontLeft = p.frontLeft + v * DT
-        v = w.frontRight
-        v = v + (t.frontRight - v) * a
-        w.frontRight = v
-        p.frontRight = p.frontRight + v * DT
-        v = w.rearLeft
-        v = v + (t.rearLeft - v) * a
-        w.rearLeft = v
-        p.rearLeft = p.rearLeft + v * DT
-        v = w.rearRight
-        v = v + (t.rearRight - v) * a
-        w.rearRight = v
-        p.rearRight = p.rearRight + v * DT
-        kinematics.toChassisVelocitiesInto(w, self.measured)
-        self._record(self.odometry.update(self._gyro_step(), p))
-
-
-class DifferentialDrive(Drivetrain):
-    """Differential (tank) robot driven arcade-style: the forward and rotation sticks are
-    robot-relative vx and omega, the sideways stick is unused (a differential drive cannot
-    strafe). Inverse kinematics, desaturation, a first-order lag per side, the simulated
-    gyro and DifferentialDriveOdometry."""
-
-    name = "differential"
-    ODOMETRY = DifferentialDriveOdometry
-    INPUT = "arcade joystick (robot-relative; sideways stick unused)"
-    CHAIN = ("vy := 0 → toWheelVelocitiesInto → desaturateInPlace → wheel lag → distances →",
-             "DifferentialDriveOdometry.update(gyro, left, right)")
-    TRACKWIDTH = 0.6        # m, distance between the left and right wheels
-    WHEEL_TAU = 0.05        # s, wheel-speed time constant
-
-    __slots__ = ("kinematics", "targets", "wheels", "left", "right", "_alpha")
-
-    def __init__(self, max_speed: float) -> None:
-        super().__init__(max_speed)
-        self.kinematics = DifferentialDriveKinematics(self.TRACKWIDTH)
-        self.targets = DifferentialDriveWheelVelocities()
-        self.wheels = DifferentialDriveWheelVelocities()  # measured wheel velocities
-        self.left = 0.0         # encoder distances, m
-        self.right = 0.0
-        self._alpha = 1.0 - math.exp(-DT / self.WHEEL_TAU)
-        self.odometry = DifferentialDriveOdometry(self.gyro, self.left, self.right)
-        self.pose = self.odometry.getPose()
-
-    def describe(self) -> str:
-        return (f"differential, trackwidth {self.TRACKWIDTH:.2f} m; "
-                f"wheel lag τ = {self.WHEEL_TAU * 1000:.0f} ms")
-
-    def step(self, command: ChassisVelocities) -> None:
-        """Run one control period for the stick values in ``command`` (overwritten)."""
-        command.vy = 0.0        # documents the choice; toWheelVelocitiesInto ignores vy
-        kinematics = self.kinematics
-        t = self.targets
-        kinematics.toWheelVelocitiesInto(command, t)
-        t.desaturateInPlace(self.max_speed)
-        w = self.wheels
-        a = self._alpha
-        v = w.left
-        v = v + (t.left - v) * a
-        w.left = v
-        left = self.left + v * DT
-        self.left = left
-        v = w.right
-        v = v + (t.right - v) * a
-        w.right = v
-        right = self.right + v * DT
-        self.right = right
-        kinematics.toChassisVelocitiesInto(w, self.measured)
-        self._record(self.odometry.update(self._gyro_step(), left, right))
-
-
-DRIVETRAINS = {cls.name: cls for cls in (SwerveDrive, MecanumDrive, DifferentialDrive)}
-
-
-# ---------------------------------------------------------------------------------------
-# Simulation and measurement
-
-class Simulation:
-    """Driver script + drivetrain; :meth:`step` is one 20 ms control period."""
-
-    __slots__ = ("script", "drive", "command")
-
-    def __init__(self, drivetrain: str, max_speed: float, max_omega: float) -> None:
-        self.script = JoystickScript(max_speed, max_omega)
-        self.drive = DRIVETRAINS[drivetrain](max_speed)
-        self.command = ChassisVelocities()
-
-    def step(self) -> None:
-        self.script.write(self.command)
-        self.drive.step(self.command)
-
-
-def prepared_simulation(args) -> Simulation:
-    """Return a fresh simulation (robot at the origin, script at t = 0) with the process
-    warmed up for it.
-
-    Order matters: ``gc.collect()`` first, so pending garbage is not collected inside the
-    measured loop (a full collection also empties CPython's float/tuple freelists); then
-    the measured simulation is built; then a throw-away simulation runs one script cycle
-    (caches, specialised bytecode) and is freed by reference counting, which refills the
-    freelists the measured loop draws from."""
-    gc.collect()
-    sim = Simulation(args.drivetrain, args.max_speed, args.max_omega)
-    warm = Simulation(args.drivetrain, args.max_speed, args.max_omega)
-    step = warm.step
-    for _ in itertools.repeat(None, round(JoystickScript.CYCLE / DT)):
-        step()
-    del warm, step
-    return sim
-
-
-def timing_pass(args, steps: int):
-    """Run ``steps`` steps on a fresh simulation, timing each one; tracemalloc is off."""
-    sim = prepared_simulation(args)
-    samples = array("q", bytes(8 * steps))
-    step = sim.step
-    clock = time.perf_counter_ns
-    gcc = array("q", [0] * 6)               # gc.get_count(): start, end (as in pass 2)
-    col0 = sum(s["collections"] for s in gc.get_stats())
-    gcc[0], gcc[1], gcc[2] = gc.get_count()
-    wall0 = clock()
-    for i in range(steps):
-        t0 = clock()
-        step()
-        samples[i] = clock() - t0
-    wall = clock() - wall0
-    gcc[3], gcc[4], gcc[5] = gc.get_count()
-    col1 = sum(s["collections"] for s in gc.get_stats())
-    growth = (gcc[3] - gcc[0], gcc[4] - gcc[1], gcc[5] - gcc[2])
-    return sim, samples, wall, growth, col1 - col0
-
-
-def allocation_pass(args, steps: int):
-    """Run ``steps`` steps on a fresh simulation under tracemalloc (no timing)."""
-    sim = prepared_simulation(args)
-    step = sim.step
-    loop = itertools.repeat(None, steps)    # created before the measurement starts
-    # Readings are stored into preallocated arrays, so the tuples and ints the calls
-    # return are freed at once and count neither as live blocks nor towards the peak.
-    mem = array("q", [0, 0, 0])             # traced bytes: start, end, peak
-    blk = array("q", [0, 0])                # sys.getallocatedblocks(): start, end
-    gcc = array("q", [0] * 6)               # gc.get_count(): start, end
-    counter = AllocationCounter()
-    # Bound once here: looking the methods up inside the measured region would allocate.
-    count_on, count_off = counter.__enter__, counter.__exit__
-    already = tracemalloc.is_tracing()
-    if not already:
-        tracemalloc.start()
-    gcc[0], gcc[1], gcc[2] = gc.get_count()
-    blk[0] = sys.getallocatedblocks()
-    mem[0] = tracemalloc.get_traced_memory()[0]
-    tracemalloc.reset_peak()                # peak := current == mem[0] (temporaries freed)
-    count_on()                              # hooks the allocators on top of tracemalloc's
-    for _ in loop:
-        step()
-    count_off(None, None, None)
-    mem[1], mem[2] = tracemalloc.get_traced_memory()
-    blk[1] = sys.getallocatedblocks()
-    gcc[3], gcc[4], gcc[5] = gc.get_count()
-    if not already:
-        tracemalloc.stop()
-    return {
-        "sim": sim,
-        "allocator_calls": counter.calls,
-        "peak_bytes": mem[2] - mem[0],
-        "net_bytes": mem[1] - mem[0],
-        "net_blocks": blk[1] - blk[0],
-        "gc_growth": (gcc[3] - gcc[0], gcc[4] - gcc[1], gcc[5] - gcc[2]),
-    }
-
-
-def _percentile(sorted_samples, p: float) -> int:
-    """Nearest-rank percentile of an ascending sequence."""
-    n = len(sorted_samples)
-    return sorted_samples[max(0, min(n - 1, math.ceil(p / 100.0 * n) - 1))]
-
-
-def _pose_dict(drive) -> dict:
-    pose = drive.pose
-    return {"x_m": pose.x, "y_m": pose.y, "heading_deg": pose.getRotation().getDegrees()}
-
-
-def run(args) -> dict:
-    steps = round(args.seconds / DT)
-    sim1, samples, wall, gc_growth, collections = timing_pass(args, steps)
-    alloc = allocation_pass(args, steps)
-    ordered = sorted(samples)
-    mean = sum(samples) / steps
-    p50, p99, worst = _percentile(ordered, 50), _percentile(ordered, 99), ordered[-1]
-    pose1, pose2 = _pose_dict(sim1.drive), _pose_dict(alloc["sim"].drive)
-    return {
-        "drivetrain": args.drivetrain,
-        "odometry": DRIVETRAINS[args.drivetrain].ODOMETRY.__name__,
-        "robot_seconds": steps * DT,
-        "steps": steps,
-        "dt_s": DT,
-        "max_speed_mps": args.max_speed,
-        "max_omega_radps": args.max_omega,
-        "latency_us": {"p50": p50 / 1e3, "p99": p99 / 1e3, "max": worst / 1e3,
-                       "mean": mean / 1e3},
-        "budget_pct": {"p99": 100.0 * p99 / BUDGET_NS, "mean": 100.0 * mean / BUDGET_NS},
-        "loop_wall_s": wall / 1e9,
-        "realtime_factor": steps * DT / (wall / 1e9),
-        "allocations": {"allocator_calls": alloc["allocator_calls"],
-                        "traced_peak_bytes": alloc["peak_bytes"],
-                        "traced_net_bytes": alloc["net_bytes"],
-                        "net_blocks": alloc["net_blocks"]},
-        "gc": {"count_growth_timing_pass": list(gc_growth),
-               "count_growth_allocation_pass": list(alloc["gc_growth"]),
-               "collections_timing_pass": collections},
-        "final_pose": pose1,
-        "distance_m": sim1.drive.distance,
-        "passes_agree": pose1 == pose2 and sim1.drive.distance == alloc["sim"].drive.distance,
-    }
-
-
-# ---------------------------------------------------------------------------------------
-# Output
-
-def _header(args, steps: int) -> str:
-    drive = DRIVETRAINS[args.drivetrain](args.max_speed)
-    segments = " · ".join(f"{name} {d:g} s" for name, d in JoystickScript.SEGMENTS)
-    return "\n".join([
-        f"drivekin {drivekin.__version__} — simulated 50 Hz {drive.name} drive control loop, "
-        "allocation-free path",
-        f"  robot    {drive.describe()}",
-        f"  odometry {drive.ODOMETRY.__name__}, gyro = true heading integrated from the "
-        "simulated",
-        "           wheels (toChassisVelocitiesInto of the measured wheel velocities)",
-        f"  limits   wheel speed {args.max_speed:g} m/s, joystick rotation "
-        f"{args.max_omega:.2f} rad/s",
-        f"  script   {drive.INPUT}, repeats every {JoystickScript.CYCLE:g} s:",
-        f"           {segments}",
-        *(f"  {'step' if i == 0 else '':<8} {line}" for i, line in enumerate(drive.CHAIN)),
-        f"  run      {steps * DT:g} s robot time = {steps} steps, flat out (no sleeping);",
-        "           pass 1 times each step (tracemalloc off), pass 2 counts allocations",
-        "           (tracemalloc on); one warm-up script cycle before each pass",
-        "",
-    ])
-
-
-def _table(r: dict) -> str:
-    lat, bud, al, g, pose = (r["latency_us"], r["budget_pct"], r["allocations"], r["gc"],
-                             r["final_pose"])
-    growth = ", ".join(f"{v:+d}" for v in g["count_growth_timing_pass"])
-    growth2 = ", ".join(f"{v:+d}" for v in g["count_growth_allocation_pass"])
-    rows = [
-        ("latency per step", "", ""),
-        ("  p50", f"{lat['p50']:.2f} µs", f"{100 * lat['p50'] * 1e3 / BUDGET_NS:.3f} % of 20 ms"),
-        ("  p99", f"{lat['p99']:.2f} µs", f"{bud['p99']:.3f} % of 20 ms"),
-        ("  max", f"{lat['max']:.2f} µs", f"{100 * lat['max'] * 1e3 / BUDGET_NS:.3f} % of 20 ms"),
-        ("  mean", f"{lat['mean']:.2f} µs", f"{bud['mean']:.3f} % of 20 ms"),
-        ("  whole loop", f"{r['loop_wall_s'] * 1e3:.1f} ms",
-         f"{r['realtime_factor']:,.0f}× real time"),
-        ("allocations (pass 2)", "", ""),
-        ("  allocator calls", f"{al['allocator_calls']}",
-         f"PyMem/PyObject malloc+calloc+realloc in {r['steps']} steps"),
-        ("  traced peak - start", f"{al['traced_peak_bytes']} B", "tracemalloc"),
-        ("  traced end - start", f"{al['traced_net_bytes']} B", ""),
-        ("  live blocks end - start", f"{al['net_blocks']}", "sys.getallocatedblocks()"),
-        ("  gc.get_count() growth", f"{growth2}", f"gen 0, 1, 2 (pass 1: {growth})"),
-        ("  gc collections", f"{g['collections_timing_pass']}", "during pass 1"),
-        ("result", "", ""),
-        ("  final pose", f"x {pose['x_m']:.3f} m, y {pose['y_m']:.3f} m",
-         f"heading {pose['heading_deg']:.2f}°"),
-        ("  distance travelled", f"{r['distance_m']:.2f} m", "odometry path length"),
-        ("  passes agree", "yes" if r["passes_agree"] else "NO", "pass 1 pose == pass 2 pose"),
-    ]
-    w0 = max(len(a) for a, _, _ in rows)
-    w1 = max(len(b) for _, b, _ in rows)
-    return "\n".join(f"{a:<{w0}}  {b:>{w1}}  {c}".rstrip() if b else a for a, b, c in rows)
-
-
-def _positive_float(text: str) -> float:
-    value = float(text)
-    if not (value > 0.0 and math.isfinite(value)):
-        raise argparse.ArgumentTypeError(f"must be a positive number, got {text}")
-    return value
+    return parse
 
 
 def parse_args(argv=None):
@@ -675,15 +60,18 @@ def parse_args(argv=None):
             "tracemalloc to count allocations."),
         epilog="Example: python -m drivekin --drivetrain mecanum --seconds 60 --max-speed 4",
     )
-    parser.add_argument("--seconds", type=_positive_float, default=180.0, metavar="S",
-                        help="simulated robot time in seconds; steps = S / 0.02 "
-                             "(default: 180, i.e. 9000 steps)")
-    parser.add_argument("--max-speed", type=_positive_float, default=4.5, metavar="MPS",
-                        help="attainable wheel speed in m/s: full stick deflection and the "
-                             "desaturation limit (default: 4.5)")
-    parser.add_argument("--max-omega", type=_positive_float, default=2.0 * math.pi,
-                        metavar="RADPS",
-                        help="rotation rate in rad/s at full rotation stick (default: 2π)")
+    parser.add_argument("--seconds", type=_number_option(*SECONDS_RANGE, "s", True),
+                        default=180.0, metavar="S",
+                        help="simulated robot time in seconds, 0.02 to 3600; "
+                             "steps = S / 0.02 (default: 180, i.e. 9000 steps)")
+    parser.add_argument("--max-speed", type=_number_option(*MAX_SPEED_RANGE, "m/s", False),
+                        default=4.5, metavar="MPS",
+                        help="attainable wheel speed in m/s (up to 30): full stick "
+                             "deflection and the desaturation limit (default: 4.5)")
+    parser.add_argument("--max-omega", type=_number_option(*MAX_OMEGA_RANGE, "rad/s", False),
+                        default=2.0 * math.pi, metavar="RADPS",
+                        help="rotation rate in rad/s (up to 100) at full rotation stick "
+                             "(default: 2π)")
     parser.add_argument("--drivetrain", choices=list(DRIVETRAINS), default="swerve",
                         help="drivetrain to simulate, with its kinematics and odometry classes "
                              "(default: swerve)")
@@ -698,16 +86,13 @@ def parse_args(argv=None):
 def main(argv=None) -> int:
     args = parse_args(argv)
     steps = round(args.seconds / DT)
-    if steps < 1:
-        print(f"--seconds {args.seconds} is shorter than one 20 ms step", file=sys.stderr)
-        return 2
     result = run(args)
     if args.json:
         print(json.dumps(result, indent=2))
     else:
         if not args.quiet:
-            print(_header(args, steps))
-        print(_table(result))
+            print(header(args, steps))
+        print(table(result))
     return 0
 
 

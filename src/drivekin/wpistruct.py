@@ -49,15 +49,20 @@ SwerveDriveKinematics has one struct type per module count N (``SwerveDriveKinem
 for four modules). Functions given an *instance* read N from it; given the *class* they
 need ``numModules=N`` — except :func:`unpack`, which infers ``N = (len(data) - offset) //
 16`` when ``numModules`` is omitted (the byte count must then be a multiple of 16 and at
-least 32, since a swerve drive has N ≥ 2).
+least 32, since a swerve drive has N ≥ 2). ``numModules`` must be an int with
+2 ≤ N ≤ :data:`MAX_SWERVE_MODULES` (``sys.maxsize // 16``, so that 16·N bytes fit in a
+buffer); other values raise ValueError (TypeError if not an int) before anything is
+built.
 
 Only the kinematics *geometry* is serialized: a SwerveDriveKinematics' heading memory and
 sticky centre of rotation (and a MecanumDriveKinematics' centre of rotation) are not part
 of the struct, so an unpacked copy starts fresh, as in WPILib.
 
-Every function taking bytes accepts any C-contiguous bytes-like object (bytes,
-bytearray, memoryview, numpy arrays, ...); the sizes are byte counts. Wrong types raise
-TypeError; wrong byte counts and values the drivekin constructors reject (a trackwidth
+Every function taking bytes accepts any C-contiguous bytes-like object whose items are
+plain bytes or numbers (bytes, bytearray, memoryview, array.array, numeric numpy arrays,
+...); the sizes are byte counts. Buffers of Python objects (``dtype=object`` arrays) or
+other non-numeric item formats are refused with TypeError, since their memory holds
+object pointers, not data. Wrong types raise TypeError; wrong byte counts and values the drivekin constructors reject (a trackwidth
 that is not positive and finite, fewer than two swerve modules, NaN/inf module positions)
 raise ValueError. (Apart from N ≥ 2, those checks are drivekin's own: bytes that WPILib
 would decode into a degenerate kinematics object are rejected here.)
@@ -76,8 +81,11 @@ Example::
 """
 from __future__ import annotations
 
+import functools
 import operator
+import re
 import struct
+import sys
 from collections.abc import Callable, Iterable
 from typing import Any, TypeVar, Union
 
@@ -104,6 +112,7 @@ from drivekin.mecanum import (
 )
 
 __all__ = [
+    "MAX_SWERVE_MODULES",
     "STRUCT_TYPES",
     "StructValue",
     "forEachNested",
@@ -255,8 +264,9 @@ _register(MecanumDriveKinematics, "MecanumDriveKinematics",
                    lambda *v: MecanumDriveKinematics(
                        _T(v[0], v[1]), _T(v[2], v[3]), _T(v[4], v[5]), _T(v[6], v[7]))))
 
-# SwerveDriveKinematics: one spec per module count, created on first use.
-_SWERVE_SPECS: dict[int, _Spec] = {}
+#: Largest module count a SwerveDriveKinematics struct may declare: its 16·N bytes must
+#: fit in one buffer (a Py_ssize_t byte count).
+MAX_SWERVE_MODULES = sys.maxsize // 16
 
 
 def _flat_swerve(k: SwerveDriveKinematics) -> tuple[float, ...]:
@@ -266,20 +276,34 @@ def _flat_swerve(k: SwerveDriveKinematics) -> tuple[float, ...]:
     return tuple(out)
 
 
+def _int_text(n: int) -> str:
+    # str() of an int beyond sys.get_int_max_str_digits() raises ValueError itself.
+    return str(n) if n.bit_length() <= 128 else ("a huge negative number" if n < 0
+                                                  else "a huge number")
+
+
 def _swerve_spec(n: int) -> _Spec:
-    spec = _SWERVE_SPECS.get(n)
-    if spec is None:
-        if n < 2:
-            raise ValueError(f"a SwerveDriveKinematics struct needs numModules >= 2, got {n}")
+    # Range checks come before the cache, so no spec is built for a count that cannot be
+    # valid, whatever its size.
+    if n < 2:
+        raise ValueError(f"a SwerveDriveKinematics struct needs numModules >= 2, "
+                         f"got {_int_text(n)}")
+    if n > MAX_SWERVE_MODULES:
+        raise ValueError(f"a SwerveDriveKinematics struct needs numModules <= "
+                         f"{MAX_SWERVE_MODULES} (16·N bytes must fit in a buffer), "
+                         f"got {_int_text(n)}")
+    return _cached_swerve_spec(n)
 
-        def build(*v: float) -> SwerveDriveKinematics:
-            return SwerveDriveKinematics([_T(v[j], v[j + 1]) for j in range(0, len(v), 2)])
 
-        spec = _Spec(SwerveDriveKinematics, f"SwerveDriveKinematics__{n}",
-                     f"Translation2d modules[{n}]", 2 * n, (Translation2d,),
-                     _flat_swerve, _checked(f"SwerveDriveKinematics__{n}", build))
-        _SWERVE_SPECS[n] = spec
-    return spec
+# Bounded: a caller iterating over many module counts must not keep a spec for each.
+@functools.lru_cache(maxsize=32)
+def _cached_swerve_spec(n: int) -> _Spec:
+    def build(*v: float) -> SwerveDriveKinematics:
+        return SwerveDriveKinematics([_T(v[j], v[j + 1]) for j in range(0, len(v), 2)])
+
+    return _Spec(SwerveDriveKinematics, f"SwerveDriveKinematics__{n}",
+                 f"Translation2d modules[{n}]", 2 * n, (Translation2d,),
+                 _flat_swerve, _checked(f"SwerveDriveKinematics__{n}", build))
 
 
 #: Every drivekin class this module can serialize (SwerveDriveKinematics: any N >= 2).
@@ -327,9 +351,11 @@ def _spec_of(x: object, numModules: int | None = None) -> _Spec:
         return spec
     if type(x) is SwerveDriveKinematics:
         n = x.getNumModules()
-        if numModules is not None and _num_modules(numModules) != n:
-            raise ValueError(f"numModules={numModules} does not match the instance's "
-                             f"{n} modules")
+        if numModules is not None:
+            given = _num_modules(numModules)
+            if given != n:
+                raise ValueError(f"numModules={_int_text(given)} does not match the "
+                                 f"instance's {n} modules")
         return _swerve_spec(n)
     raise TypeError(f"cannot serialize a {type(x).__module__}.{type(x).__qualname__}; "
                     f"supported drivekin types: {_SUPPORTED}")
@@ -368,12 +394,34 @@ def _check_offset(offset: object) -> int:
     return off
 
 
+# Item formats of buffers whose memory is plain bytes or numbers (optionally with a
+# byte-order prefix; "Zd" etc. are numpy's complex types, "5s" fixed-size bytes). Anything
+# else is refused: object arrays ("O") hold PyObject pointers that raw doubles must never
+# overwrite or be read from, and pointer ("P", "&d"), structured ("T{...}") or text formats
+# are not plain data either.
+_PLAIN_FORMAT = re.compile(r"[@=<>!]?(?:[bBchHiIlLqQnNefdg?]|Z[fdg]|\d*s)")
+
+
 def _view(data: object) -> memoryview:
+    """A memoryview of ``data`` after checking it holds plain bytes or numbers.
+
+    Callers keep the view (``with``) for as long as they use its memory: while it is
+    held the exporter cannot resize or free the memory (a bytearray refuses to resize, a
+    released memoryview stays alive underneath). Validate every other argument, which
+    may run Python code (``__index__``), before taking the view."""
     try:
-        return memoryview(data)  # type: ignore[arg-type]
+        mv = memoryview(data)  # type: ignore[arg-type]
     except TypeError:
         raise TypeError(f"expected a bytes-like object (bytes, bytearray, memoryview), "
                         f"got {type(data).__name__}") from None
+    fmt = mv.format
+    if _PLAIN_FORMAT.fullmatch(fmt) is None:
+        mv.release()
+        what = "object (dtype=object)" if fmt.lstrip("@=<>!") == "O" else repr(fmt)
+        raise TypeError(f"expected a buffer of plain bytes or numbers (bytes, bytearray, "
+                        f"a numeric numpy array, ...), got {type(data).__name__} with "
+                        f"item format {what}")
+    return mv
 
 
 # ---------------------------------------------------------------------------------------
@@ -467,6 +515,7 @@ def packInto(obj: StructValue, buffer: BytesLike, offset: int = 0) -> None:
         spec.struct.pack_into(buffer, offset, *spec.flatten(obj))
         return
     off = _check_offset(offset)
+    values = spec.flatten(obj)
     with _view(buffer) as mv:
         if mv.readonly:
             raise TypeError(f"packInto() needs a writable buffer, got a read-only "
@@ -475,7 +524,7 @@ def packInto(obj: StructValue, buffer: BytesLike, offset: int = 0) -> None:
         if avail < spec.size:
             raise ValueError(f"{spec.typeString} needs {spec.size} bytes at offset {off}, "
                              f"the buffer has {max(avail, 0)}")
-        spec.struct.pack_into(mv, off, *spec.flatten(obj))
+        spec.struct.pack_into(mv, off, *values)
 
 
 def packArray(seq: Iterable[StructValue]) -> bytes:
@@ -532,12 +581,15 @@ def unpack(cls: type[T], data: BytesLike, offset: int = 0, *,
                                  f"(buffer of {len(data)} bytes, offset 0)")
             result: T = fast.build(*fast.struct.unpack(data))
             return result
-    if not isinstance(cls, type):
-        _spec_of_class(cls, numModules, "unpack")
+    # Every argument that may run Python code (numModules.__index__, offset.__index__)
+    # is validated before the buffer is viewed.
+    spec: _Spec | None = None
+    if not (cls is SwerveDriveKinematics and numModules is None):
+        spec = _spec_of_class(cls, numModules, "unpack")
     off = _check_offset(offset)
     with _view(data) as mv:
         avail = _nbytes(mv) - off
-        if cls is SwerveDriveKinematics and numModules is None:
+        if spec is None:
             if avail < 32 or avail % 16:
                 raise ValueError(
                     f"cannot infer the module count of a SwerveDriveKinematics from "
@@ -545,7 +597,6 @@ def unpack(cls: type[T], data: BytesLike, offset: int = 0, *,
                     f"(N >= 2 modules)")
             spec = _swerve_spec(avail // 16)
         else:
-            spec = _spec_of_class(cls, numModules, "unpack")
             if avail != spec.size:
                 raise ValueError(f"{spec.typeString} is {spec.size} bytes, got "
                                  f"{max(avail, 0)} (buffer of {_nbytes(mv)} bytes, "
