@@ -77,7 +77,11 @@ def test_text_output_reports_zero_allocations(text_run):
     assert _row(out, "allocator calls").split()[0] == "0"
     assert _row(out, "traced peak - start").startswith("0 B")
     assert _row(out, "traced end - start").startswith("0 B")
-    assert _row(out, "live blocks end - start").startswith("0 ")
+    # Live blocks may only fall: a float created before the window and replaced inside it
+    # is freed for real when CPython's float freelist happens to be full (seen as -1 in
+    # about 1 run in 15, 0.1.0 included). Growth would be a leak; the allocator-call count
+    # above is the exact test that nothing was allocated.
+    assert int(_row(out, "live blocks end - start").split()[0]) <= 0
     assert _row(out, "passes agree").startswith("yes")
 
 
@@ -97,8 +101,9 @@ def test_json_run_moves_and_is_deterministic(drivetrain):
     assert a["final_pose"] == b["final_pose"]
     assert a["distance_m"] == b["distance_m"]
     assert a["passes_agree"] and b["passes_agree"]
-    assert a["allocations"] == {"allocator_calls": 0, "traced_peak_bytes": 0,
-                                "traced_net_bytes": 0, "net_blocks": 0}
+    allocations = dict(a["allocations"])
+    assert allocations.pop("net_blocks") <= 0       # see test_text_output_reports_zero_allocations
+    assert allocations == {"allocator_calls": 0, "traced_peak_bytes": 0, "traced_net_bytes": 0}
     lat = a["latency_us"]
     assert 0.0 < lat["p50"] <= lat["p99"] <= lat["max"]
 
