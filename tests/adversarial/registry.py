@@ -14,6 +14,7 @@ immutable in :data:`IMMUTABLE` / :data:`INIT_ONCE`, and give every member a ``Si
 from __future__ import annotations
 
 import operator
+import threading
 
 import numpy as np
 
@@ -107,7 +108,11 @@ ALT = {  # a second valid instance, different from VALID's
     DWP: lambda: DWP(-1.0, 3.0),
     DWA: lambda: DWA(-1.0, 3.0),
 }
-_ALT = [False]
+_ALT = threading.local()  # per thread: the thread cases build both kinds at once
+
+
+def _alt():
+    return getattr(_ALT, "on", False)
 
 
 class _alternate:
@@ -115,15 +120,15 @@ class _alternate:
         self.on = on
 
     def __enter__(self):
-        self.saved, _ALT[0] = _ALT[0], self.on
+        self.saved, _ALT.on = _alt(), self.on
 
     def __exit__(self, *exc):
-        _ALT[0] = self.saved
+        _ALT.on = self.saved
 
 
 def make(cls):
     """A fresh valid instance (the alternate one inside ``build(alt=True)``)."""
-    return (ALT if _ALT[0] and cls in ALT else VALID)[cls]()
+    return (ALT if _alt() and cls in ALT else VALID)[cls]()
 
 
 # Values whose __init__ must refuse to run twice (and every object whose __init__ did
@@ -180,7 +185,7 @@ class Num(Kind):
         self.value, self.none_ok = value, none_ok
 
     def valid(self):
-        return -1.5 * self.value + 0.25 if _ALT[0] else self.value
+        return -1.5 * self.value + 0.25 if _alt() else self.value
 
 
 class Int(Kind):
@@ -201,7 +206,7 @@ class Arr(Kind):
         if self.fill is not None:
             return np.array(self.fill, dtype=np.float64).reshape(self.shape)
         a = np.arange(1.0, 1.0 + np.prod(self.shape)).reshape(self.shape) / 4.0
-        return -a if _ALT[0] else a
+        return -a if _alt() else a
 
 
 class OutArr(Arr):
