@@ -3,12 +3,14 @@ case that caused it.
 
 Parent side: :func:`results` runs every case of a group (once per pytest session) and
 returns {case id: None if it passed, else a message}. The child (this file run as a
-script) prints ``START <i>`` before case ``i`` and a JSON result after it; when the child
-dies or a case exceeds ``CASE_TIMEOUT``, the open case is recorded as crashed/hung (with
-the signal and the end of stderr) and a new child resumes after it.
+script) reads the case indices to run from stdin and prints ``START <i>`` before case
+``i`` and a JSON result after it; when the child dies or a case exceeds
+``CASE_TIMEOUT``, the open case is recorded as crashed/hung (with the signal and the end
+of stderr) and a new child runs the cases still pending.
 """
 from __future__ import annotations
 
+import gc
 import json
 import os
 import signal
@@ -31,69 +33,78 @@ def results(group: str, ids: list[str]) -> dict[str, str | None]:
 
 def _run(group, ids):
     out: dict[str, str | None] = {}
-    start = 0
-    while start < len(ids):
-        with tempfile.TemporaryFile("w+") as so, tempfile.TemporaryFile("w+") as se:
-            env = dict(os.environ, PYTHONFAULTHANDLER="1")
-            proc = subprocess.Popen([sys.executable, __file__, group, str(start)],
-                                    stdout=so, stderr=se, env=env, cwd=HERE)
-            current, began = None, time.monotonic()
-            while True:
-                try:
-                    proc.wait(timeout=0.05)
-                    break
-                except subprocess.TimeoutExpired:
-                    pass
-                so.seek(0)
-                lines = so.read().splitlines()
-                starts = [ln for ln in lines if ln.startswith("START ")]
-                if starts and starts[-1] != current:
-                    current, began = starts[-1], time.monotonic()
-                if time.monotonic() - began > CASE_TIMEOUT:
-                    proc.kill()
-                    proc.wait()
-                    break
-            so.seek(0)
-            se.seek(0)
-            lines, err = so.read().splitlines(), se.read()
-        last = None
+    while len(out) < len(ids):
+        pending = [i for i, c in enumerate(ids) if c not in out]
+        lines, err, rc = _child_run(group, pending)
+        open_case = None
         for ln in lines:
             if ln.startswith("START "):
-                last = int(ln.split()[1])
+                open_case = int(ln.split()[1])
             elif ln.startswith("RESULT "):
                 i, msg = json.loads(ln[7:])
                 out[ids[i]] = msg
-                last = None
-        if proc.returncode == 0 and last is None:
+                open_case = None
+        if rc == 0 and open_case is None:
+            for i in pending:
+                out.setdefault(ids[i], "not run: the child process skipped it")
             break
-        if last is None:  # died before/after a case: blame the next unfinished one
-            done = [i for i, c in enumerate(ids) if c in out]
-            last = (max(done) + 1) if done else start
-            if last >= len(ids):
+        if open_case is None:  # died between cases: blame the first one not reported
+            open_case = next((i for i in pending if ids[i] not in out), None)
+            if open_case is None:
                 break
-        rc = proc.returncode
         how = (f"hung for more than {CASE_TIMEOUT:.0f} s" if rc == -signal.SIGKILL
                else f"crashed the interpreter (signal {signal.Signals(-rc).name})" if rc < 0
                else f"killed the interpreter (exit status {rc})")
-        out[ids[last]] = f"{how}; stderr ends:\n{_tail(err)}"
-        start = last + 1
-    for c in ids:
-        out.setdefault(c, "not run: the child process stopped before reaching it")
+        out[ids[open_case]] = f"{how}; stderr ends:\n{_tail(err)}"
     return out
+
+
+def _child_run(group, indices):
+    """Run the cases ``indices`` of ``group`` in one child; (report lines, stderr, rc).
+    A case that runs longer than CASE_TIMEOUT gets the child killed. The report goes to
+    its own file, so whatever a case prints cannot garble it."""
+    with tempfile.NamedTemporaryFile("w+") as rep, tempfile.TemporaryFile("w+") as se:
+        env = dict(os.environ, PYTHONFAULTHANDLER="1")
+        proc = subprocess.Popen([sys.executable, __file__, group, rep.name],
+                                stdin=subprocess.PIPE, stdout=se, stderr=se, env=env,
+                                cwd=HERE, text=True)
+        proc.stdin.write(json.dumps(indices))
+        proc.stdin.close()
+        current, began = None, time.monotonic()
+        while True:
+            try:
+                proc.wait(timeout=0.05)
+                break
+            except subprocess.TimeoutExpired:
+                pass
+            rep.seek(0)
+            starts = [ln for ln in rep.read().splitlines() if ln.startswith("START ")]
+            if starts and starts[-1] != current:
+                current, began = starts[-1], time.monotonic()
+            if time.monotonic() - began > CASE_TIMEOUT:
+                proc.kill()
+                proc.wait()
+                break
+        rep.seek(0)
+        se.seek(0)
+        return rep.read().splitlines(), se.read(), proc.returncode
 
 
 def _tail(text, n=12):
     return "\n".join(text.strip().splitlines()[-n:])
 
 
-def _child(group, start):
+def _child(group, report, indices):
     sys.path.insert(0, HERE)
     sys.path.insert(0, os.path.dirname(HERE))
     import cases
 
     ids = list(cases.GROUPS[group]().items())
-    for i in range(start, len(ids)):
-        print(f"START {i}", flush=True)
+    gc.collect()
+    gc.freeze()  # what exists now is never garbage: keeps the cases' full collections cheap
+    for i in indices:
+        report.write(f"START {i}\n")
+        report.flush()
         try:
             ids[i][1]()
             msg = None
@@ -101,8 +112,10 @@ def _child(group, start):
             msg = f"{type(e).__name__}: {e}"
             if not isinstance(e, AssertionError):
                 msg += "\n" + "".join(traceback.format_exception(e)[-4:])
-        print("RESULT " + json.dumps([i, msg]), flush=True)
+        report.write("RESULT " + json.dumps([i, msg]) + "\n")
+        report.flush()
 
 
 if __name__ == "__main__":
-    _child(sys.argv[1], int(sys.argv[2]))
+    with open(sys.argv[2], "a") as rep:
+        _child(sys.argv[1], rep, json.loads(sys.stdin.read()))

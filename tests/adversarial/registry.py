@@ -164,11 +164,16 @@ class Out(Obj):
     out = True
 
 
-class Seq(Kind):
-    """A list of ``n`` value objects of ``cls`` (``n=None``: any non-empty length)."""
+class StructObj(Obj):
+    """Any wpistruct value (so another drivekin value class is not hostile)."""
 
-    def __init__(self, cls, n=N):
-        self.cls, self.n = cls, n
+
+class Seq(Kind):
+    """A list of ``n`` value objects of ``cls`` (``n=None``: any length of at least
+    ``least``)."""
+
+    def __init__(self, cls, n=N, least=0):
+        self.cls, self.n, self.least = cls, n, least
 
     def valid(self):
         return [make(self.cls) for _ in range(self.n or 3)]
@@ -197,10 +202,11 @@ class Int(Kind):
 
 
 class Arr(Kind):
-    """A float64 C-contiguous numpy array of ``shape`` (``fill`` gives its values)."""
+    """A float64 C-contiguous numpy array of ``shape`` (``fill`` gives its values;
+    ``rows_free``: any number of rows is valid)."""
 
-    def __init__(self, shape, fill=None):
-        self.shape, self.fill = shape, fill
+    def __init__(self, shape, fill=None, rows_free=False):
+        self.shape, self.fill, self.rows_free = shape, fill, rows_free
 
     def valid(self):
         if self.fill is not None:
@@ -373,7 +379,7 @@ API = {
         "x": Prop(), "y": Prop(), "getX": S(), "getY": S(), "getNorm": S(),
         "getSquaredNorm": S(), "getDistance": S(Obj(T)), "getSquaredDistance": S(Obj(T)),
         "getAngle": S(), "rotateBy": S(Obj(R)), "rotateAround": S(Obj(T), Obj(R)),
-        "dot": S(Obj(T)), "cross": S(Obj(T)), "nearest": S(Seq(T, n=None)),
+        "dot": S(Obj(T)), "cross": S(Obj(T)), "nearest": S(Seq(T, n=None, least=1)),
         "interpolate": S(Obj(T), NUM), "toVector": S(),
     },
     R: {
@@ -401,7 +407,7 @@ API = {
         "__add__": S(Obj(Transform2d)), "minus": S(Obj(Pose2d)), "__sub__": S(Obj(Pose2d)),
         "relativeTo": S(Obj(Pose2d)), "rotateBy": S(Obj(R)),
         "rotateAround": S(Obj(T), Obj(R)), "exp": S(Obj(Twist2d)), "log": S(Obj(Pose2d)),
-        "nearest": S(Seq(Pose2d, n=None)), "interpolate": S(Obj(Pose2d), NUM),
+        "nearest": S(Seq(Pose2d, n=None, least=1)), "interpolate": S(Obj(Pose2d), NUM),
     },
     Transform2d: {
         **_FRAME,
@@ -434,7 +440,7 @@ API = {
     DWP: _wheels(DWP, ("left", "right"), copy=True, eq=True),
     DWA: _wheels(DWA, ("left", "right")),
     SwerveDriveKinematics: {
-        "__init__": [S(Seq(T)), S(*[Obj(T)] * N)], "__reduce__": S(),
+        "__init__": [S(Seq(T, n=None, least=2)), S(*[Obj(T)] * N)], "__reduce__": S(),
         "getModules": S(), "getNumModules": S(),
         "resetHeadings": [S(Seq(R)), S(*[Obj(R)] * N)],
         "toSwerveModuleVelocities": [S(Obj(CV)), S(Obj(CV), Obj(T))],
@@ -446,15 +452,17 @@ API = {
         "toTwist2d": [S(Seq(SMP)), S(Seq(SMP), Seq(SMP)), S(_MOD_ARR)],
         "toTwist2dInto": [S(Seq(SMP), Out(Twist2d)), S(_MOD_ARR, Out(Twist2d))],
         "interpolate": S(Seq(SMP), Seq(SMP), NUM),
-        "copy": S(Seq(SMP)), "copyInto": S(Seq(SMP), OutSeq(SMP)),
+        "copy": S(Seq(SMP, n=None)), "copyInto": S(Seq(SMP), OutSeq(SMP)),
         "toSwerveModuleAccelerations": [S(Obj(CA)), S(Obj(CA), NUM, Obj(T))],
         "toWheelAccelerations": S(Obj(CA)),
         "toChassisAccelerations": [S(Seq(SMA)), S(_MOD_ARR)],
-        "desaturateWheelVelocities": [S(Seq(SMV), NUM),
-                                      S(Seq(SMV), Obj(CV), Num(2.0), Num(1.0), Num(1.0))],
+        # Static: any number of modules.
+        "desaturateWheelVelocities": [
+            S(Seq(SMV, n=None), NUM),
+            S(Seq(SMV, n=None), Obj(CV), Num(2.0), Num(1.0), Num(1.0))],
         "desaturateWheelVelocitiesInPlace": [
-            S(OutSeq(SMV), NUM), S(OutArr((N, 2)), NUM),
-            S(OutSeq(SMV), Obj(CV), Num(2.0), Num(1.0), Num(1.0))],
+            S(OutSeq(SMV, n=None), NUM), S(OutArr((N, 2), rows_free=True), NUM),
+            S(OutSeq(SMV, n=None), Obj(CV), Num(2.0), Num(1.0), Num(1.0))],
     },
     MecanumDriveKinematics: {
         "__init__": S(*[Obj(T)] * 4), "__reduce__": S(),
@@ -498,9 +506,9 @@ WPISTRUCT = {  # function name -> Sig (receiver-less)
     "getTypeName": S(Type(Pose2d)), "getTypeString": S(Type(Pose2d)),
     "getSchema": S(Type(Pose2d)), "getSize": S(Type(Pose2d)), "getNested": S(Type(Pose2d)),
     "forEachNested": S(Type(Pose2d), Callback()),
-    "pack": S(Obj(Pose2d)), "packArray": S(Seq(Pose2d, n=None)),
-    "packInto": [S(Obj(Pose2d), OutBytes(lambda: bytearray(24))),
-                 S(Obj(Pose2d), OutRawArr((3,)))],
+    "pack": S(StructObj(Pose2d)), "packArray": S(Seq(Pose2d, n=None)),
+    "packInto": [S(StructObj(Pose2d), OutBytes(lambda: bytearray(24))),
+                 S(StructObj(Pose2d), OutRawArr((3,)))],
     "unpack": [S(Type(Pose2d), Bytes(_pose_bytes)), S(Type(Pose2d), RawArr((3,)))],
     "unpackFrom": S(Type(Pose2d), Bytes(_pose_bytes)),
     "unpackArray": S(Type(Pose2d), Bytes(lambda: _pose_bytes() * 2)),

@@ -192,7 +192,7 @@ class armed_gc:
         Bomb()
 
     def __enter__(self):
-        gc.collect()
+        gc.collect()  # an empty young generation: the fuse counts only the call's collections
         self.saved = gc.get_threshold()
         gc.disable()
         self._bomb(self.fuse)
