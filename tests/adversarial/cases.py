@@ -457,7 +457,7 @@ def group_gc():
             for pos, kind in enumerate(sig.kinds):
                 if isinstance(kind, Seq):
                     for mode in MUTATIONS:
-                        for fuse in (1, 2, 3, 5):
+                        for fuse in (1, 2, 4):
                             cases[f"{base} arg{pos} finalizer-{mode} fuse={fuse}"] = \
                                 functools.partial(check_gc_mutation, cls, name, sig, pos,
                                                   mode, fuse)

@@ -3,7 +3,7 @@ case that caused it.
 
 Parent side: :func:`results` runs every case of a group (once per pytest session) and
 returns {case id: None if it passed, else a message}. The child (this file run as a
-script) reads the case indices to run from stdin and prints ``START <i>`` before case
+script) reads the case indices to run from stdin and reports ``START <i>`` before case
 ``i`` and a JSON result after it; when the child dies or a case exceeds
 ``CASE_TIMEOUT``, the open case is recorded as crashed/hung (with the signal and the end
 of stderr) and a new child runs the cases still pending.

@@ -176,7 +176,7 @@ class Seq(Kind):
         self.cls, self.n, self.least = cls, n, least
 
     def valid(self):
-        return [make(self.cls) for _ in range(self.n or 3)]
+        return [make(self.cls) for _ in range(self.n or N)]
 
 
 class OutSeq(Seq):
