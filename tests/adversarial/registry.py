@@ -1,0 +1,527 @@
+"""The registry of drivekin's public callables, for the adversarial suite.
+
+Every public class in ``drivekin.__all__`` has an entry in :data:`API`: for each public
+method, property, constant and protocol dunder, one or more :class:`Sig` that say what
+each positional argument is (a value object, a sequence of them, a float, a numpy
+buffer, an ``out`` target). From a ``Sig`` the suite builds a valid call
+(:meth:`Sig.build`) and then breaks one argument at a time (``cases.py``).
+
+``test_registry.py`` enumerates the public API by introspection and fails, naming the
+member, when something is missing here — so a new class or method joins the suite by
+construction. To add a class: add a factory to :data:`VALID`, say whether it is
+immutable in :data:`IMMUTABLE` / :data:`INIT_ONCE`, and give every member a ``Sig``.
+"""
+from __future__ import annotations
+
+import operator
+import threading
+
+import numpy as np
+
+import drivekin
+import drivekin.wpistruct as wpistruct
+from drivekin import (
+    ChassisAccelerations as CA,
+    ChassisVelocities as CV,
+    DifferentialDriveKinematics,
+    DifferentialDriveOdometry,
+    DifferentialDriveWheelAccelerations as DWA,
+    DifferentialDriveWheelPositions as DWP,
+    DifferentialDriveWheelVelocities as DWV,
+    MecanumDriveKinematics,
+    MecanumDriveOdometry,
+    MecanumDriveWheelAccelerations as MWA,
+    MecanumDriveWheelPositions as MWP,
+    MecanumDriveWheelVelocities as MWV,
+    Pose2d,
+    Rotation2d as R,
+    SwerveDriveKinematics,
+    SwerveDriveOdometry,
+    SwerveModuleAcceleration as SMA,
+    SwerveModulePosition as SMP,
+    SwerveModuleVelocity as SMV,
+    Transform2d,
+    Translation2d as T,
+    Twist2d,
+)
+
+N = 4  # modules of the registry's swerve drive
+
+# Odometry receivers start from these, so a probe update with them must be a no-op.
+GYRO0 = 0.0
+
+
+def _swerve() -> SwerveDriveKinematics:
+    k = SwerveDriveKinematics(T(0.3, 0.3), T(0.3, -0.3), T(-0.3, 0.3), T(-0.3, -0.25))
+    # Distinct remembered headings, so a call that wrongly touches them is visible.
+    k.resetHeadings([R(1.0), R(2.0), R(-1.0), R(3.0)])
+    return k
+
+
+def _mecanum() -> MecanumDriveKinematics:
+    return MecanumDriveKinematics(T(0.3, 0.3), T(0.3, -0.3), T(-0.3, 0.3), T(-0.3, -0.3))
+
+
+VALID = {  # a fresh, valid, non-trivial instance of each class
+    T: lambda: T(1.0, 2.0),
+    R: lambda: R(0.5),
+    Pose2d: lambda: Pose2d(1.0, 2.0, R(0.5)),
+    Transform2d: lambda: Transform2d(0.5, -1.0, R(0.25)),
+    Twist2d: lambda: Twist2d(0.5, 0.25, 0.125),
+    CV: lambda: CV(1.0, 0.5, 0.25),
+    CA: lambda: CA(1.0, 0.5, 0.25),
+    SMV: lambda: SMV(1.0, R(0.5)),
+    SMP: lambda: SMP(1.0, R(0.5)),
+    SMA: lambda: SMA(1.0, R(0.5)),
+    MWV: lambda: MWV(1.0, 2.0, 3.0, 4.0),
+    MWP: lambda: MWP(1.0, 2.0, 3.0, 4.0),
+    MWA: lambda: MWA(1.0, 2.0, 3.0, 4.0),
+    DWV: lambda: DWV(1.0, 2.0),
+    DWP: lambda: DWP(1.0, 2.0),
+    DWA: lambda: DWA(1.0, 2.0),
+    SwerveDriveKinematics: _swerve,
+    MecanumDriveKinematics: _mecanum,
+    DifferentialDriveKinematics: lambda: DifferentialDriveKinematics(0.6),
+    SwerveDriveOdometry: lambda: SwerveDriveOdometry(
+        _swerve(), R(GYRO0), [SMP(0.0, R(0.0)) for _ in range(N)], Pose2d(1.0, 2.0, R(0.5))),
+    MecanumDriveOdometry: lambda: MecanumDriveOdometry(
+        _mecanum(), R(GYRO0), MWP(0.0, 0.0, 0.0, 0.0), Pose2d(1.0, 2.0, R(0.5))),
+    DifferentialDriveOdometry: lambda: DifferentialDriveOdometry(
+        R(GYRO0), 0.0, 0.0, Pose2d(1.0, 2.0, R(0.5))),
+}
+
+ALT = {  # a second valid instance, different from VALID's
+    T: lambda: T(-2.0, 0.5),
+    R: lambda: R(-2.0),
+    Pose2d: lambda: Pose2d(-1.0, 0.5, R(2.5)),
+    Transform2d: lambda: Transform2d(2.0, 1.0, R(-1.0)),
+    Twist2d: lambda: Twist2d(-1.0, 2.0, -0.5),
+    CV: lambda: CV(-3.0, 2.0, 1.0),
+    CA: lambda: CA(-3.0, 2.0, 1.0),
+    SMV: lambda: SMV(-2.0, R(-1.5)),
+    SMP: lambda: SMP(3.0, R(2.0)),
+    SMA: lambda: SMA(-2.0, R(-1.5)),
+    MWV: lambda: MWV(-1.0, 0.5, 2.5, -4.0),
+    MWP: lambda: MWP(-1.0, 0.5, 2.5, -4.0),
+    MWA: lambda: MWA(-1.0, 0.5, 2.5, -4.0),
+    DWV: lambda: DWV(-1.0, 3.0),
+    DWP: lambda: DWP(-1.0, 3.0),
+    DWA: lambda: DWA(-1.0, 3.0),
+}
+_ALT = threading.local()  # per thread: the thread cases build both kinds at once
+
+
+def _alt():
+    return getattr(_ALT, "on", False)
+
+
+class _alternate:
+    def __init__(self, on):
+        self.on = on
+
+    def __enter__(self):
+        self.saved, _ALT.on = _alt(), self.on
+
+    def __exit__(self, *exc):
+        _ALT.on = self.saved
+
+
+def make(cls):
+    """A fresh valid instance (the alternate one inside ``build(alt=True)``)."""
+    return (ALT if _alt() and cls in ALT else VALID)[cls]()
+
+
+# Values whose __init__ must refuse to run twice (and every object whose __init__ did
+# not run must refuse to compute): immutables, kinematics and odometry.
+IMMUTABLE = {T, R, Pose2d, Transform2d}
+INIT_ONCE = IMMUTABLE | {SwerveDriveKinematics, MecanumDriveKinematics,
+                         DifferentialDriveKinematics, SwerveDriveOdometry,
+                         MecanumDriveOdometry, DifferentialDriveOdometry}
+KINEMATICS = {SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics}
+ODOMETRY = {SwerveDriveOdometry, MecanumDriveOdometry, DifferentialDriveOdometry}
+
+
+# ---- argument kinds ---------------------------------------------------------------
+
+class Kind:
+    """What one argument position takes. ``valid()`` makes a fresh good value."""
+
+    out = False  # the call writes into this argument
+
+
+class Obj(Kind):
+    """A value object of ``cls``. ``none_ok``/``float_ok``: an overload or default
+    accepts None / a float at this position, so those are not hostile here."""
+
+    def __init__(self, cls, none_ok=False, float_ok=False):
+        self.cls, self.none_ok, self.float_ok = cls, none_ok, float_ok
+
+    def valid(self):
+        return make(self.cls)
+
+
+class Out(Obj):
+    out = True
+
+
+class StructObj(Obj):
+    """Any wpistruct value (so another drivekin value class is not hostile)."""
+
+
+class Seq(Kind):
+    """A list of ``n`` value objects of ``cls`` (``n=None``: any length of at least
+    ``least``)."""
+
+    def __init__(self, cls, n=N, least=0):
+        self.cls, self.n, self.least = cls, n, least
+
+    def valid(self):
+        return [make(self.cls) for _ in range(self.n or N)]
+
+
+class OutSeq(Seq):
+    out = True
+
+
+class Num(Kind):
+    """A float (``value`` is the valid one). ``none_ok``: None is accepted here."""
+
+    def __init__(self, value=0.5, none_ok=False):
+        self.value, self.none_ok = value, none_ok
+
+    def valid(self):
+        return -1.5 * self.value + 0.25 if _alt() else self.value
+
+
+class Int(Kind):
+    def __init__(self, value):
+        self.value = value
+
+    def valid(self):
+        return self.value
+
+
+class Arr(Kind):
+    """A float64 C-contiguous numpy array of ``shape`` (``fill`` gives its values;
+    ``rows_free``: any number of rows is valid)."""
+
+    def __init__(self, shape, fill=None, rows_free=False):
+        self.shape, self.fill, self.rows_free = shape, fill, rows_free
+
+    def valid(self):
+        if self.fill is not None:
+            return np.array(self.fill, dtype=np.float64).reshape(self.shape)
+        a = np.arange(1.0, 1.0 + np.prod(self.shape)).reshape(self.shape) / 4.0
+        return -a if _alt() else a
+
+
+class OutArr(Arr):
+    out = True
+
+    def valid(self):
+        return np.full(self.shape, 7.0)
+
+
+class RawArr(Arr):
+    """A numpy array used as raw bytes (wpistruct): any dtype's bytes are bytes, but
+    never an object array's pointers."""
+
+
+class OutRawArr(RawArr):
+    out = True
+
+    def valid(self):
+        return np.full(self.shape, 7.0)
+
+
+class Bytes(Kind):
+    """A bytes-like input (wpistruct)."""
+
+    def __init__(self, make):
+        self.make = make
+
+    def valid(self):
+        return self.make()
+
+
+class OutBytes(Bytes):
+    out = True
+
+
+class Type(Kind):
+    """A class argument (wpistruct): hostile values are other classes/objects."""
+
+    def __init__(self, cls):
+        self.cls = cls
+
+    def valid(self):
+        return self.cls
+
+
+class Callback(Kind):
+    def valid(self):
+        return lambda name, schema: None
+
+
+class Sig:
+    """One way to call a member: the kinds of its positional arguments, plus optional
+    keywords (name -> factory). ``build(alt=True)`` gives a second, different valid call
+    (for re-entrancy and thread cases, where two calls must not share results)."""
+
+    def __init__(self, *kinds, kw=None):
+        self.kinds, self.kw = kinds, kw or {}
+
+    def build(self, alt=False):
+        with _alternate(alt):
+            return [k.valid() for k in self.kinds], {k: v() for k, v in self.kw.items()}
+
+
+class Prop:
+    """A property: ``kind`` is None for read-only, else what the setter takes."""
+
+    def __init__(self, kind=None):
+        self.kind = kind
+
+
+class Const:
+    """A class constant (``kZero``); ``value`` is what it must equal."""
+
+    def __init__(self, value):
+        self.value = value
+
+
+S = Sig
+NUM = Num()
+# Protocol dunders are exercised through the operator, not the bound method.
+OPERATORS = {
+    "__add__": operator.add, "__sub__": operator.sub, "__mul__": operator.mul,
+    "__rmul__": lambda a, b: b * a, "__truediv__": operator.truediv,
+    "__neg__": operator.neg, "__eq__": operator.eq, "__iter__": lambda a: list(iter(a)),
+}
+# The dunders the completeness check looks for (beyond plain public names).
+DUNDERS = ("__init__", "__reduce__", "__reduce_ex__", "__setstate__", "__copy__",
+           "__deepcopy__", "__call__", "__len__", "__getitem__", "__setitem__",
+           *OPERATORS)
+
+
+def _arith(cls, add=True, neg=True, eq=True, iterable=False):
+    """The operator/algebra members shared by the vector-like values."""
+    d = {"plus": S(Obj(cls)), "minus": S(Obj(cls)), "times": S(NUM), "div": S(NUM),
+         "__mul__": S(NUM), "__rmul__": S(NUM), "__truediv__": S(NUM)}
+    if add:
+        d.update(__add__=S(Obj(cls)), __sub__=S(Obj(cls)))
+    if neg:
+        d.update(unaryMinus=S(), __neg__=S())
+    if eq:
+        d["__eq__"] = S(Obj(cls))
+    if iterable:
+        d["__iter__"] = S()
+    return d
+
+
+def _chassis(cls, fields):
+    d = _arith(cls)
+    d.update({f: Prop(NUM) for f in fields})
+    d.update(
+        __init__=S(NUM, NUM, NUM),
+        __reduce__=S(),
+        toRobotRelative=S(Obj(R)), toFieldRelative=S(Obj(R)),
+        toRobotRelativeInto=S(Obj(R), Out(cls)), toFieldRelativeInto=S(Obj(R), Out(cls)),
+        interpolate=S(Obj(cls), NUM),
+    )
+    return d
+
+
+def _module(cls, field):
+    return {
+        "__init__": S(NUM, Obj(R, none_ok=True)), "__reduce__": S(), "__eq__": S(Obj(cls)),
+        "__iter__": S(), field: Prop(NUM), "angle": Prop(Obj(R)),
+        "interpolate": S(Obj(cls), NUM), "compareTo": S(Obj(cls)),
+    }
+
+
+def _wheels(cls, names, desat=False, copy=False, eq=False):
+    d = _arith(cls, eq=eq, iterable=True)
+    d.update({f: Prop(NUM) for f in names})
+    d.update(__init__=S(*[NUM] * len(names)), __reduce__=S(),
+             interpolate=S(Obj(cls), NUM))
+    if desat:
+        d.update(desaturate=S(NUM), desaturateInPlace=S(NUM))
+    if copy:
+        d["copy"] = S()
+    return d
+
+
+def _odometry(kin, positions, gyro=Obj(R)):
+    """Odometry members; ``positions`` are the kinds after the gyro angle."""
+    return {
+        "__init__": S(*((Obj(kin),) if kin else ()), gyro, *positions,
+                      Obj(Pose2d, none_ok=True)),
+        "resetPosition": S(gyro, *positions, Obj(Pose2d)),
+        "update": S(gyro, *positions),
+        "getPose": S(), "resetPose": S(Obj(Pose2d)),
+        "resetTranslation": S(Obj(T)), "resetRotation": S(Obj(R)),
+    }
+
+
+_FRAME = {"x": Prop(), "y": Prop(), "getX": S(), "getY": S(), "getTranslation": S(),
+          "getRotation": S(), "times": S(NUM), "div": S(NUM), "toMatrix": S(),
+          "__reduce__": S(), "__eq__": S(Obj(Pose2d)), "__mul__": S(NUM),
+          "__rmul__": S(NUM), "__truediv__": S(NUM)}
+_MOD_ARR = Arr((N, 2))
+
+API = {
+    T: {
+        **_arith(T, iterable=True),
+        "__init__": [S(NUM, NUM), S(NUM, Obj(R, float_ok=True)), S(Arr((2,))),
+                     S(kw={"x": lambda: 1.0, "y": lambda: 2.0})],
+        "__reduce__": S(), "kZero": Const(T(0.0, 0.0)),
+        "x": Prop(), "y": Prop(), "getX": S(), "getY": S(), "getNorm": S(),
+        "getSquaredNorm": S(), "getDistance": S(Obj(T)), "getSquaredDistance": S(Obj(T)),
+        "getAngle": S(), "rotateBy": S(Obj(R)), "rotateAround": S(Obj(T), Obj(R)),
+        "dot": S(Obj(T)), "cross": S(Obj(T)), "nearest": S(Seq(T, n=None, least=1)),
+        "interpolate": S(Obj(T), NUM), "toVector": S(),
+    },
+    R: {
+        **_arith(R),
+        "__init__": [S(NUM), S(NUM, NUM), S(Arr((2, 2), fill=[[0.0, -1.0], [1.0, 0.0]])),
+                     S(kw={"value": lambda: 1.0})],
+        "__reduce__": S(),
+        **{k: Const(R(v)) for k, v in [("kZero", 0.0), ("kCW_Pi_2", -np.pi / 2),
+                                       ("kCW_90deg", -np.pi / 2), ("kCCW_Pi_2", np.pi / 2),
+                                       ("kCCW_90deg", np.pi / 2), ("kPi", np.pi),
+                                       ("k180deg", np.pi)]},
+        "fromRadians": S(NUM), "fromDegrees": S(NUM), "fromRotations": S(NUM),
+        "getRadians": S(), "getDegrees": S(), "getRotations": S(), "getCos": S(),
+        "getSin": S(), "getTan": S(), "rotateBy": S(Obj(R)), "relativeTo": S(Obj(R)),
+        "interpolate": S(Obj(R), NUM), "toMatrix": S(),
+    },
+    Pose2d: {
+        **_FRAME,
+        "__init__": [S(), S(Obj(T), Obj(R)), S(NUM, NUM, Obj(R)),
+                     S(Arr((3, 3), fill=[[1.0, 0.0, 1.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])),
+                     S(kw={"translation": VALID[T], "rotation": VALID[R]}),
+                     S(kw={"x": lambda: 1.0, "y": lambda: 2.0, "rotation": VALID[R]})],
+        "kZero": Const(Pose2d()),
+        "transformBy": S(Obj(Transform2d)), "plus": S(Obj(Transform2d)),
+        "__add__": S(Obj(Transform2d)), "minus": S(Obj(Pose2d)), "__sub__": S(Obj(Pose2d)),
+        "relativeTo": S(Obj(Pose2d)), "rotateBy": S(Obj(R)),
+        "rotateAround": S(Obj(T), Obj(R)), "exp": S(Obj(Twist2d)), "log": S(Obj(Pose2d)),
+        "nearest": S(Seq(Pose2d, n=None, least=1)), "interpolate": S(Obj(Pose2d), NUM),
+    },
+    Transform2d: {
+        **_FRAME,
+        "__eq__": S(Obj(Transform2d)),
+        "__init__": [S(), S(Obj(T), Obj(R)), S(NUM, NUM, Obj(R)),
+                     S(Arr((3, 3), fill=[[1.0, 0.0, 1.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])),
+                     S(Obj(Pose2d), Obj(Pose2d)),
+                     S(kw={"translation": VALID[T], "rotation": VALID[R]})],
+        "kZero": Const(Transform2d()),
+        "inverse": S(), "plus": S(Obj(Transform2d)), "__add__": S(Obj(Transform2d)),
+        "log": S(),
+    },
+    Twist2d: {
+        "__init__": S(NUM, NUM, NUM), "__reduce__": S(), "__eq__": S(Obj(Twist2d)),
+        "dx": Prop(NUM), "dy": Prop(NUM), "dtheta": Prop(NUM), "exp": S(),
+    },
+    CV: {**_chassis(CV, ("vx", "vy", "omega")),
+         "toTwist2d": S(NUM), "discretize": S(NUM), "discretizeInto": S(NUM, Out(CV))},
+    CA: _chassis(CA, ("ax", "ay", "alpha")),
+    SMV: {**_module(SMV, "velocity"),
+          "optimize": S(Obj(R)), "optimizeInPlace": S(Obj(R)),
+          "cosineScale": S(Obj(R)), "cosineScaleInPlace": S(Obj(R))},
+    SMP: {**_module(SMP, "distance"), "copy": S()},
+    SMA: _module(SMA, "acceleration"),
+    MWV: _wheels(MWV, ("frontLeft", "frontRight", "rearLeft", "rearRight"), desat=True),
+    MWP: _wheels(MWP, ("frontLeft", "frontRight", "rearLeft", "rearRight"), copy=True,
+                 eq=True),
+    MWA: _wheels(MWA, ("frontLeft", "frontRight", "rearLeft", "rearRight")),
+    DWV: _wheels(DWV, ("left", "right"), desat=True),
+    DWP: _wheels(DWP, ("left", "right"), copy=True, eq=True),
+    DWA: _wheels(DWA, ("left", "right")),
+    SwerveDriveKinematics: {
+        "__init__": [S(Seq(T, n=None, least=2)), S(*[Obj(T)] * N)], "__reduce__": S(),
+        "getModules": S(), "getNumModules": S(),
+        "resetHeadings": [S(Seq(R)), S(*[Obj(R)] * N)],
+        "toSwerveModuleVelocities": [S(Obj(CV)), S(Obj(CV), Obj(T))],
+        "toWheelVelocities": S(Obj(CV)),
+        "toSwerveModuleVelocitiesInto": [S(Obj(CV), OutSeq(SMV)), S(Obj(CV), OutArr((N, 2))),
+                                         S(Obj(CV), OutSeq(SMV), Obj(T))],
+        "toChassisVelocities": [S(Seq(SMV)), S(_MOD_ARR)],
+        "toChassisVelocitiesInto": [S(Seq(SMV), Out(CV)), S(_MOD_ARR, Out(CV))],
+        "toTwist2d": [S(Seq(SMP)), S(Seq(SMP), Seq(SMP)), S(_MOD_ARR)],
+        "toTwist2dInto": [S(Seq(SMP), Out(Twist2d)), S(_MOD_ARR, Out(Twist2d))],
+        "interpolate": S(Seq(SMP), Seq(SMP), NUM),
+        "copy": S(Seq(SMP, n=None)), "copyInto": S(Seq(SMP), OutSeq(SMP)),
+        "toSwerveModuleAccelerations": [S(Obj(CA)), S(Obj(CA), NUM, Obj(T))],
+        "toWheelAccelerations": S(Obj(CA)),
+        "toChassisAccelerations": [S(Seq(SMA)), S(_MOD_ARR)],
+        # Static: any number of modules.
+        "desaturateWheelVelocities": [
+            S(Seq(SMV, n=None), NUM),
+            S(Seq(SMV, n=None), Obj(CV), Num(2.0), Num(1.0), Num(1.0))],
+        "desaturateWheelVelocitiesInPlace": [
+            S(OutSeq(SMV, n=None), NUM), S(OutArr((N, 2), rows_free=True), NUM),
+            S(OutSeq(SMV, n=None), Obj(CV), Num(2.0), Num(1.0), Num(1.0))],
+    },
+    MecanumDriveKinematics: {
+        "__init__": S(*[Obj(T)] * 4), "__reduce__": S(),
+        "getFrontLeft": S(), "getFrontRight": S(), "getRearLeft": S(), "getRearRight": S(),
+        "toWheelVelocities": [S(Obj(CV)), S(Obj(CV), Obj(T))],
+        "toWheelVelocitiesInto": [S(Obj(CV), Out(MWV)), S(Obj(CV), Out(MWV), Obj(T))],
+        "toChassisVelocities": S(Obj(MWV)), "toChassisVelocitiesInto": S(Obj(MWV), Out(CV)),
+        "toTwist2d": [S(Obj(MWP)), S(Obj(MWP), Obj(MWP, none_ok=True))],
+        "toWheelAccelerations": [S(Obj(CA)), S(Obj(CA), Obj(T))],
+        "toChassisAccelerations": S(Obj(MWA)),
+        "interpolate": S(Obj(MWP), Obj(MWP), NUM),
+        "copy": S(Obj(MWP)), "copyInto": S(Obj(MWP), Out(MWP)),
+    },
+    DifferentialDriveKinematics: {
+        "__init__": S(NUM), "__reduce__": S(), "trackwidth": Prop(),
+        "toChassisVelocities": S(Obj(DWV)), "toChassisVelocitiesInto": S(Obj(DWV), Out(CV)),
+        "toWheelVelocities": S(Obj(CV)), "toWheelVelocitiesInto": S(Obj(CV), Out(DWV)),
+        "toTwist2d": [S(NUM, NUM), S(Obj(DWP), Obj(DWP))],
+        "toChassisAccelerations": S(Obj(DWA)), "toWheelAccelerations": S(Obj(CA)),
+        "interpolate": S(Obj(DWP), Obj(DWP), NUM),
+        "copy": S(Obj(DWP)), "copyInto": S(Obj(DWP), Out(DWP)),
+    },
+    SwerveDriveOdometry: _odometry(SwerveDriveKinematics, (Seq(SMP),)),
+    MecanumDriveOdometry: _odometry(MecanumDriveKinematics, (Obj(MWP),)),
+    DifferentialDriveOdometry: _odometry(None, (NUM, NUM)),
+}
+# SwerveDriveOdometry also takes the positions as an (N, 2) array.
+for _m in ("__init__", "resetPosition", "update"):
+    _s = API[SwerveDriveOdometry][_m]
+    API[SwerveDriveOdometry][_m] = [_s, Sig(*[(_MOD_ARR if isinstance(k, Seq) else k)
+                                              for k in _s.kinds])]
+
+
+# ---- wpistruct --------------------------------------------------------------------
+
+def _pose_bytes():
+    return wpistruct.pack(VALID[Pose2d]())
+
+
+WPISTRUCT = {  # function name -> Sig (receiver-less)
+    "getTypeName": S(Type(Pose2d)), "getTypeString": S(Type(Pose2d)),
+    "getSchema": S(Type(Pose2d)), "getSize": S(Type(Pose2d)), "getNested": S(Type(Pose2d)),
+    "forEachNested": S(Type(Pose2d), Callback()),
+    "pack": S(StructObj(Pose2d)), "packArray": S(Seq(Pose2d, n=None)),
+    "packInto": [S(StructObj(Pose2d), OutBytes(lambda: bytearray(24))),
+                 S(StructObj(Pose2d), OutRawArr((3,)))],
+    "unpack": [S(Type(Pose2d), Bytes(_pose_bytes)), S(Type(Pose2d), RawArr((3,)))],
+    "unpackFrom": S(Type(Pose2d), Bytes(_pose_bytes)),
+    "unpackArray": S(Type(Pose2d), Bytes(lambda: _pose_bytes() * 2)),
+}
+WPISTRUCT_NONCALLABLE = {"STRUCT_TYPES", "StructValue"}
+
+
+def members(cls):
+    """(name, [Sig, ...] | Prop | Const) for every registered member of ``cls``."""
+    for name, spec in API[cls].items():
+        yield name, spec if isinstance(spec, (Prop, Const)) else (
+            spec if isinstance(spec, list) else [spec])
+
+
+def public_classes():
+    return [getattr(drivekin, n) for n in drivekin.__all__]
