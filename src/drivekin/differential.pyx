@@ -166,6 +166,7 @@ cdef class DifferentialDriveKinematics:
         return self._trackwidth
 
     def __reduce__(self):
+        self._ready()
         return (DifferentialDriveKinematics, (self._trackwidth,))
 
     def __repr__(self):
@@ -246,14 +247,17 @@ cdef class DifferentialDriveKinematics:
     def interpolate(self, DifferentialDriveWheelPositions startValue not None,
                     DifferentialDriveWheelPositions endValue not None, double t):
         """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+        self._ready()
         return startValue.interpolate(endValue, t)
 
     def copy(self, DifferentialDriveWheelPositions positions not None):
         """Return an independent copy of ``positions``."""
+        self._ready()
         return positions.copy()
 
     def copyInto(self, DifferentialDriveWheelPositions positions not None,
                  DifferentialDriveWheelPositions output not None):
         """Copy ``positions`` into ``output``."""
+        self._ready()
         (<_WheelValues>output).w[0] = (<_WheelValues>positions).w[0]
         (<_WheelValues>output).w[1] = (<_WheelValues>positions).w[1]

@@ -46,10 +46,18 @@ cdef int refuse_reinit(bint frozen, object self) except -1:
     return 0
 
 
+cdef int float64_array(object a, str what) except -1:
+    # One rule for every numpy argument in drivekin: float64, never silently converted
+    # (object arrays would run arbitrary __float__ code, ints hide a caller's mistake).
+    if a.dtype != np.float64:
+        raise TypeError(f"{what} must be a float64 numpy array, got dtype {a.dtype} "
+                        "(convert with .astype(float))")
+    return 0
+
+
 cdef vec2_t vector2(object a) except *:
-    # Translation2d(vector): a numeric numpy array of shape (2,), read by value.
-    if a.dtype.kind not in "fiu":
-        raise TypeError(f"Translation2d(vector) needs a numeric array, got dtype {a.dtype}")
+    # Translation2d(vector): a float64 numpy array of shape (2,), read by value.
+    float64_array(a, "Translation2d(vector)")
     if a.shape != (2,):
         raise ValueError(f"Translation2d(vector) needs shape (2,), got {a.shape}")
     return vec(a[0], a[1])
@@ -245,10 +253,10 @@ cdef class Rotation2d:
         # A bare Rotation2d.__new__ is the identity, never the invalid (0, 0).
         self.r.c = 1.0
 
-    def __init__(self, value=0.0, y=None):
+    def __init__(self, value=0.0, y=MISSING):
         cdef rot2_t r
         refuse_reinit(self.frozen, self)
-        if y is not None:
+        if y is not MISSING:
             r = rot_xy(value, y)
         elif isinstance(value, np.ndarray):
             r = _rot_matrix(value)
@@ -381,7 +389,7 @@ cdef class Rotation2d:
 
 
 cdef rot2_t _rot_matrix(object m) except *:
-    m = np.asarray(m, dtype=float)
+    float64_array(m, "a rotation matrix")
     if m.shape != (2, 2):
         raise ValueError(f"a rotation matrix must have shape (2, 2), got {m.shape}")
     if np.linalg.norm(m @ m.T - np.eye(2)) > 1e-9:
@@ -395,7 +403,7 @@ cdef rot2_t _rot_matrix(object m) except *:
 
 
 cdef pose2_t _pose_matrix(object m) except *:
-    m = np.asarray(m, dtype=float)
+    float64_array(m, "an affine transformation matrix")
     if m.shape != (3, 3):
         raise ValueError(f"an affine transformation matrix must have shape (3, 3), got {m.shape}")
     if m[2, 0] != 0.0 or m[2, 1] != 0.0 or m[2, 2] != 1.0:

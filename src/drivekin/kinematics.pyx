@@ -800,14 +800,18 @@ cdef class SwerveDriveKinematics:
         self._set_cor((<Translation2d>cor).v)
 
     def __repr__(self):
+        if self.buf == NULL:
+            return "<uninitialised SwerveDriveKinematics>"
         return f"SwerveDriveKinematics({', '.join(repr(m) for m in self.modules)})"
 
     def getModules(self):
         """Return the module positions (tuple of Translation2d, m), constructor order."""
+        self._ready()
         return self.modules
 
     def getNumModules(self):
         """Return the number of modules N."""
+        self._ready()
         return self.n
 
     def resetHeadings(self, moduleHeadings, *more):
@@ -967,6 +971,7 @@ cdef class SwerveDriveKinematics:
 
     def interpolate(self, startValue, endValue, double t):
         """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
+        self._ready()
         # Tuples hold their items, so the results' allocations (and any finalizer they
         # trigger) cannot free an item under us.
         cdef tuple fs = snapshot(startValue, "startValue")
@@ -981,6 +986,7 @@ cdef class SwerveDriveKinematics:
 
     def copy(self, positions):
         """Return independent copies of the module positions (tuple)."""
+        self._ready()
         cdef tuple ps = snapshot(positions, "positions")
         cdef Py_ssize_t i
         for i in range(len(ps)):
@@ -989,6 +995,7 @@ cdef class SwerveDriveKinematics:
 
     def copyInto(self, positions, output):
         """Copy each position's fields into the matching object of ``output``."""
+        self._ready()
         cdef object fs = as_fast(positions, "positions"), fo = as_fast(output, "output")
         cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fs)
         if PySequence_Fast_GET_SIZE(fo) != k:

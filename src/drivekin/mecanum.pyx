@@ -212,6 +212,8 @@ cdef class MecanumDriveKinematics:
         self._set_cor((<Translation2d>state).v)
 
     def __repr__(self):
+        if self.wheels is None:
+            return "<uninitialised MecanumDriveKinematics>"
         return f"MecanumDriveKinematics({', '.join(repr(w) for w in self.wheels)})"
 
     cdef void _set_cor(self, vec2_t cor) noexcept:
@@ -240,18 +242,22 @@ cdef class MecanumDriveKinematics:
 
     def getFrontLeft(self):
         """Return the front-left wheel position (Translation2d, m)."""
+        self._ready()
         return self.wheels[0]
 
     def getFrontRight(self):
         """Return the front-right wheel position (Translation2d, m)."""
+        self._ready()
         return self.wheels[1]
 
     def getRearLeft(self):
         """Return the rear-left wheel position (Translation2d, m)."""
+        self._ready()
         return self.wheels[2]
 
     def getRearRight(self):
         """Return the rear-right wheel position (Translation2d, m)."""
+        self._ready()
         return self.wheels[3]
 
     def toWheelVelocities(self, ChassisVelocities chassisVelocities not None,
@@ -317,13 +323,16 @@ cdef class MecanumDriveKinematics:
     def interpolate(self, MecanumDriveWheelPositions startValue not None,
                     MecanumDriveWheelPositions endValue not None, double t):
         """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+        self._ready()
         return startValue.interpolate(endValue, t)
 
     def copy(self, MecanumDriveWheelPositions positions not None):
         """Return an independent copy of ``positions``."""
+        self._ready()
         return positions.copy()
 
     def copyInto(self, MecanumDriveWheelPositions positions not None,
                  MecanumDriveWheelPositions output not None):
         """Copy ``positions`` into ``output``."""
+        self._ready()
         (<_WheelValues>output).w = (<_WheelValues>positions).w

@@ -89,6 +89,7 @@ import sys
 from collections.abc import Callable, Iterable
 from typing import Any, TypeVar, Union
 
+from drivekin._errors import type_name
 from drivekin.differential import (
     DifferentialDriveKinematics,
     DifferentialDriveWheelAccelerations,
@@ -320,7 +321,7 @@ def _num_modules(numModules: object) -> int:
         n = operator.index(numModules)  # type: ignore[arg-type]
     except TypeError:
         raise TypeError(
-            f"numModules must be an int, got {type(numModules).__name__}") from None
+            f"numModules must be an int, got {type_name(numModules)}") from None
     if isinstance(numModules, bool):
         raise TypeError("numModules must be an int, got bool")
     return n
@@ -388,7 +389,7 @@ def _check_offset(offset: object) -> int:
     try:
         off = operator.index(offset)  # type: ignore[arg-type]
     except TypeError:
-        raise TypeError(f"offset must be an int, got {type(offset).__name__}") from None
+        raise TypeError(f"offset must be an int, got {type_name(offset)}") from None
     if off < 0:
         raise ValueError(f"offset must be >= 0, got {off}")
     return off
@@ -550,7 +551,7 @@ def packArray(seq: Iterable[StructValue]) -> bytes:
         if type(o) is not cls:
             i = next(j for j, x in enumerate(items) if type(x) is not cls)
             raise TypeError(f"packArray() elements must all be {cls.__name__}; element "
-                            f"{i} is {type(items[i]).__name__}")
+                            f"{i} is {type_name(items[i])}")
         parts.append(pack_one(*flatten(o)))
     return b"".join(parts)
 

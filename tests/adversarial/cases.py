@@ -162,6 +162,14 @@ def hostiles(k):
         h = [("None", lambda: None, (), None), ("float", lambda: 0.5, (), None),
              ("str", lambda: "abc", (), None), ("raising-index", BadNumber, (Boom,), None),
              ("negative", lambda: -1, (), None), ("huge", lambda: 10 ** 30, (), None)]
+    elif isinstance(k, reg.State):
+        good = k.valid()
+        h = [("None", lambda: None, (), None), ("str", lambda: "abc", (), None),
+             ("empty", tuple, (), None), ("list", lambda: list(good), (), None),
+             ("wrong-items", lambda: (good[1], good[0]), (), None),
+             ("None-items", lambda: (None,) * len(good), (), None),
+             ("short-headings", lambda: (good[0][:-1], good[1]), (), None),
+             ("float-headings", lambda: (tuple(0.5 for _ in good[0]), good[1]), (), None)]
     elif isinstance(k, (Bytes, OutBytes)):
         h = [("None", lambda: None, (), None), ("str", lambda: "abc", (), None),
              ("short", lambda: bytearray(k.valid()[:-1]), (), None),
@@ -653,6 +661,8 @@ def _methods(cls):
     for name, spec in reg.members(cls):
         if isinstance(spec, (Prop, Const)) or name in ("__init__", "__eq__"):
             continue
+        if isinstance(cls.__dict__.get(name), staticmethod):
+            continue        # needs no instance, so an uninitialised one is irrelevant
         for sig in spec:
             yield name, sig
 

@@ -258,6 +258,17 @@ class Type(Kind):
         return self.cls
 
 
+class State(Kind):
+    """A ``__setstate__`` payload (``make`` builds a valid one); hostile values are
+    wrong shapes and wrong item types."""
+
+    def __init__(self, make):
+        self.make = make
+
+    def valid(self):
+        return self.make()
+
+
 class Callback(Kind):
     def valid(self):
         return lambda name, schema: None
@@ -441,6 +452,7 @@ API = {
     DWA: _wheels(DWA, ("left", "right")),
     SwerveDriveKinematics: {
         "__init__": [S(Seq(T, n=None, least=2)), S(*[Obj(T)] * N)], "__reduce__": S(),
+        "__setstate__": S(State(lambda: (tuple(R(0.1 * i) for i in range(N)), T(0.1, 0.2)))),
         "getModules": S(), "getNumModules": S(),
         "resetHeadings": [S(Seq(R)), S(*[Obj(R)] * N)],
         "toSwerveModuleVelocities": [S(Obj(CV)), S(Obj(CV), Obj(T))],
@@ -465,7 +477,7 @@ API = {
             S(OutSeq(SMV, n=None), Obj(CV), Num(2.0), Num(1.0), Num(1.0))],
     },
     MecanumDriveKinematics: {
-        "__init__": S(*[Obj(T)] * 4), "__reduce__": S(),
+        "__init__": S(*[Obj(T)] * 4), "__reduce__": S(), "__setstate__": S(Obj(T)),
         "getFrontLeft": S(), "getFrontRight": S(), "getRearLeft": S(), "getRearRight": S(),
         "toWheelVelocities": [S(Obj(CV)), S(Obj(CV), Obj(T))],
         "toWheelVelocitiesInto": [S(Obj(CV), Out(MWV)), S(Obj(CV), Out(MWV), Obj(T))],
@@ -513,7 +525,7 @@ WPISTRUCT = {  # function name -> Sig (receiver-less)
     "unpackFrom": S(Type(Pose2d), Bytes(_pose_bytes)),
     "unpackArray": S(Type(Pose2d), Bytes(lambda: _pose_bytes() * 2)),
 }
-WPISTRUCT_NONCALLABLE = {"STRUCT_TYPES", "StructValue"}
+WPISTRUCT_NONCALLABLE = {"STRUCT_TYPES", "StructValue", "MAX_SWERVE_MODULES"}
 
 
 def members(cls):
