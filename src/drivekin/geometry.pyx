@@ -72,7 +72,7 @@ cdef class Translation2d:
 
     ``Translation2d(x, y)`` takes the components in m; ``Translation2d(distance, angle)``
     takes a length in m and a :class:`Rotation2d` direction; ``Translation2d(vector)``
-    takes a numpy array of shape (2,). Immutable; ``==`` compares each component within
+    takes a float64 numpy array of shape (2,). Immutable; ``==`` compares each component within
     1e-9 m.
     """
 
@@ -244,7 +244,7 @@ cdef class Rotation2d:
     ``Rotation2d(value)`` takes an angle in radians. ``Rotation2d(x, y)`` takes any
     vector and normalises it; a vector of length 1e-6 or less gives the identity
     (WPILib reports an error there; drivekin returns the identity silently).
-    ``Rotation2d(matrix)`` takes a 2×2 special orthogonal numpy array (ValueError if
+    ``Rotation2d(matrix)`` takes a 2×2 special orthogonal float64 numpy array (ValueError if
     ‖RRᵀ − I‖_F or |det R − 1| exceeds 1e-9).
     The constructor angle is not remembered: ``Rotation2d(3π/2).getDegrees()`` is −90.
     """
@@ -461,7 +461,7 @@ cdef pose2_t _pose_args(object a, object b, object c, object translation, object
         return pose(vec(x, y), (<Rotation2d>c).r)
     raise TypeError(
         f"{cls}() takes (), (Translation2d, Rotation2d), (x: float, y: float, Rotation2d) "
-        f"or (3x3 numpy matrix); "
+        f"or (3x3 float64 numpy matrix); "
         f"got ({type_name(a)}, {type_name(b)}, {type_name(c)})")
 
 
@@ -555,7 +555,7 @@ cdef class Pose2d(_Frame2d):
     """Pose2d() or Pose2d(translation, rotation) or Pose2d(x, y, rotation) or Pose2d(matrix)
 
     A robot pose on the field: position in m and heading as a :class:`Rotation2d`.
-    ``Pose2d(matrix)`` takes a 3×3 homogeneous numpy array (see :meth:`toMatrix`).
+    ``Pose2d(matrix)`` takes a 3×3 homogeneous float64 numpy array (see :meth:`toMatrix`).
     Immutable; ``==`` compares translation within 1e-9 m and rotation within 1e-9.
     """
 
