@@ -79,6 +79,7 @@ cdef class SwerveDriveKinematics:
     cdef tuple modules           # the Translation2d objects, constructor order
 
     cdef int _ready(self) except -1
+    cdef int _refuse_reinit(self) except -1
     cdef void _set_cor(self, vec2_t cor) noexcept
     cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1
     cdef int _deltas(self, object start, object end) except -1

@@ -698,10 +698,14 @@ cdef class SwerveDriveKinematics:
     def __cinit__(self, *moduleTranslations):
         self.buf = NULL
 
-    def __init__(self, *moduleTranslations):
+    cdef int _refuse_reinit(self) except -1:
         if self.buf != NULL:
             raise TypeError("SwerveDriveKinematics is already initialised: __init__ cannot "
                             "be called again")
+        return 0
+
+    def __init__(self, *moduleTranslations):
+        self._refuse_reinit()
         if not moduleTranslations:
             raise ValueError("a swerve drive needs at least 2 modules, got 0")
         mods = snapshot(varargs(moduleTranslations[0], moduleTranslations[1:], Translation2d),
@@ -735,6 +739,9 @@ cdef class SwerveDriveKinematics:
         m2[1::2, 3] = xs
         cdef double[:, ::1] p1 = np.ascontiguousarray(np.linalg.pinv(m1))
         cdef double[:, ::1] p2 = np.ascontiguousarray(np.linalg.pinv(m2))
+        # Reading a generic iterable above ran Python code, which may have initialised
+        # this object meanwhile; committing now would leak and replace that state.
+        self._refuse_reinit()
         # 9 arrays of n (positions, CoR rows, headings, scratch) + f1 (3 x 2n) + f2 (4 x 2n)
         cdef double* buf = <double*>PyMem_Malloc(sizeof(double) * (9 * n + 6 * n + 8 * n))
         if buf == NULL:

@@ -79,6 +79,7 @@ cdef class SwerveDriveOdometry(_Odometry):
         self._start_init()
         cdef pose2_t p = initial(initialPose)
         kinematics._read(modulePositions, SwerveModulePosition, "modulePositions")
+        self._start_init()      # again: reading an iterable ran Python code
         cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kinematics.n)
         if prev == NULL:
             raise MemoryError()

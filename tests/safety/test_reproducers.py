@@ -259,3 +259,29 @@ def test_20_documented_keywords():
     assert Pose2d(x=1, y=2, rotation=Rotation2d(0.5)) == Pose2d(1, 2, Rotation2d(0.5))
     with pytest.raises(TypeError, match="both by position and by keyword"):
         Pose2d(T(1, 2), translation=T(1, 2))
+
+
+def test_reentrant_init_from_an_iterable_is_refused_without_replacing_state():
+    # Reading a generic iterable runs Python code; a nested __init__ completing there must
+    # not be overwritten (and its memory leaked) when the outer one resumes.
+    kin = SwerveDriveKinematics.__new__(SwerveDriveKinematics)
+
+    def modules():
+        kin.__init__(T(1, 1), T(-1, -1))
+        yield from (T(2, 2), T(-2, -2), T(3, 3))
+
+    with pytest.raises(TypeError, match="already initialised"):
+        kin.__init__(modules())
+    assert kin.getModules() == (T(1, 1), T(-1, -1))
+
+    odo = SwerveDriveOdometry.__new__(SwerveDriveOdometry)
+    two = SwerveDriveKinematics(T(1, 1), T(-1, -1))
+
+    def positions():
+        odo.__init__(two, Rotation2d(), [SwerveModulePosition()] * 2)
+        yield from (SwerveModulePosition(1.0), SwerveModulePosition(1.0))
+
+    with pytest.raises(TypeError, match="already initialised"):
+        odo.__init__(two, Rotation2d(), positions())
+    # The nested call's baseline (0 m) stands: a 1 m reading moves the robot 1 m.
+    assert odo.update(Rotation2d(), [SwerveModulePosition(1.0)] * 2).getX() == pytest.approx(1.0)
