@@ -784,8 +784,9 @@ cdef class SwerveDriveKinematics:
         return 0
 
     def __reduce__(self):
-        # The state (heading memory and the centre of rotation) makes a copy or an
-        # unpickled object behave exactly like the original.
+        # Heading memory is state (it decides the angles at zero velocity): a copy or an
+        # unpickled object must behave exactly like the original. The centre of rotation
+        # is only a cache of rows, rebuilt from each call's argument.
         self._ready()
         cdef rot2_t h
         cdef Py_ssize_t i
@@ -794,17 +795,14 @@ cdef class SwerveDriveKinematics:
             h.c = self.hc[i]
             h.s = self.hs[i]
             headings.append(new_rotation(h))
-        return (SwerveDriveKinematics, self.modules,
-                (tuple(headings), Translation2d(self.cor.x, self.cor.y)))
+        return (SwerveDriveKinematics, self.modules, tuple(headings))
 
     def __setstate__(self, state):
-        """Restore heading memory and centre of rotation (used by copy and pickle)."""
-        self._ready()
-        if not (type(state) is tuple and len(state) == 2 and type(state[1]) is Translation2d):
-            raise TypeError("SwerveDriveKinematics state must be (headings, Translation2d)")
-        headings, cor = state
-        self.resetHeadings(headings)
-        self._set_cor((<Translation2d>cor).v)
+        """Restore the heading memory (N Rotation2d; used by copy and pickle)."""
+        if type(state) is not tuple:
+            raise TypeError(f"SwerveDriveKinematics state must be a tuple of Rotation2d, "
+                            f"got {type_name(state)}")
+        self.resetHeadings(state)
 
     def __repr__(self):
         if self.buf == NULL:

@@ -199,17 +199,8 @@ cdef class MecanumDriveKinematics:
         return 0
 
     def __reduce__(self):
-        # The sticky centre of rotation is state: a copy must behave like the original.
         self._ready()
-        return (MecanumDriveKinematics, self.wheels, Translation2d(self.cor.x, self.cor.y))
-
-    def __setstate__(self, state):
-        """Restore the centre of rotation (used by copy and pickle)."""
-        self._ready()
-        if type(state) is not Translation2d:
-            raise TypeError(f"MecanumDriveKinematics state must be a Translation2d, "
-                            f"got {type_name(state)}")
-        self._set_cor((<Translation2d>state).v)
+        return (MecanumDriveKinematics, self.wheels)
 
     def __repr__(self):
         if self.wheels is None:

@@ -452,7 +452,7 @@ API = {
     DWA: _wheels(DWA, ("left", "right")),
     SwerveDriveKinematics: {
         "__init__": [S(Seq(T, n=None, least=2)), S(*[Obj(T)] * N)], "__reduce__": S(),
-        "__setstate__": S(State(lambda: (tuple(R(0.1 * i) for i in range(N)), T(0.1, 0.2)))),
+        "__setstate__": S(State(lambda: tuple(R(0.1 * i) for i in range(N)))),
         "getModules": S(), "getNumModules": S(),
         "resetHeadings": [S(Seq(R)), S(*[Obj(R)] * N)],
         "toSwerveModuleVelocities": [S(Obj(CV)), S(Obj(CV), Obj(T))],
@@ -477,7 +477,7 @@ API = {
             S(OutSeq(SMV, n=None), Obj(CV), Num(2.0), Num(1.0), Num(1.0))],
     },
     MecanumDriveKinematics: {
-        "__init__": S(*[Obj(T)] * 4), "__reduce__": S(), "__setstate__": S(Obj(T)),
+        "__init__": S(*[Obj(T)] * 4), "__reduce__": S(),
         "getFrontLeft": S(), "getFrontRight": S(), "getRearLeft": S(), "getRearRight": S(),
         "toWheelVelocities": [S(Obj(CV)), S(Obj(CV), Obj(T))],
         "toWheelVelocitiesInto": [S(Obj(CV), Out(MWV)), S(Obj(CV), Out(MWV), Obj(T))],

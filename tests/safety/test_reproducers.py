@@ -10,6 +10,7 @@ import subprocess
 import sys
 import textwrap
 import threading
+import time
 
 import numpy as np
 import pytest
@@ -46,37 +47,46 @@ def run_isolated(body: str, prelude: str = "") -> str:
     return proc.stdout
 
 
-# A garbage cycle whose finalizer empties the caller's list during the next collection;
-# gc.set_threshold(1) makes the first container allocation inside the call collect it.
+# A chain of garbage cycles whose finalizer empties the caller's list at the fuse-th
+# collection; gc.set_threshold(1) makes every container allocation inside the call collect.
 BOMB = """
-class Bomb:
-    def __init__(self, victim):
-        self.victim, self.me = victim, self
-    def __del__(self):
-        self.victim.clear()
-def armed(victim):
-    Bomb(victim)
+def armed(victim, fuse):
+    class Bomb:
+        def __init__(self):
+            self.me = self
+        def __del__(self):
+            if fuse == 1:
+                victim.clear()
+            else:
+                armed(victim, fuse - 1)
+    Bomb()
+
+def call_armed(victim, fuse, call):
+    gc.collect()
+    gc.disable()
+    armed(victim, fuse)
     gc.set_threshold(1)
+    gc.enable()
+    try:
+        return call()
+    finally:
+        gc.set_threshold(700)
+        gc.collect()
 """
 
 
 @pytest.mark.parametrize("n", [4, 40])
 def test_1_desaturate_reads_the_list_before_allocating(n):
     out = run_isolated(prelude=BOMB, body=f"""
-        import math
-        states = [SwerveModuleVelocity(3.0 * i, Rotation2d(i)) for i in range({n})]
-        want = [(s.velocity, s.angle.getRadians())
-                for s in SwerveDriveKinematics.desaturateWheelVelocities(list(states), 4.0)]
-        armed(states)
-        got = SwerveDriveKinematics.desaturateWheelVelocities(states, 4.0)
-        gc.set_threshold(700)
-        assert [(s.velocity, s.angle.getRadians()) for s in got] == want, got
-        print(len(got), len(states))
+        desat = SwerveDriveKinematics.desaturateWheelVelocities
+        for fuse in (1, 2, 3):
+            states = [SwerveModuleVelocity(3.0 * i, Rotation2d(i)) for i in range({n})]
+            want = [(s.velocity, s.angle.getRadians()) for s in desat(list(states), 4.0)]
+            got = call_armed(states, fuse, lambda: desat(states, 4.0))
+            assert [(s.velocity, s.angle.getRadians()) for s in got] == want, got
+            print(len(states))
     """)
-    length, left = out.split()
-    assert length == str(n)
-    if n > 20:          # beyond the tuple freelist the result's allocation does collect
-        assert left == "0", "the finalizer did not run during the call"
+    assert "0" in out.split(), "the finalizer never ran during a call"
 
 
 @pytest.mark.parametrize("n", [4, 40])
@@ -84,16 +94,15 @@ def test_2_interpolate_holds_its_items(n):
     out = run_isolated(prelude=BOMB, body=f"""
         import math
         kin = SwerveDriveKinematics([Translation2d(math.cos(i), math.sin(i)) for i in range({n})])
-        start = [SwerveModulePosition(i, Rotation2d(0.1 * i)) for i in range({n})]
-        end = [SwerveModulePosition(2 * i, Rotation2d(0.2 * i)) for i in range({n})]
-        want = kin.interpolate(list(start), list(end), 0.5)
-        armed(start)
-        got = kin.interpolate(start, end, 0.5)
-        gc.set_threshold(700)
-        assert got == want
-        print(len(start))
+        for fuse in (1, 2, 3):
+            start = [SwerveModulePosition(i, Rotation2d(0.1 * i)) for i in range({n})]
+            end = [SwerveModulePosition(2 * i, Rotation2d(0.2 * i)) for i in range({n})]
+            want = kin.interpolate(list(start), list(end), 0.5)
+            got = call_armed(start, fuse, lambda: kin.interpolate(start, end, 0.5))
+            assert got == want
+            print(len(start))
     """)
-    assert out.split() == ["0"]
+    assert "0" in out.split(), "the finalizer never ran during a call"
 
 
 def test_5_nearest_rejects_none():
@@ -121,10 +130,19 @@ def test_6_two_threads_share_a_kinematics_object():
             for c in commands]
     wrong = []
 
+    class Yielding:
+        # Iterating it gives the other thread the GIL in the middle of the call.
+        def __init__(self, items):
+            self.items = items
+
+        def __iter__(self):
+            time.sleep(0)
+            return iter(self.items)
+
     def worker(k):
         out = [SwerveModuleVelocity() for _ in range(4)]
-        for _ in range(2000):
-            kin.toSwerveModuleVelocitiesInto(commands[k], iter(out))
+        for _ in range(200):
+            kin.toSwerveModuleVelocitiesInto(commands[k], Yielding(out))
             got = [(m.velocity, m.angle.getRadians()) for m in out]
             if got != want[k]:
                 wrong.append(got)
@@ -148,20 +166,12 @@ def test_7_a_failed_into_call_keeps_heading_memory():
 
 @pytest.mark.parametrize("clone", [copy.copy, copy.deepcopy,
                                    lambda k: pickle.loads(pickle.dumps(k))])
-def test_8_copies_keep_heading_memory_and_centre_of_rotation(clone):
+def test_8_copies_keep_heading_memory(clone):
     kin = kin4()
     kin.toSwerveModuleVelocities(ChassisVelocities(0.0, 1.0, 0.5), T(0.1, -0.2))
     twin = clone(kin)
-    for cv in (ChassisVelocities(), ChassisVelocities(0.3, 0.0, 1.0)):
+    for cv in (ChassisVelocities(), ChassisVelocities(0.3, 0.0, 1.0), ChassisVelocities()):
         assert twin.toSwerveModuleVelocities(cv) == kin.toSwerveModuleVelocities(cv)
-
-
-def test_8_mecanum_copies_keep_the_centre_of_rotation():
-    kin = MecanumDriveKinematics(T(0.3, 0.25), T(0.3, -0.25), T(-0.3, 0.25), T(-0.3, -0.25))
-    kin.toWheelVelocities(ChassisVelocities(1.0, 0.0, 1.0), T(0.5, 0.0))   # sticky CoR
-    twin = pickle.loads(pickle.dumps(kin))
-    spin = ChassisVelocities(0.0, 0.0, 1.0)
-    assert list(twin.toWheelVelocities(spin)) == list(kin.toWheelVelocities(spin))
 
 
 def test_9_a_failed_odometry_init_leaves_an_object_that_refuses_to_compute():
