@@ -18,18 +18,8 @@ from drivekin._kernels cimport (
 )
 from drivekin._errors import refuse_delete, type_name
 from drivekin._format import f2
+from drivekin._typedict cimport drivekin_set_type_attr
 
-cdef extern from *:
-    """
-    /* Cython extension types are static types whose dict cannot be assigned from
-       Python; WPILib's constants (Rotation2d.kZero, ...) are added here once. */
-    static int drivekin_set_type_attr(PyObject *t, PyObject *name, PyObject *v) {
-        int r = PyDict_SetItem(((PyTypeObject *)t)->tp_dict, name, v);
-        PyType_Modified((PyTypeObject *)t);
-        return r;
-    }
-    """
-    int drivekin_set_type_attr(object t, object name, object v) except -1
 
 cdef double DEG = 180.0 / M_PI
 

@@ -12,7 +12,6 @@ cdef class _Odometry:
     cdef rot2_t prev_gyro        # gyro reading at the last update/reset
     cdef bint ready              # set by a completed __init__; nothing computes before
     cdef int _start_init(self) except -1
-    cdef int _check(self) except -1
 
 @cython.final
 cdef class SwerveDriveOdometry(_Odometry):

@@ -27,6 +27,11 @@ cdef pose2_t initial(object p) except *:
     return (<Pose2d>p).p
 
 
+cdef int uninitialised(object odometry) except -1:
+    # Callers test the flag inline; this cold path only builds the error.
+    raise RuntimeError(f"{type(odometry).__name__}.__init__ has not completed")
+
+
 cdef class _Odometry:
     """Pose state and the resets shared by every odometry class."""
 
@@ -36,30 +41,29 @@ cdef class _Odometry:
                             "be called again (use resetPosition)")
         return 0
 
-    cdef int _check(self) except -1:
-        if not self.ready:
-            raise RuntimeError(f"{type(self).__name__}.__init__ has not completed")
-        return 0
-
     def getPose(self):
         """Return the current pose estimate (field frame, m)."""
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         return new_pose(self.pose)
 
     def resetPose(self, Pose2d pose not None):
         """Set the pose; the gyro and wheel baselines are left as they are."""
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         self.pose = pose.p
 
     def resetTranslation(self, Translation2d translation not None):
         """Set the position and keep the heading."""
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         self.pose.t = translation.v
 
     def resetRotation(self, Rotation2d rotation not None):
         """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
         here that makes the next update report a wrong heading; drivekin does not.)"""
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         self.pose.r = rotation.r
 
 
@@ -97,7 +101,8 @@ cdef class SwerveDriveOdometry(_Odometry):
     def resetPosition(self, Rotation2d gyroAngle not None, modulePositions, Pose2d pose not None):
         """Reset the pose, the gyro baseline and the module-position baseline."""
         cdef Py_ssize_t i
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         self.kin._read(modulePositions, SwerveModulePosition, "modulePositions")
         for i in range(self.kin.n):
             self.prev[i] = self.kin.s0[i]
@@ -111,7 +116,8 @@ cdef class SwerveDriveOdometry(_Odometry):
         cdef Py_ssize_t i
         cdef double d
         cdef double r[3]
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         k._read(modulePositions, SwerveModulePosition, "modulePositions")
         for i in range(k.n):
             d = k.s0[i]
@@ -141,7 +147,8 @@ cdef class MecanumDriveOdometry(_Odometry):
     def resetPosition(self, Rotation2d gyroAngle not None,
                       MecanumDriveWheelPositions wheelPositions not None, Pose2d pose not None):
         """Reset the pose, the gyro baseline and the wheel-position baseline."""
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         self.prev = (<_WheelValues>wheelPositions).w
         self.prev_gyro = gyroAngle.r
         self.pose = pose.p
@@ -154,7 +161,8 @@ cdef class MecanumDriveOdometry(_Odometry):
         cdef double r[3]
         cdef Py_ssize_t i
         cdef _WheelValues w = wheelPositions
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         for i in range(4):
             d[i] = w.w[i] - self.prev[i]
         self.prev = w.w
@@ -182,7 +190,8 @@ cdef class DifferentialDriveOdometry(_Odometry):
     def resetPosition(self, Rotation2d gyroAngle not None, double leftDistance,
                       double rightDistance, Pose2d pose not None):
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         self.prev_l = leftDistance
         self.prev_r = rightDistance
         self.prev_gyro = gyroAngle.r
@@ -191,7 +200,8 @@ cdef class DifferentialDriveOdometry(_Odometry):
     def update(self, Rotation2d gyroAngle not None, double leftDistance, double rightDistance):
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
-        self._check()
+        if not self.ready:
+            uninitialised(self)
         cdef double dl = leftDistance - self.prev_l, dr = rightDistance - self.prev_r
         self.prev_l = leftDistance
         self.prev_r = rightDistance
