@@ -16,6 +16,8 @@ for so in "$work"/src/drivekin/*.so; do    # a build that ignored CFLAGS would p
     nm -D "$so" | grep __asan_init >/dev/null || { echo "$so is not instrumented" >&2; exit 1; }
 done
 
+runtime=$(gcc -print-file-name=libasan.so)
+[ -f "$runtime" ] || { echo "gcc has no ASan runtime (libasan.so)" >&2; exit 1; }
 mkdir "$work/asan-reports"
 # PYTHONMALLOC=malloc: every Python object gets its own malloc block, so ASan sees
 #   overflows and use-after-free of objects (pymalloc would hide them inside its arenas).
@@ -24,16 +26,19 @@ mkdir "$work/asan-reports"
 # ASAN_OPTIONS:
 #   detect_leaks=0            CPython does not free everything at exit, so LeakSanitizer
 #                             would fail every process; scripts/leakcheck.py covers leaks.
-#   abort_on_error=1          a report ends the process with SIGABRT (no report goes unnoticed
-#                             as an ordinary exit status; reports halt at the first error).
+#   abort_on_error=1          end a reporting process with SIGABRT, not exit(1), so a report in
+#                             a subprocess cannot pass for an ordinary error exit (ASan
+#                             stops at the first report either way).
 #   allocator_may_return_null=1  huge requests return NULL and Python raises MemoryError as
 #                             it does without ASan, instead of an allocation-size report.
 #   log_path                  every process writes its report to a file here, so a report
 #                             in a subprocess fails the run even if its test ignored it.
+# DRIVEKIN_ASAN=1: a test that cannot run under ASan may skip itself on it, saying why
+#   (none needs to today).
 run_env=(
     PYTHONPATH="$work/src${PYTHONPATH:+:$PYTHONPATH}"
     PYTHONMALLOC=malloc
-    LD_PRELOAD="$(gcc -print-file-name=libasan.so)"
+    LD_PRELOAD="$runtime"
     ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:allocator_may_return_null=1:log_path=$work/asan-reports/asan"
     DRIVEKIN_ASAN=1
 )

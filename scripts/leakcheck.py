@@ -20,7 +20,7 @@ by a third element (constructors solving a pseudo-inverse take ~0.5 ms a call).
 Adding an operation is one line in OPERATIONS or ERRORS. Exit status: 0 if every row
 passed, 1 otherwise (the failing rows are named), 2 for bad arguments.
 
-    python scripts/leakcheck.py                  # 10**6 calls per row, about 5 minutes
+    python scripts/leakcheck.py                  # 10**6 calls per row, about 3 minutes
     python scripts/leakcheck.py --count 20000 -k swerve
 """
 from __future__ import annotations
