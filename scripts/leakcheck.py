@@ -1,0 +1,287 @@
+#!/usr/bin/env python3
+"""Leak check: run every hot operation and every error path of drivekin many times and
+fail if memory stays allocated afterwards.
+
+For each row of OPERATIONS and ERRORS: warm up (fills freelists and caches), then
+compare two probes before and after a loop of calls, with garbage collected at both ends:
+
+* ``sys.getallocatedblocks()`` over ``--count`` calls (default 10**6): live pymalloc
+  blocks, i.e. Python objects and small PyMem buffers. Cheap and exact, but blind to
+  blocks over 512 bytes (and always 0 under PYTHONMALLOC=malloc, e.g. in the ASan run).
+* tracemalloc's traced size over a tenth as many calls (tracemalloc slows allocation
+  3-10x): every Python allocator domain at any size (drivekin's PyMem buffers, numpy
+  array data), so a leaked large buffer shows too.
+
+Growth beyond a fixed slack (which does not scale with the count) fails the row: a leak
+of one block per 1000 calls is 1000 blocks at the default count. Error rows must raise
+the listed exception; any other outcome fails the row too. A row may divide the count
+by a third element (constructors solving a pseudo-inverse take ~0.5 ms a call).
+
+Adding an operation is one line in OPERATIONS or ERRORS. Exit status: 0 if every row
+passed, 1 otherwise (the failing rows are named), 2 for bad arguments.
+
+    python scripts/leakcheck.py                  # 10**6 calls per row, about 3 minutes
+    python scripts/leakcheck.py --count 20000 -k swerve
+"""
+from __future__ import annotations
+
+import argparse
+import gc
+import itertools
+import sys
+import time
+import tracemalloc
+
+import numpy as np
+
+from drivekin import (
+    ChassisAccelerations, ChassisVelocities, DifferentialDriveKinematics,
+    DifferentialDriveOdometry, DifferentialDriveWheelPositions,
+    DifferentialDriveWheelVelocities, MecanumDriveKinematics, MecanumDriveOdometry,
+    MecanumDriveWheelPositions, MecanumDriveWheelVelocities, Pose2d, Rotation2d,
+    SwerveDriveKinematics, SwerveDriveOdometry, SwerveModuleAcceleration,
+    SwerveModulePosition, SwerveModuleVelocity, Transform2d, Translation2d, Twist2d,
+    wpistruct,
+)
+
+SLACK_BLOCKS = 64          # one-off effects: a method cache entry, a resized dict, ...
+SLACK_BYTES = 64 * 1024
+WARMUP = 1000
+
+# --- fixtures shared by the rows -------------------------------------------------------
+CORNERS = [Translation2d(0.3, 0.3), Translation2d(0.3, -0.3),
+           Translation2d(-0.3, 0.3), Translation2d(-0.3, -0.3)]
+swerve = SwerveDriveKinematics(*CORNERS)
+mecanum = MecanumDriveKinematics(*CORNERS)
+diff = DifferentialDriveKinematics(0.6)
+cv = ChassisVelocities(1.0, 0.5, 0.8)
+ca = ChassisAccelerations(0.5, 0.2, 0.3)
+angle = Rotation2d(0.3)
+cor = Translation2d(0.1, 0.0)
+pose = Pose2d(1.0, 2.0, Rotation2d(0.5))
+twist = Twist2d(0.1, 0.02, 0.05)
+states = [SwerveModuleVelocity(4.0 + i, Rotation2d(0.1 * i)) for i in range(4)]
+states_arr = np.array([[4.0 + i, 0.1 * i] for i in range(4)])
+positions = [SwerveModulePosition(0.1 * i, Rotation2d(0.1 * i)) for i in range(4)]
+positions_arr = np.array([[0.1 * i, 0.1 * i] for i in range(4)])
+accels = [SwerveModuleAcceleration(1.0, Rotation2d(0.1 * i)) for i in range(4)]
+out_states = [SwerveModuleVelocity() for _ in range(4)]
+out_arr = np.zeros((4, 2))
+out_cv, out_twist = ChassisVelocities(), Twist2d()
+mwv = MecanumDriveWheelVelocities(5.0, 4.0, 3.0, 2.0)
+mwp = MecanumDriveWheelPositions(0.1, 0.2, 0.3, 0.4)
+out_mwv = MecanumDriveWheelVelocities()
+dwv = DifferentialDriveWheelVelocities(5.0, 4.0)
+out_dwv = DifferentialDriveWheelVelocities()
+swerve_odo = SwerveDriveOdometry(swerve, Rotation2d(), positions)
+mecanum_odo = MecanumDriveOdometry(mecanum, Rotation2d(), mwp)
+diff_odo = DifferentialDriveOdometry(Rotation2d(), 0.0, 0.0)
+packed_pose = wpistruct.pack(pose)
+packed_swerve = wpistruct.pack(swerve)
+packed_poses = wpistruct.packArray([pose] * 3)
+buf = bytearray(64)
+distinct = itertools.count()
+
+
+class BadFloat:
+    def __float__(self):
+        raise ArithmeticError("from __float__")
+
+
+def new_state_copies():      # fresh, mutable inputs for the in-place desaturation
+    for s, v in zip(states, (4.0, 5.0, 6.0, 7.0)):
+        s.velocity = v
+    return states
+
+
+# (name, callable[, count divisor]): each callable is called with no arguments.
+OPERATIONS = [
+    ("Rotation2d(x)", lambda: Rotation2d(0.7)),
+    ("Pose2d(x, y, rot)", lambda: Pose2d(1.0, 2.0, angle)),
+    ("pose.exp(twist)", lambda: pose.exp(twist)),
+    ("twist.exp()", lambda: twist.exp()),
+    ("pose.plus(transform)", lambda: pose.plus(Transform2d(1.0, 0.0, angle))),
+    ("pose.log(end)", lambda: pose.log(Pose2d(2.0, 1.0, angle))),
+    ("cv.discretize", lambda: cv.discretize(0.02)),
+    ("cv.discretizeInto", lambda: cv.discretizeInto(0.02, out_cv)),
+    ("cv.toRobotRelative", lambda: cv.toRobotRelative(angle)),
+    ("cv.toFieldRelative", lambda: cv.toFieldRelative(angle)),
+    ("cv.toRobotRelativeInto", lambda: cv.toRobotRelativeInto(angle, out_cv)),
+    ("cv.toFieldRelativeInto", lambda: cv.toFieldRelativeInto(angle, out_cv)),
+    ("swerve IK", lambda: swerve.toSwerveModuleVelocities(cv)),
+    ("swerve IK about a CoR", lambda: swerve.toSwerveModuleVelocities(cv, cor)),
+    ("swerve IK Into list", lambda: swerve.toSwerveModuleVelocitiesInto(cv, out_states)),
+    ("swerve IK Into ndarray", lambda: swerve.toSwerveModuleVelocitiesInto(cv, out_arr)),
+    ("swerve FK list", lambda: swerve.toChassisVelocities(states)),
+    ("swerve FK ndarray", lambda: swerve.toChassisVelocities(states_arr)),
+    ("swerve FK Into list", lambda: swerve.toChassisVelocitiesInto(states, out_cv)),
+    ("swerve FK Into ndarray", lambda: swerve.toChassisVelocitiesInto(states_arr, out_cv)),
+    ("swerve toTwist2d deltas", lambda: swerve.toTwist2d(positions)),
+    ("swerve toTwist2d start end", lambda: swerve.toTwist2d(positions, positions)),
+    ("swerve toTwist2dInto list", lambda: swerve.toTwist2dInto(positions, out_twist)),
+    ("swerve toTwist2dInto ndarray", lambda: swerve.toTwist2dInto(positions_arr, out_twist)),
+    ("swerve accelerations", lambda: swerve.toSwerveModuleAccelerations(ca, 1.0)),
+    ("swerve toChassisAccelerations", lambda: swerve.toChassisAccelerations(accels)),
+    ("swerve interpolate", lambda: swerve.interpolate(positions, positions, 0.5)),
+    ("swerve resetHeadings", lambda: swerve.resetHeadings([angle] * 4)),
+    ("desaturate", lambda: SwerveDriveKinematics.desaturateWheelVelocities(states, 4.5)),
+    ("desaturate 5-arg", lambda: SwerveDriveKinematics.desaturateWheelVelocities(
+        states, cv, 4.5, 4.0, 6.0)),
+    ("desaturateInPlace list", lambda: SwerveDriveKinematics.desaturateWheelVelocitiesInPlace(
+        new_state_copies(), 4.5)),
+    ("desaturateInPlace ndarray", lambda: SwerveDriveKinematics.desaturateWheelVelocitiesInPlace(
+        states_arr, 4.5)),
+    ("desaturateInPlace 5-arg", lambda: SwerveDriveKinematics.desaturateWheelVelocitiesInPlace(
+        new_state_copies(), cv, 4.5, 4.0, 6.0)),
+    ("SwerveDriveKinematics()", lambda: SwerveDriveKinematics(*CORNERS), 100),
+    ("mecanum IK", lambda: mecanum.toWheelVelocities(cv)),
+    ("mecanum IK Into", lambda: mecanum.toWheelVelocitiesInto(cv, out_mwv)),
+    ("mecanum FK", lambda: mecanum.toChassisVelocities(mwv)),
+    ("mecanum FK Into", lambda: mecanum.toChassisVelocitiesInto(mwv, out_cv)),
+    ("mecanum toTwist2d", lambda: mecanum.toTwist2d(mwp, mwp)),
+    ("mecanum desaturate", lambda: mwv.desaturate(4.5)),
+    ("mecanum desaturateInPlace", lambda: out_mwv.desaturateInPlace(4.5)),
+    ("differential IK", lambda: diff.toWheelVelocities(cv)),
+    ("differential IK Into", lambda: diff.toWheelVelocitiesInto(cv, out_dwv)),
+    ("differential FK", lambda: diff.toChassisVelocities(dwv)),
+    ("differential FK Into", lambda: diff.toChassisVelocitiesInto(dwv, out_cv)),
+    ("differential toTwist2d", lambda: diff.toTwist2d(0.1, 0.2)),
+    ("differential desaturate", lambda: dwv.desaturate(4.5)),
+    ("differential desaturateInPlace", lambda: out_dwv.desaturateInPlace(4.5)),
+    ("swerve odometry update list", lambda: swerve_odo.update(angle, positions)),
+    ("swerve odometry update ndarray", lambda: swerve_odo.update(angle, positions_arr)),
+    ("swerve odometry resetPosition", lambda: swerve_odo.resetPosition(angle, positions, pose)),
+    ("SwerveDriveOdometry()", lambda: SwerveDriveOdometry(swerve, angle, positions)),
+    ("mecanum odometry update", lambda: mecanum_odo.update(angle, mwp)),
+    ("differential odometry update", lambda: diff_odo.update(angle, 0.1, 0.2)),
+    ("wpistruct.pack Pose2d", lambda: wpistruct.pack(pose)),
+    ("wpistruct.pack swerve", lambda: wpistruct.pack(swerve)),
+    ("wpistruct.packInto", lambda: wpistruct.packInto(pose, buf, 8)),
+    ("wpistruct.packArray", lambda: wpistruct.packArray([pose, pose, pose])),
+    ("wpistruct.unpack Pose2d", lambda: wpistruct.unpack(Pose2d, packed_pose)),
+    ("wpistruct.unpack swerve", lambda: wpistruct.unpack(SwerveDriveKinematics, packed_swerve),
+     100),
+    ("wpistruct.unpackArray", lambda: wpistruct.unpackArray(Pose2d, packed_poses)),
+    # Issue 6 defect 13: a cache keyed by module count must stay bounded.
+    ("wpistruct.getSize(numModules=many n)", lambda: wpistruct.getSize(
+        SwerveDriveKinematics, numModules=2 + next(distinct) % 100_000)),
+    ("str(pose)", lambda: str(pose)),
+]
+
+# (name, callable, exception the call must raise)
+ERRORS = [
+    ("Rotation2d(str)", lambda: Rotation2d("x"), TypeError),
+    ("Rotation2d(raising __float__)", lambda: Rotation2d(BadFloat()), ArithmeticError),
+    ("Pose2d(x, y) missing rotation", lambda: Pose2d(1.0, 2.0), TypeError),
+    ("pose.exp(None)", lambda: pose.exp(None), TypeError),
+    ("cv.discretize(str)", lambda: cv.discretize("x"), TypeError),
+    ("cv.toRobotRelativeInto(wrong out)", lambda: cv.toRobotRelativeInto(angle, pose), TypeError),
+    ("swerve IK(None)", lambda: swerve.toSwerveModuleVelocities(None), TypeError),
+    ("swerve IK Into short list", lambda: swerve.toSwerveModuleVelocitiesInto(
+        cv, out_states[:3]), ValueError),
+    ("swerve IK Into None element", lambda: swerve.toSwerveModuleVelocitiesInto(
+        cv, out_states[:3] + [None]), TypeError),
+    ("swerve IK Into float32", lambda: swerve.toSwerveModuleVelocitiesInto(
+        cv, np.zeros((4, 2), np.float32)), TypeError),
+    ("swerve IK Into wrong shape", lambda: swerve.toSwerveModuleVelocitiesInto(
+        cv, np.zeros((3, 2))), ValueError),
+    ("swerve FK None element", lambda: swerve.toChassisVelocities(states[:3] + [None]), TypeError),
+    ("swerve FK wrong length", lambda: swerve.toChassisVelocities(states[:3]), ValueError),
+    ("swerve FK int64 array", lambda: swerve.toChassisVelocities(
+        np.zeros((4, 2), np.int64)), TypeError),
+    ("swerve toTwist2dInto wrong element", lambda: swerve.toTwist2dInto(
+        states, out_twist), TypeError),
+    ("desaturate None element", lambda: SwerveDriveKinematics.desaturateWheelVelocities(
+        states[:3] + [None], 4.5), TypeError),
+    ("desaturate bad max", lambda: SwerveDriveKinematics.desaturateWheelVelocities(
+        states, "x"), TypeError),
+    ("desaturateInPlace float32", lambda: SwerveDriveKinematics.desaturateWheelVelocitiesInPlace(
+        np.zeros((4, 2), np.float32), 4.5), TypeError),
+    ("SwerveDriveKinematics(one module)", lambda: SwerveDriveKinematics(CORNERS[0]), ValueError),
+    ("mecanum IK Into wrong out", lambda: mecanum.toWheelVelocitiesInto(cv, out_dwv), TypeError),
+    ("mecanum FK(None)", lambda: mecanum.toChassisVelocities(None), TypeError),
+    ("differential toTwist2d(str, str)", lambda: diff.toTwist2d("a", "b"), TypeError),
+    ("DifferentialDriveKinematics(-1)", lambda: DifferentialDriveKinematics(-1.0), ValueError),
+    ("swerve odometry update short", lambda: swerve_odo.update(angle, positions[:3]), ValueError),
+    ("swerve odometry update None gyro", lambda: swerve_odo.update(None, positions), TypeError),
+    ("swerve odometry update float32", lambda: swerve_odo.update(
+        angle, positions_arr.astype(np.float32)), TypeError),
+    ("mecanum odometry update(None)", lambda: mecanum_odo.update(angle, None), TypeError),
+    ("wpistruct.pack(object)", lambda: wpistruct.pack(object()), TypeError),
+    ("wpistruct.packInto short buffer", lambda: wpistruct.packInto(pose, bytearray(8)), ValueError),
+    ("wpistruct.packInto read-only", lambda: wpistruct.packInto(pose, bytes(24)), TypeError),
+    ("wpistruct.unpack short data", lambda: wpistruct.unpack(Pose2d, b"\0" * 8), ValueError),
+    ("wpistruct.unpack(str)", lambda: wpistruct.unpack(Pose2d, "abc"), TypeError),
+]
+
+
+def expect(fn, exc):
+    """A callable that runs ``fn`` and requires it to raise ``exc``."""
+    def call():
+        try:
+            fn()
+        except exc:
+            return
+        raise AssertionError(f"did not raise {exc.__name__}")
+    return call
+
+
+def measure(fn, count):
+    """(block growth over ``count`` calls, traced-byte growth over ``count // 10``)."""
+    for _ in itertools.repeat(None, WARMUP):
+        fn()
+    loop = itertools.repeat(None, count)
+    gc.collect()
+    start = sys.getallocatedblocks()
+    for _ in loop:
+        fn()
+    gc.collect()
+    blocks = sys.getallocatedblocks() - start
+    loop = itertools.repeat(None, max(count // 10, 1))
+    tracemalloc.start()
+    try:
+        gc.collect()
+        start = tracemalloc.get_traced_memory()[0]
+        for _ in loop:
+            fn()
+        gc.collect()
+        return blocks, tracemalloc.get_traced_memory()[0] - start
+    finally:
+        tracemalloc.stop()
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--count", type=int, default=1_000_000, help="calls per row (default 10**6)")
+    ap.add_argument("-k", dest="only", default="", help="only rows whose name contains this")
+    args = ap.parse_args(argv)
+    if args.count < 1:
+        ap.error("--count must be positive")
+    rows = [(n, f, d) for n, f, d in ((*r, 1)[:3] for r in OPERATIONS)]
+    rows += [(n, expect(f, e), 1) for n, f, e in ERRORS]
+    rows = [r for r in rows if args.only in r[0]]
+    failed = []
+    t_all = time.perf_counter()
+    for name, fn, divisor in rows:
+        t0 = time.perf_counter()
+        try:
+            blocks, nbytes = measure(fn, max(args.count // divisor, 1))
+        except Exception as e:                         # noqa: BLE001 -- reported, then fail
+            failed.append(name)
+            print(f"FAIL {name}: {type(e).__name__}: {e}")
+            continue
+        ok = blocks <= SLACK_BLOCKS and nbytes <= SLACK_BYTES
+        if not ok:
+            failed.append(name)
+        print(f"{'ok  ' if ok else 'FAIL'} {name}: {blocks:+d} blocks, {nbytes:+d} B "
+              f"({time.perf_counter() - t0:.1f} s)", flush=True)
+    print(f"{len(rows)} rows, up to {args.count} calls each, {time.perf_counter() - t_all:.0f} s")
+    if failed:
+        print("leak check FAILED: " + "; ".join(failed))
+        return 1
+    print("leak check passed")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
