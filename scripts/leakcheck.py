@@ -26,6 +26,7 @@ passed, 1 otherwise (the failing rows are named), 2 for bad arguments.
 from __future__ import annotations
 
 import argparse
+import copy
 import gc
 import itertools
 import sys
@@ -43,6 +44,7 @@ from drivekin import (
     SwerveModulePosition, SwerveModuleVelocity, Transform2d, Translation2d, Twist2d,
     wpistruct,
 )
+from drivekin.geometry import _rotation_from_cos_sin as rotation_from_cos_sin
 
 SLACK_BLOCKS = 64          # one-off effects: a method cache entry, a resized dict, ...
 SLACK_BYTES = 64 * 1024
@@ -81,6 +83,9 @@ packed_swerve = wpistruct.pack(swerve)
 packed_poses = wpistruct.packArray([pose] * 3)
 buf = bytearray(64)
 distinct = itertools.count()
+# More modules than the desaturation's stack buffer holds: its heap path.
+many_states = [SwerveModuleVelocity(4.0 + i, Rotation2d(0.01 * i)) for i in range(40)]
+many_bad = many_states[:39] + [None]
 
 
 class BadFloat:
@@ -166,6 +171,13 @@ OPERATIONS = [
     ("wpistruct.getSize(numModules=many n)", lambda: wpistruct.getSize(
         SwerveDriveKinematics, numModules=2 + next(distinct) % 100_000)),
     ("str(pose)", lambda: str(pose)),
+    ("desaturate 40 modules", lambda: SwerveDriveKinematics.desaturateWheelVelocities(
+        many_states, 4.5)),
+    ("swerve copy", lambda: swerve.copy(positions)),
+    ("copy.copy(swerve)", lambda: copy.copy(swerve), 10),
+    ("swerve __setstate__", lambda: swerve.__setstate__((angle,) * 4)),
+    ("Pose2d(keywords)", lambda: Pose2d(translation=cor, rotation=angle)),
+    ("pose.nearest", lambda: pose.nearest([pose, pose])),
 ]
 
 # (name, callable, exception the call must raise)
@@ -212,6 +224,20 @@ ERRORS = [
     ("wpistruct.packInto read-only", lambda: wpistruct.packInto(pose, bytes(24)), TypeError),
     ("wpistruct.unpack short data", lambda: wpistruct.unpack(Pose2d, b"\0" * 8), ValueError),
     ("wpistruct.unpack(str)", lambda: wpistruct.unpack(Pose2d, "abc"), TypeError),
+    ("desaturate 40 modules, None element", lambda: SwerveDriveKinematics
+        .desaturateWheelVelocities(many_bad, 4.5), TypeError),
+    ("swerve interpolate None element", lambda: swerve.interpolate(
+        positions, positions[:3] + [None], 0.5), TypeError),
+    ("swerve __setstate__ short", lambda: swerve.__setstate__((angle,) * 3), ValueError),
+    ("swerve re-init", lambda: swerve.__init__(*CORNERS), TypeError),
+    ("uninitialised kinematics", lambda: SwerveDriveKinematics.__new__(
+        SwerveDriveKinematics).toWheelVelocities(cv), RuntimeError),
+    ("Rotation2d re-init", lambda: angle.__init__(1.0), TypeError),
+    ("Translation2d(vector, extra)", lambda: Translation2d(np.zeros(2), 1.0), TypeError),
+    ("pose.nearest None element", lambda: pose.nearest([pose, None]), TypeError),
+    ("unpickle non-unit rotation", lambda: rotation_from_cos_sin(2.0, 0.0), ValueError),
+    ("memoryview for an array", lambda: swerve.toChassisVelocities(
+        memoryview(states_arr)), TypeError),
 ]
 
 
