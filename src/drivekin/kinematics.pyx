@@ -1073,6 +1073,7 @@ cdef class SwerveDriveKinematics:
         cdef double* buf = stack
         cdef double div, mul
         cdef Py_ssize_t i, n
+        cdef PyObject** items
         cdef object t
         parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
                     attainableMaxTranslationalSpeed, attainableMaxRotationalVelocity, &p)
@@ -1085,12 +1086,14 @@ cdef class SwerveDriveKinematics:
         try:
             # The caller's list is read completely before the result tuple is allocated:
             # that allocation can run the cyclic GC, whose finalizers may mutate the list.
-            read_velocities(PySequence_Fast_ITEMS(fast), n, buf)
-            desaturate_factors(max_abs(n, buf, 3), &p, &div, &mul)
+            desaturate_factors(read_velocities(PySequence_Fast_ITEMS(fast), n, buf),
+                               &p, &div, &mul)
             t = new_modules(n, SwerveModuleVelocity)
+            items = PySequence_Fast_ITEMS(t)
             for i in range(n):
-                buf[3 * i] = buf[3 * i] / div * mul
-            store_strided(t, n, buf)
+                (<_ModuleVector>items[i]).m = buf[3 * i] / div * mul
+                (<_ModuleVector>items[i]).a.c = buf[3 * i + 1]
+                (<_ModuleVector>items[i]).a.s = buf[3 * i + 2]
         finally:
             if buf != stack:
                 PyMem_Free(buf)
@@ -1153,26 +1156,19 @@ cdef int parse_desat(object first, object mm, object mt, object mr,
     return 0
 
 
-cdef int read_velocities(PyObject** items, Py_ssize_t n, double* buf) except -1:
-    """Check n SwerveModuleVelocity and copy (velocity, cos, sin) to buf (stride 3)."""
+cdef double read_velocities(PyObject** items, Py_ssize_t n, double* buf) except -1.0:
+    """Check n SwerveModuleVelocity, copy (velocity, cos, sin) to buf (stride 3) and
+    return the largest |velocity| (Java Math.max semantics: NaN wins)."""
     cdef Py_ssize_t i
+    cdef double r = 0.0
     for i in range(n):
         if not exact_type(items[i], <PyObject*>SwerveModuleVelocity):
             item(items, i, SwerveModuleVelocity, "moduleVelocities")  # raises the TypeError
         buf[3 * i] = (<_ModuleVector>items[i]).m
         buf[3 * i + 1] = (<_ModuleVector>items[i]).a.c
         buf[3 * i + 2] = (<_ModuleVector>items[i]).a.s
-    return 0
-
-
-cdef void store_strided(object t, Py_ssize_t n, const double* buf) noexcept:
-    """Copy n (scalar, cos, sin) triples into the module objects of tuple t."""
-    cdef Py_ssize_t i
-    cdef PyObject** items = PySequence_Fast_ITEMS(t)
-    for i in range(n):
-        (<_ModuleVector>items[i]).m = buf[3 * i]
-        (<_ModuleVector>items[i]).a.c = buf[3 * i + 1]
-        (<_ModuleVector>items[i]).a.s = buf[3 * i + 2]
+        r = jmax(r, fabs(buf[3 * i]))
+    return r
 
 
 cdef int desat_objects(PyObject** items, Py_ssize_t n, const desat_t* p,
