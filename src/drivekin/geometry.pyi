@@ -24,8 +24,8 @@ class Translation2d:
 
     ``Translation2d(x, y)`` takes the components in m; ``Translation2d(distance, angle)``
     takes a length in m and a :class:`Rotation2d` direction; ``Translation2d(vector)``
-    takes a float64 numpy array of shape (2,). Immutable; ``==`` compares each component within
-    1e-9 m.
+    takes a float64 numpy array of shape (2,). Immutable; ``==`` compares each component
+    within 1e-9 m.
     """
 
     kZero: ClassVar[Translation2d]
@@ -121,8 +121,8 @@ class Rotation2d:
     ``Rotation2d(value)`` takes an angle in radians. ``Rotation2d(x, y)`` takes any
     vector and normalises it; a vector of length 1e-6 or less gives the identity
     (WPILib reports an error there; drivekin returns the identity silently).
-    ``Rotation2d(matrix)`` takes a 2×2 special orthogonal float64 numpy array (ValueError if
-    ‖RRᵀ − I‖_F or |det R − 1| exceeds 1e-9).
+    ``Rotation2d(matrix)`` takes a 2×2 special orthogonal float64 numpy array (ValueError
+    if ‖RRᵀ − I‖_F or |det R − 1| exceeds 1e-9).
     The constructor angle is not remembered: ``Rotation2d(3π/2).getDegrees()`` is −90.
     """
 
