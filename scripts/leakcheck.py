@@ -254,10 +254,14 @@ def expect(fn, exc):
 
 def measure(fn, count):
     """(block growth over ``count`` calls, traced-byte growth over ``count // 10``)."""
-    for _ in itertools.repeat(None, WARMUP):
-        fn()
+    # Warm up twice around a full collection: some one-off allocations (dozens of blocks,
+    # e.g. caches behind an error message) happen only after the first gc.collect() and
+    # would otherwise count as growth in short runs.
+    for _ in range(2):
+        for _ in itertools.repeat(None, WARMUP):
+            fn()
+        gc.collect()
     loop = itertools.repeat(None, count)
-    gc.collect()
     start = sys.getallocatedblocks()
     for _ in loop:
         fn()
