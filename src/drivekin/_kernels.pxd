@@ -136,25 +136,31 @@ cdef inline pose2_t pose_times(pose2_t p, double k) noexcept nogil:
 cdef inline pose2_t twist_exp(double dx, double dy, double dtheta) noexcept nogil:
     cdef double st = sin(dtheta), ct = cos(dtheta), s, c
     if fabs(dtheta) < 1e-9:
-        # Series: without it dtheta = 1e-10 would give c = 0 exactly (cos rounds to 1).
+        # Series (exact to rounding here): sin θ/θ = 1 − θ²/6, (1 − cos θ)/θ = θ/2.
         s = 1.0 - dtheta * dtheta / 6.0
         c = 0.5 * dtheta
     else:
         s = st / dtheta
-        c = (1.0 - ct) / dtheta
+        # WPILib's (1 − cos θ)/θ cancels for small θ (cos θ rounds towards 1: at θ = 1e-8
+        # it loses everything); sin²θ / (1 + cos θ) is the same quantity without the
+        # subtraction while cos θ > 0, and beyond that 1 − cos θ ≥ 1 does not cancel.
+        c = (st * st / (1.0 + ct) if ct > 0.0 else 1.0 - ct) / dtheta
     return pose(vec(dx * s - dy * c, dx * c + dy * s), rot_unit(ct, st))
 
 cdef inline twist2_t transform_log_angle(pose2_t tr, double theta) noexcept nogil:
     # theta must equal atan2(tr.r.s, tr.r.c); callers that already know it skip the atan2.
     cdef twist2_t tw
     cdef double h = 0.5 * theta
-    cdef double cm1 = tr.r.c - 1.0
     cdef double k
-    # The branch tests cos - 1, not theta: active up to |theta| ~ 4.5e-5.
-    if fabs(cm1) < 1e-9:
+    # k = (θ/2)·cot(θ/2). WPILib computes (θ/2)·sin θ / (cos θ − 1), whose cos θ − 1 cancels
+    # (relative error ε/|cos θ − 1|: 1e-7 at θ = 5e-5). For cos θ > 0 the same value is
+    # (θ/2)(1 + cos θ)/sin θ, with no subtraction; elsewhere cos θ − 1 ≤ −1 is harmless.
+    if fabs(theta) < 1e-9:
         k = 1.0 - theta * theta / 12.0
+    elif tr.r.c > 0.0:
+        k = h * (1.0 + tr.r.c) / tr.r.s
     else:
-        k = -(h * tr.r.s) / cm1
+        k = -(h * tr.r.s) / (tr.r.c - 1.0)
     # WPILib rotates by the normalised (k, -h) and rescales by hypot(k, h); that is the
     # linear map below up to rounding (k >= 0 here, so the normalisation never degenerates).
     tw.dx = k * tr.t.x + h * tr.t.y
