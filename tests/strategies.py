@@ -204,11 +204,12 @@ EPS = 2.220446049250313e-16
 
 
 def log_rel(theta: float, rel: float = 1e-12) -> float:
-    """Relative error allowance for a result that went through Transform2d.log and/or
-    Twist2d.exp with rotation angle ``theta`` (use the sum of both allowances for a round
-    trip).
+    """Relative error allowance for comparing with robotpy-wpimath a result that went
+    through Transform2d.log and/or Twist2d.exp with rotation angle ``theta`` (use the sum
+    of both allowances for a round trip).
 
-    Both formulas are WPILib's, so these are properties of the algorithm, not of the port:
+    drivekin evaluates both without cancellation (tests/properties/test_exp_log_exactness.py
+    holds it to 1e-13 of 50-digit math); robotpy uses WPILib's formulas, whose errors are:
 
     * log, outside its series branch (|cos θ − 1| ≥ 1e-9), computes
       k = −(θ/2)·sin θ / (cos θ − 1); cos θ − 1 cancels (relative error ≈ ε / |cos θ − 1|,
