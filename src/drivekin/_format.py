@@ -12,8 +12,9 @@ shortest round-tripping repr), so it never raises and does not depend on the cal
 
 The shortest representation is also what JDK 21+ uses for ``%.2f``. JDK 17 took the
 digits from the older ``FloatingDecimal`` algorithm; the two agreed on all of 30 000
-random doubles with |x| < 1e16 compared against OpenJDK 17, but for some larger doubles JDK 17 prints non-shortest digits: ``1e23`` is ``"99999999999999990000000.00"``
-there and ``"100000000000000000000000.00"`` here (and in JDK 21+).
+random doubles with |x| < 1e16 compared against OpenJDK 17, but for some larger doubles
+JDK 17 prints non-shortest digits: ``1e23`` is ``"99999999999999990000000.00"`` there
+and ``"100000000000000000000000.00"`` here (and in JDK 21+).
 """
 
 

@@ -1,6 +1,6 @@
 # Adding attributes to the dict of a Cython extension type (a static type, whose dict
 # Python code cannot assign): WPILib's constants (Rotation2d.kZero, ...) and the
-# Python-level __new__ of the wheel value classes.
+# Python-level __new__ of the wheel value classes (_wheels.install_bare_new).
 cdef extern from *:
     """
     static int drivekin_set_type_attr(PyObject *t, PyObject *name, PyObject *v) {

@@ -7,3 +7,5 @@ cdef class _WheelValues:
     cdef _WheelValues _lerp(self, _WheelValues end, double t)
     cdef bint _close(self, _WheelValues o) noexcept
     cdef str _fmt(self, tuple labels, str unit)
+
+cdef int install_bare_new(tuple classes, Py_ssize_t count) except -1

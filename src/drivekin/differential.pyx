@@ -6,8 +6,7 @@ Units: m, m/s, m/s², rad, rad/s, rad/s². The model is the same as Road Runner'
 cimport cython
 from libc.math cimport isfinite
 
-from drivekin._typedict cimport drivekin_set_type_attr, drivekin_slot_new
-from drivekin._wheels cimport _WheelValues
+from drivekin._wheels cimport _WheelValues, install_bare_new
 from drivekin._kernels cimport clamp01, wheels_desaturate
 from drivekin.geometry cimport new_twist
 from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
@@ -263,19 +262,5 @@ cdef class DifferentialDriveKinematics:
         (<_WheelValues>output).w[1] = (<_WheelValues>positions).w[1]
 
 
-def _bare_new(cls, *args, **kwargs):
-    """``cls.__new__(cls)`` called from Python: a valid all-zero value.
-
-    The wheel count is set by ``__init__`` and by the internal factories; a ``__cinit__``
-    doing it would cost every construction (16 instructions, 7 % of a façade call)."""
-    if not (isinstance(cls, type) and issubclass(cls, _Wheel2)):
-        raise TypeError(f"_Wheel2.__new__(cls): cls must be a wheel values class, "
-                        f"got {cls!r}")
-    cdef _Wheel2 o = drivekin_slot_new(cls)
-    o.k = 2
-    return o
-
-
-for _cls in (DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions, DifferentialDriveWheelAccelerations):
-    drivekin_set_type_attr(_cls, "__new__", staticmethod(_bare_new))
-del _cls
+install_bare_new((DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
+                  DifferentialDriveWheelAccelerations), 2)

@@ -866,7 +866,11 @@ cdef class SwerveDriveKinematics:
 
     def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
         """Same as :meth:`toSwerveModuleVelocities` about the robot origin."""
-        return self.toSwerveModuleVelocities(chassisVelocities, ORIGIN)
+        self._ready()
+        cdef object t = new_modules(self.n, SwerveModuleVelocity)
+        self._ik(chassisVelocities, ORIGIN)
+        store_modules(t, NULL, self.n, self.s0, self.s1, self.s2)
+        return t
 
     def toSwerveModuleVelocitiesInto(self, ChassisVelocities chassisVelocities not None, out,
                                      Translation2d centerOfRotation not None=ORIGIN):
@@ -1173,7 +1177,8 @@ cdef double read_velocities(PyObject** items, Py_ssize_t n, double* buf) except 
 
 cdef int desat_objects(PyObject** items, Py_ssize_t n, const desat_t* p,
                        double* div, double* mul) except -1:
-    """Check the N objects and compute the factors v' = v / div * mul."""
+    """The in-place form of read_velocities (no copy: nothing allocates before the
+    write-back) followed by the factors v' = v / div * mul."""
     cdef Py_ssize_t i
     cdef double r = 0.0
     for i in range(n):

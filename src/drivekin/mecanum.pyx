@@ -10,8 +10,7 @@ from libc.math cimport isfinite
 import numpy as np
 
 from drivekin._types cimport vec2_t
-from drivekin._typedict cimport drivekin_set_type_attr, drivekin_slot_new
-from drivekin._wheels cimport _WheelValues
+from drivekin._wheels cimport _WheelValues, install_bare_new
 from drivekin._kernels cimport clamp01, mat_vec, vec, vec_eq, wheels_desaturate
 from drivekin.geometry cimport Translation2d, new_twist
 from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
@@ -158,6 +157,22 @@ cdef class MecanumDriveWheelAccelerations(_Wheel4):
 
 
 # ---------------------------------------------------------------------------------------
+cdef inline void inverse_rows(const double* wx, const double* wy, vec2_t cor,
+                              double* m) noexcept:                 # OUT m (4 x 3)
+    cdef Py_ssize_t i
+    cdef double x, y
+    for i in range(4):
+        x = wx[i] - cor.x
+        y = wy[i] - cor.y
+        m[3 * i] = 1.0
+        if i == 0 or i == 3:        # front left, rear right
+            m[3 * i + 1] = -1.0
+            m[3 * i + 2] = -(x + y)
+        else:                       # front right, rear left
+            m[3 * i + 1] = 1.0
+            m[3 * i + 2] = x - y
+
+
 cdef class MecanumDriveKinematics:
     """MecanumDriveKinematics(frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
 
@@ -171,6 +186,9 @@ cdef class MecanumDriveKinematics:
                  Translation2d rearLeftWheel not None, Translation2d rearRightWheel not None):
         cdef Py_ssize_t i
         cdef Translation2d t
+        cdef double wx[4]
+        cdef double wy[4]
+        cdef double m[12]
         cdef tuple wheels = (frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
         if self.wheels is not None:
             raise TypeError("MecanumDriveKinematics is already initialised: __init__ cannot "
@@ -179,22 +197,19 @@ cdef class MecanumDriveKinematics:
             t = wheels[i]
             if not (isfinite(t.v.x) and isfinite(t.v.y)):
                 raise ValueError(f"wheel {i} position must be finite (m), got {t!r}")
+            wx[i] = t.v.x
+            wy[i] = t.v.y
         # The pseudo-inverse of the CoR = 0 matrix (numpy's SVD pinv, as WPILib Java's
         # EJML; built once, so its cost is irrelevant), before the object is touched.
-        rows = []
-        for i in range(4):
-            t = wheels[i]
-            rows.append([1.0, -1.0, -(t.v.x + t.v.y)] if i == 0 or i == 3
-                        else [1.0, 1.0, t.v.x - t.v.y])
-        cdef double[:, ::1] f = np.ascontiguousarray(np.linalg.pinv(np.array(rows)))
-        for i in range(4):
-            t = wheels[i]
-            self.wx[i] = t.v.x
-            self.wy[i] = t.v.y
+        inverse_rows(wx, wy, vec(0.0, 0.0), m)
+        cdef double[:, ::1] f = np.ascontiguousarray(
+            np.linalg.pinv(np.array([m[i] for i in range(12)]).reshape(4, 3)))
+        self.wx = wx
+        self.wy = wy
+        self.m = m
+        self.cor = vec(0.0, 0.0)
         for i in range(12):
             self.f[i] = f[i // 4, i % 4]
-        self.cor = vec(float("nan"), 0.0)       # forces the first build of the rows
-        self._set_cor(vec(0.0, 0.0))
         self.wheels = wheels                    # last: what every method checks
 
     cdef int _ready(self) except -1:
@@ -212,21 +227,9 @@ cdef class MecanumDriveKinematics:
         return f"MecanumDriveKinematics({', '.join(repr(w) for w in self.wheels)})"
 
     cdef void _set_cor(self, vec2_t cor) noexcept:
-        cdef Py_ssize_t i
-        cdef double x, y
-        if vec_eq(cor, self.cor):
-            return
-        for i in range(4):
-            x = self.wx[i] - cor.x
-            y = self.wy[i] - cor.y
-            self.m[3 * i] = 1.0
-            if i == 0 or i == 3:        # front left, rear right
-                self.m[3 * i + 1] = -1.0
-                self.m[3 * i + 2] = -(x + y)
-            else:                       # front right, rear left
-                self.m[3 * i + 1] = 1.0
-                self.m[3 * i + 2] = x - y
-        self.cor = cor
+        if not vec_eq(cor, self.cor):
+            inverse_rows(self.wx, self.wy, cor, self.m)
+            self.cor = cor
 
     cdef void _inverse(self, const double* x, object cor, double* out) except *:
         self._ready()
@@ -333,19 +336,5 @@ cdef class MecanumDriveKinematics:
         (<_WheelValues>output).w = (<_WheelValues>positions).w
 
 
-def _bare_new(cls, *args, **kwargs):
-    """``cls.__new__(cls)`` called from Python: a valid all-zero value.
-
-    The wheel count is set by ``__init__`` and by the internal factories; a ``__cinit__``
-    doing it would cost every construction (16 instructions, 7 % of a façade call)."""
-    if not (isinstance(cls, type) and issubclass(cls, _Wheel4)):
-        raise TypeError(f"_Wheel4.__new__(cls): cls must be a wheel values class, "
-                        f"got {cls!r}")
-    cdef _Wheel4 o = drivekin_slot_new(cls)
-    o.k = 4
-    return o
-
-
-for _cls in (MecanumDriveWheelVelocities, MecanumDriveWheelPositions, MecanumDriveWheelAccelerations):
-    drivekin_set_type_attr(_cls, "__new__", staticmethod(_bare_new))
-del _cls
+install_bare_new((MecanumDriveWheelVelocities, MecanumDriveWheelPositions,
+                  MecanumDriveWheelAccelerations), 4)
