@@ -38,6 +38,7 @@ if trace:
 compile_args = ["-O3", "-fno-math-errno"] if os.name != "nt" else []
 
 modules = ["geometry", "kinematics", "_wheels", "differential", "mecanum", "odometry", "_alloccount"]
+modules += ["diffswerve"]          # differential swerve pods (issue 7 §3)
 extensions = [
     Extension(
         f"drivekin.{name}",

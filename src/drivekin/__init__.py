@@ -10,6 +10,11 @@ from drivekin.differential import (
     DifferentialDriveWheelPositions,
     DifferentialDriveWheelVelocities,
 )
+from drivekin.diffswerve import (
+    DifferentialSwerveModuleKinematics,
+    DifferentialSwerveModuleVelocities,
+    DifferentialSwerveMotorVelocities,
+)
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.kinematics import (
     ChassisAccelerations,
@@ -56,4 +61,10 @@ __all__ = [
     "Transform2d",
     "Translation2d",
     "Twist2d",
+]
+# Differential swerve pods (drivekin.diffswerve).
+__all__ += [
+    "DifferentialSwerveModuleKinematics",
+    "DifferentialSwerveModuleVelocities",
+    "DifferentialSwerveMotorVelocities",
 ]

@@ -37,6 +37,7 @@ def _kin4():
 # One valid value per annotation (as spelled in the stubs).
 SAMPLES = {
     "float": lambda: 0.75,
+    "bool": lambda: True,
     "Translation2d": lambda: Translation2d(0.3, -0.2),
     "Rotation2d": lambda: Rotation2d(0.4),
     "Rotation2d | None": lambda: Rotation2d(0.4),

@@ -349,6 +349,8 @@ def _sample_instances() -> dict[str, object]:
         "MecanumDriveOdometry": MecanumDriveOdometry(
             mecanum, Rotation2d(), MecanumDriveWheelPositions()),
         "DifferentialDriveOdometry": DifferentialDriveOdometry(Rotation2d(), 0.0, 0.0),
+        "DifferentialSwerveModuleKinematics": drivekin.DifferentialSwerveModuleKinematics(
+            3.0, 5.0, 0.05),
     }
 
 

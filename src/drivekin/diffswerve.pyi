@@ -1,0 +1,302 @@
+"""Differential swerve modules: two motors drive each pod through a differential.
+
+Model (R = motor turns per output turn, so a ratio of 3 means the motor turns three times
+per pod turn)::
+
+    R_A · ω_pod   = ω_m1 + ω_m2          (the sum of the motors turns the pod)
+    R_L · ω_wheel = ω_m1 − ω_m2          (their difference spins the wheel)
+    ω_wheel       = v / r                (v: wheel ground speed, r: wheel radius)
+
+With ``motor2Inverted=True`` motor 2 is mounted reversed: what it reads and what it is
+commanded is −ω_m2. Units: m, m/s, rad, rad/s. The same linear map converts motor
+position changes (rad) into the pod's rotation (rad) and the wheel's travel (m), so
+integrating the velocity map and converting the integrated motor positions agree
+exactly (quail's ``calculateModuleAngle`` does not: it is off by a factor 2·R_s²).
+"""
+
+# Hand-written stub for the compiled module drivekin.diffswerve (diffswerve.pyx).
+# Every docstring is copied verbatim from the .pyx sources; tests/api/test_stubs.py checks
+# that they match the runtime ``__doc__`` and that no public name is missing on either side.
+#
+# At runtime the two value classes derive from the private base
+# drivekin._wheels._WheelValues; the inherited members are declared on each public class
+# instead, so they carry the precise types.
+
+from collections.abc import Iterator, Sequence
+from typing import ClassVar, final
+
+import numpy as np
+import numpy.typing as npt
+
+from drivekin.geometry import Rotation2d
+from drivekin.kinematics import SwerveModulePosition, SwerveModuleVelocity
+
+@final
+class DifferentialSwerveMotorVelocities:
+    """DifferentialSwerveMotorVelocities(motor1=0.0, motor2=0.0)
+
+    The angular velocities of a differential swerve pod's two motors, rad/s, as each
+    motor reads them (with ``motor2Inverted`` the kinematics already negated motor 2).
+    Mutable; ``==`` compares each motor within 1e-9 rad/s (so instances are unhashable);
+    unpacks as ``motor1, motor2 = velocities``.
+    """
+
+    def __init__(self, motor1: float = 0.0, motor2: float = 0.0) -> None: ...
+    @property
+    def motor1(self) -> float:
+        """Motor 1 angular velocity, rad/s."""
+
+    @motor1.setter
+    def motor1(self, value: float) -> None: ...
+    @property
+    def motor2(self) -> float:
+        """Motor 2 angular velocity, rad/s (as motor 2 reads it)."""
+
+    @motor2.setter
+    def motor2(self, value: float) -> None: ...
+    def interpolate(
+        self, endValue: DifferentialSwerveMotorVelocities, t: float
+    ) -> DifferentialSwerveMotorVelocities:
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+
+    def plus(self, other: DifferentialSwerveMotorVelocities) -> DifferentialSwerveMotorVelocities:
+        """Return the wheel-by-wheel sum."""
+
+    def minus(self, other: DifferentialSwerveMotorVelocities) -> DifferentialSwerveMotorVelocities:
+        """Return the wheel-by-wheel difference."""
+
+    def unaryMinus(self) -> DifferentialSwerveMotorVelocities:
+        """Return every wheel negated."""
+
+    def times(self, scalar: float) -> DifferentialSwerveMotorVelocities:
+        """Return every wheel multiplied by ``scalar``."""
+
+    def div(self, scalar: float) -> DifferentialSwerveMotorVelocities:
+        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+
+    def __add__(
+        self, other: DifferentialSwerveMotorVelocities
+    ) -> DifferentialSwerveMotorVelocities: ...
+    def __sub__(
+        self, other: DifferentialSwerveMotorVelocities
+    ) -> DifferentialSwerveMotorVelocities: ...
+    def __neg__(self) -> DifferentialSwerveMotorVelocities: ...
+    def __mul__(self, other: float) -> DifferentialSwerveMotorVelocities: ...
+    def __rmul__(self, other: float) -> DifferentialSwerveMotorVelocities: ...
+    def __truediv__(self, other: float) -> DifferentialSwerveMotorVelocities: ...
+    def __iter__(self) -> Iterator[float]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+
+@final
+class DifferentialSwerveModuleVelocities:
+    """DifferentialSwerveModuleVelocities(wheelVelocity=0.0, azimuthVelocity=0.0)
+
+    The motion of one differential swerve pod: the wheel's ground speed ``wheelVelocity``
+    in m/s and the pod's steering rate ``azimuthVelocity`` in rad/s (counter-clockwise
+    positive). Mutable; ``==`` compares each field within 1e-9 (so instances are
+    unhashable); unpacks as ``wheelVelocity, azimuthVelocity = velocities``.
+    """
+
+    def __init__(self, wheelVelocity: float = 0.0, azimuthVelocity: float = 0.0) -> None: ...
+    @property
+    def wheelVelocity(self) -> float:
+        """Wheel ground speed, m/s."""
+
+    @wheelVelocity.setter
+    def wheelVelocity(self, value: float) -> None: ...
+    @property
+    def azimuthVelocity(self) -> float:
+        """Pod steering rate, rad/s (counter-clockwise positive)."""
+
+    @azimuthVelocity.setter
+    def azimuthVelocity(self, value: float) -> None: ...
+    def interpolate(
+        self, endValue: DifferentialSwerveModuleVelocities, t: float
+    ) -> DifferentialSwerveModuleVelocities:
+        """Linear interpolation with ``t`` clamped to [0, 1]."""
+
+    def plus(
+        self, other: DifferentialSwerveModuleVelocities
+    ) -> DifferentialSwerveModuleVelocities:
+        """Return the wheel-by-wheel sum."""
+
+    def minus(
+        self, other: DifferentialSwerveModuleVelocities
+    ) -> DifferentialSwerveModuleVelocities:
+        """Return the wheel-by-wheel difference."""
+
+    def unaryMinus(self) -> DifferentialSwerveModuleVelocities:
+        """Return every wheel negated."""
+
+    def times(self, scalar: float) -> DifferentialSwerveModuleVelocities:
+        """Return every wheel multiplied by ``scalar``."""
+
+    def div(self, scalar: float) -> DifferentialSwerveModuleVelocities:
+        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
+
+    def __add__(
+        self, other: DifferentialSwerveModuleVelocities
+    ) -> DifferentialSwerveModuleVelocities: ...
+    def __sub__(
+        self, other: DifferentialSwerveModuleVelocities
+    ) -> DifferentialSwerveModuleVelocities: ...
+    def __neg__(self) -> DifferentialSwerveModuleVelocities: ...
+    def __mul__(self, other: float) -> DifferentialSwerveModuleVelocities: ...
+    def __rmul__(self, other: float) -> DifferentialSwerveModuleVelocities: ...
+    def __truediv__(self, other: float) -> DifferentialSwerveModuleVelocities: ...
+    def __iter__(self) -> Iterator[float]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+
+@final
+class DifferentialSwerveModuleKinematics:
+    """DifferentialSwerveModuleKinematics(azimuthGearRatio, wheelGearRatio, wheelRadius, *, motor2Inverted=False)
+
+    Kinematics of one differential swerve pod (quail's model, made consistent):
+    ``R_A·ω_pod = ω_m1 + ω_m2`` and ``R_L·ω_wheel = ω_m1 − ω_m2`` with ``ω_wheel = v / r``.
+
+    ``azimuthGearRatio`` R_A and ``wheelGearRatio`` R_L are motor turns per output turn
+    (pod turn, wheel turn); quail's ``R_s``/``R_d`` are output per motor turn, i.e.
+    R_A = 1/R_s and R_L = 1/R_d. ``wheelRadius`` r is in m. All three must be positive and
+    finite (ValueError naming the argument otherwise). ``motor2Inverted=True`` means
+    motor 2 is mounted reversed: every motor-2 value this class takes or returns (velocity
+    or position) is the negative of the ω_m2 in the equations.
+
+    Motor velocities are rad/s and motor positions rad, as the motors' own encoders
+    report them (convert from rotations or RPM first). The object also remembers the
+    offset set by :meth:`resetModulePosition` (pod angle 0 and motor positions 0 until
+    the first reset); it is not thread-safe against a concurrent reset, like WPILib's
+    kinematics classes.
+    """
+
+    def __init__(
+        self,
+        azimuthGearRatio: float,
+        wheelGearRatio: float,
+        wheelRadius: float,
+        *,
+        motor2Inverted: bool = False,
+    ) -> None: ...
+    @property
+    def azimuthGearRatio(self) -> float:
+        """R_A: motor turns per pod (azimuth) turn (read-only)."""
+
+    @property
+    def wheelGearRatio(self) -> float:
+        """R_L: motor turns per wheel turn (read-only)."""
+
+    @property
+    def wheelRadius(self) -> float:
+        """Wheel radius, m (read-only)."""
+
+    @property
+    def motor2Inverted(self) -> bool:
+        """True if motor 2 is mounted reversed (read-only)."""
+
+    def toMotorVelocities(
+        self, wheelVelocity: float, azimuthVelocity: float
+    ) -> DifferentialSwerveMotorVelocities:
+        """Return the motor velocities (DifferentialSwerveMotorVelocities, rad/s) that
+        drive the wheel at ``wheelVelocity`` m/s while the pod turns at
+        ``azimuthVelocity`` rad/s: ω_m1 = (R_A·ω_pod + R_L·v/r)/2,
+        ω_m2 = (R_A·ω_pod − R_L·v/r)/2 (negated when motor 2 is inverted)."""
+
+    def toMotorVelocitiesInto(
+        self,
+        wheelVelocity: float,
+        azimuthVelocity: float,
+        out: DifferentialSwerveMotorVelocities,
+    ) -> None:
+        """Allocation-free :meth:`toMotorVelocities`: write into ``out``. Returns None."""
+
+    def toModuleVelocities(
+        self, motor1: float, motor2: float
+    ) -> DifferentialSwerveModuleVelocities:
+        """Return the pod's motion (DifferentialSwerveModuleVelocities: wheel m/s,
+        steering rad/s) for motor velocities ``motor1``, ``motor2`` in rad/s, the exact
+        inverse of :meth:`toMotorVelocities`: ω_pod = (ω_m1 + ω_m2)/R_A,
+        v = r·(ω_m1 − ω_m2)/R_L."""
+
+    def toModuleVelocitiesInto(
+        self, motor1: float, motor2: float, out: DifferentialSwerveModuleVelocities
+    ) -> None:
+        """Allocation-free :meth:`toModuleVelocities`: write into ``out``. Returns None."""
+
+    def resetModulePosition(
+        self, angle: Rotation2d, motor1Position: float, motor2Position: float
+    ) -> None:
+        """Declare that the pod points at ``angle`` while the motors read
+        ``motor1Position`` and ``motor2Position`` (rad, finite; ValueError otherwise):
+        :meth:`toModulePosition` measures from here. Call it once the pod's absolute
+        angle is known (e.g. from an absolute encoder at start-up). Returns None."""
+
+    def toModulePosition(
+        self, motor1Position: float, motor2Position: float
+    ) -> SwerveModulePosition:
+        """Return the SwerveModulePosition for the motors' positions (rad): the distance
+        (m) the wheel has rolled since the last :meth:`resetModulePosition` and the pod
+        angle = reset angle + (Δθ_m1 + Δθ_m2)/R_A. Before any reset the offset is zero
+        (angle 0 and distance 0 at motor positions 0). Feed the results to
+        SwerveDriveOdometry as the module positions."""
+
+    def toModulePositionInto(
+        self, motor1Position: float, motor2Position: float, out: SwerveModulePosition
+    ) -> None:
+        """Allocation-free :meth:`toModulePosition`: write into ``out``. Returns None."""
+
+    def desaturateMotorVelocities(
+        self,
+        motorVelocities: DifferentialSwerveMotorVelocities,
+        maxMotorVelocity: float,
+        *,
+        proportional: bool = False,
+    ) -> DifferentialSwerveMotorVelocities:
+        """Return new motor velocities with both |motor| ≤ ``maxMotorVelocity`` (rad/s,
+        ≥ 0; ValueError if negative or NaN; inf means no limit).
+
+        By default the pod's steering rate is kept and the wheel speed is reduced first:
+        the wheel slows until the faster motor is at the limit, and only when steering
+        alone needs more than the limit is the steering rate cut (to the limit, with the
+        wheel stopped). The pod then still reaches its commanded angle on time, which
+        keeps the robot's path. ``proportional=True`` instead scales both motors by one
+        factor (the fastest lands on the limit), which slows steering and wheel alike.
+        Velocities already within the limit, or with a NaN motor, are returned unchanged.
+        The input is not modified."""
+
+    def desaturateMotorVelocitiesInPlace(
+        self,
+        motorVelocities: DifferentialSwerveMotorVelocities,
+        maxMotorVelocity: float,
+        *,
+        proportional: bool = False,
+    ) -> None:
+        """Allocation-free :meth:`desaturateMotorVelocities` (same rules and keyword):
+        rescale ``motorVelocities`` itself. Returns None."""
+
+    def desaturateModuleVelocitiesInPlace(
+        self,
+        moduleVelocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
+        azimuthVelocities: Sequence[float] | npt.NDArray[np.float64],
+        maxMotorVelocity: float,
+    ) -> float:
+        """Drive-level desaturation for a swerve drive whose N pods are all built like this
+        one: scale every module's wheel velocity by one common factor k in [0, 1], the
+        largest for which no pod's motors exceed ``maxMotorVelocity`` (rad/s, ≥ 0) while
+        pod i steers at ``azimuthVelocities[i]`` rad/s. Because every wheel is scaled
+        alike (angles untouched), the chassis keeps its direction of travel and its
+        centre of rotation. Returns k (1.0 when nothing needed scaling).
+
+        ``moduleVelocities`` are the N targets from SwerveDriveKinematics: a list/tuple
+        of SwerveModuleVelocity (updated in place) or a float64 (N, 2) array
+        ``[velocity m/s, angle rad]`` (column 0 rescaled in place).
+        ``azimuthVelocities`` is a sequence of N numbers or a float64 (N,) array.
+        Allocation-free for N ≤ 16. Every input is read and checked before anything is
+        written, so a failed call changes nothing.
+
+        Steering is never reduced here: if a pod's steering rate alone needs more than the
+        limit, k is 0 (all wheels stop) and that pod's motors still exceed it; cut them
+        with :meth:`desaturateMotorVelocities` afterwards. A NaN velocity or steering rate
+        disables the scaling (k = 1), as a NaN wheel speed does in WPILib's
+        desaturation. Up to rounding (a few ulps), the motors of the scaled targets are
+        within the limit."""
