@@ -5,6 +5,7 @@
 # The kernels below work on C doubles only; the classes hold their state by value.
 cimport cython
 from libc.math cimport fabs
+from drivekin._kernels cimport jmax
 from drivekin._types cimport rot2_t
 from drivekin._wheels cimport _WheelValues
 
@@ -47,8 +48,9 @@ cdef inline void dswerve_desaturate(double s2, double m1, double m2, double limi
                                     bint proportional,
                                     double* o1, double* o2   # OUT (may alias the inputs)
                                     ) noexcept nogil:
-    # peak = max(|m1|, |m2|); a NaN motor makes the comparison false: passed unchanged.
-    cdef double peak = fabs(m1) if fabs(m1) >= fabs(m2) else fabs(m2)
+    # Java Math.max: a NaN motor makes peak NaN and the comparison false, so the pair
+    # passes unchanged (as a NaN wheel speed does in WPILib's desaturation).
+    cdef double peak = jmax(fabs(m1), fabs(m2))
     cdef double a, b, w2
     if not peak > limit:
         o1[0] = m1

@@ -143,6 +143,8 @@ def _arr_hostiles(k):
         h.append(("read-only", readonly, True))
     if k.rows_free:
         h = [x for x in h if x[0] != "wrong-shape"]
+    if k.list_ok:
+        h = [x for x in h if x[0] != "nested-list"]
     if isinstance(k, RawArr):  # raw bytes: only pointers and read-only targets are hostile
         h = [x for x in h if x[0] in ("object-dtype", "read-only", "strided", "misaligned")]
     return h
@@ -342,6 +344,17 @@ def group_args():
         cases[f"DifferentialDriveKinematics.__init__ trackwidth={v}"] = functools.partial(
             check_hostile, drivekin.DifferentialDriveKinematics, "__init__",
             reg.API[drivekin.DifferentialDriveKinematics]["__init__"], {0: float(v)})
+    dsk = drivekin.DifferentialSwerveModuleKinematics
+    for pos, what in enumerate(("azimuthGearRatio", "wheelGearRatio", "wheelRadius")):
+        for v in ("nan", "inf", "-1.0", "0.0"):
+            cases[f"{dsk.__name__}.__init__ {what}={v}"] = functools.partial(
+                check_hostile, dsk, "__init__", reg.API[dsk]["__init__"][0], {pos: float(v)},
+                needle=what)
+    for v in ("nan", "-1.0"):
+        cases[f"{dsk.__name__}.desaturate* maxMotorVelocity={v}"] = functools.partial(
+            check_hostile, dsk, "desaturateModuleVelocitiesInPlace",
+            reg.API[dsk]["desaturateModuleVelocitiesInPlace"][0], {2: float(v)},
+            needle="maxMotorVelocity")
     return cases
 
 
@@ -780,6 +793,8 @@ def _invariants(cls, obj):
             raise Fail(f"unpickled a non-unit rotation (cos={c!r}, sin={s!r})")
     if cls is drivekin.DifferentialDriveKinematics and not 0 < obj.trackwidth < float("inf"):
         raise Fail(f"unpickled a trackwidth of {obj.trackwidth!r}")
+    if cls is drivekin.DifferentialSwerveModuleKinematics and not finite(obj):
+        raise Fail(f"unpickled non-finite differential swerve kinematics: {short(snap(obj))}")
     if cls in (drivekin.SwerveDriveKinematics, drivekin.MecanumDriveKinematics):
         if not finite(obj):
             raise Fail(f"unpickled non-finite kinematics: {short(snap(obj))}")

@@ -28,6 +28,9 @@ from drivekin import (
     DifferentialDriveWheelAccelerations as DWA,
     DifferentialDriveWheelPositions as DWP,
     DifferentialDriveWheelVelocities as DWV,
+    DifferentialSwerveModuleKinematics as DSK,
+    DifferentialSwerveModuleVelocities as DSModV,
+    DifferentialSwerveMotorVelocities as DSMV,
     MecanumDriveKinematics,
     MecanumDriveOdometry,
     MecanumDriveWheelAccelerations as MWA,
@@ -62,6 +65,14 @@ def _mecanum() -> MecanumDriveKinematics:
     return MecanumDriveKinematics(T(0.3, 0.3), T(0.3, -0.3), T(-0.3, 0.3), T(-0.3, -0.3))
 
 
+def _diffswerve() -> DSK:
+    # Small ratios so that the registry's small limits give drive-level factors in (0, 1);
+    # a reset offset, so that a call that wrongly touches it is visible.
+    k = DSK(0.5, 0.25, 2.0)
+    k.resetModulePosition(R(0.5), 1.0, -2.0)
+    return k
+
+
 VALID = {  # a fresh, valid, non-trivial instance of each class
     T: lambda: T(1.0, 2.0),
     R: lambda: R(0.5),
@@ -82,6 +93,9 @@ VALID = {  # a fresh, valid, non-trivial instance of each class
     SwerveDriveKinematics: _swerve,
     MecanumDriveKinematics: _mecanum,
     DifferentialDriveKinematics: lambda: DifferentialDriveKinematics(0.6),
+    DSMV: lambda: DSMV(1.0, -2.0),
+    DSModV: lambda: DSModV(1.5, -0.5),
+    DSK: _diffswerve,
     SwerveDriveOdometry: lambda: SwerveDriveOdometry(
         _swerve(), R(GYRO0), [SMP(0.0, R(0.0)) for _ in range(N)], Pose2d(1.0, 2.0, R(0.5))),
     MecanumDriveOdometry: lambda: MecanumDriveOdometry(
@@ -107,6 +121,8 @@ ALT = {  # a second valid instance, different from VALID's
     DWV: lambda: DWV(-1.0, 3.0),
     DWP: lambda: DWP(-1.0, 3.0),
     DWA: lambda: DWA(-1.0, 3.0),
+    DSMV: lambda: DSMV(-3.0, 0.5),
+    DSModV: lambda: DSModV(-2.0, 1.0),
 }
 _ALT = threading.local()  # per thread: the thread cases build both kinds at once
 
@@ -138,6 +154,8 @@ INIT_ONCE = IMMUTABLE | {SwerveDriveKinematics, MecanumDriveKinematics,
                          DifferentialDriveKinematics, SwerveDriveOdometry,
                          MecanumDriveOdometry, DifferentialDriveOdometry}
 KINEMATICS = {SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics}
+INIT_ONCE |= {DSK}
+KINEMATICS |= {DSK}
 ODOMETRY = {SwerveDriveOdometry, MecanumDriveOdometry, DifferentialDriveOdometry}
 
 
@@ -183,6 +201,17 @@ class OutSeq(Seq):
     out = True
 
 
+class NumSeq(Seq):
+    """A list of ``n`` floats (hostile items: None, objects, another value class)."""
+
+    def __init__(self, n=N):
+        super().__init__(float, n)
+
+    def valid(self):
+        v = [0.1, -0.2, 0.3, 0.05][:self.n] + [0.0] * max(0, self.n - 4)
+        return [-1.5 * x + 0.25 for x in v] if _alt() else v
+
+
 class Num(Kind):
     """A float (``value`` is the valid one). ``none_ok``: None is accepted here."""
 
@@ -203,10 +232,12 @@ class Int(Kind):
 
 class Arr(Kind):
     """A float64 C-contiguous numpy array of ``shape`` (``fill`` gives its values;
-    ``rows_free``: any number of rows is valid)."""
+    ``rows_free``: any number of rows is valid; ``list_ok``: a list of numbers is also
+    valid here, so the array's ``tolist()`` is not hostile)."""
 
-    def __init__(self, shape, fill=None, rows_free=False):
+    def __init__(self, shape, fill=None, rows_free=False, list_ok=False):
         self.shape, self.fill, self.rows_free = shape, fill, rows_free
+        self.list_ok = list_ok
 
     def valid(self):
         if self.fill is not None:
@@ -500,6 +531,29 @@ API = {
     SwerveDriveOdometry: _odometry(SwerveDriveKinematics, (Seq(SMP),)),
     MecanumDriveOdometry: _odometry(MecanumDriveKinematics, (Obj(MWP),)),
     DifferentialDriveOdometry: _odometry(None, (NUM, NUM)),
+}
+# Differential swerve. The limit stays valid (>= 0) in the alternate build: 0.125 -> 0.0625.
+_LIMIT = Num(0.125)
+_PROP = {"proportional": lambda: True}
+_RATES = Arr((N,), list_ok=True)
+API[DSMV] = _wheels(DSMV, ("motor1", "motor2"), eq=True)
+API[DSModV] = _wheels(DSModV, ("wheelVelocity", "azimuthVelocity"), eq=True)
+API[DSK] = {
+    "__init__": [S(Num(3.0), Num(5.0), Num(0.05)),
+                 S(Num(3.0), Num(5.0), Num(0.05), kw={"motor2Inverted": lambda: True})],
+    "__reduce__": S(), "__setstate__": S(State(lambda: (R(0.25), 0.5, -1.5))),
+    "azimuthGearRatio": Prop(), "wheelGearRatio": Prop(), "wheelRadius": Prop(),
+    "motor2Inverted": Prop(),
+    "toMotorVelocities": S(NUM, NUM), "toMotorVelocitiesInto": S(NUM, NUM, Out(DSMV)),
+    "toModuleVelocities": S(NUM, NUM), "toModuleVelocitiesInto": S(NUM, NUM, Out(DSModV)),
+    "resetModulePosition": S(Obj(R), NUM, NUM),
+    "toModulePosition": S(NUM, NUM), "toModulePositionInto": S(NUM, NUM, Out(SMP)),
+    "desaturateMotorVelocities": [S(Obj(DSMV), _LIMIT), S(Obj(DSMV), _LIMIT, kw=_PROP)],
+    "desaturateMotorVelocitiesInPlace": [S(Out(DSMV), _LIMIT),
+                                         S(Out(DSMV), _LIMIT, kw=_PROP)],
+    "desaturateModuleVelocitiesInPlace": [
+        S(OutSeq(SMV), NumSeq(), _LIMIT), S(OutArr((N, 2)), _RATES, _LIMIT),
+        S(OutSeq(SMV), _RATES, _LIMIT), S(OutArr((N, 2)), NumSeq(), _LIMIT)],
 }
 # SwerveDriveOdometry also takes the positions as an (N, 2) array.
 for _m in ("__init__", "resetPosition", "update"):

@@ -122,7 +122,17 @@ FIELDS = {
     drivekin.DifferentialDriveKinematics: lambda k: k.trackwidth,
     **{c: _odometry_probe for c in ODOMETRY},
 }
-for _c in (drivekin.MecanumDriveWheelVelocities, drivekin.MecanumDriveWheelPositions,
+def _diffswerve(k):
+    # Geometry, plus the reset offset seen through a probe at motor positions 0.
+    p = k.toModulePosition(0.0, 0.0)
+    return (k.azimuthGearRatio, k.wheelGearRatio, k.wheelRadius, k.motor2Inverted,
+            p.distance, *_rot(p.angle))
+
+
+FIELDS[drivekin.DifferentialSwerveModuleKinematics] = _diffswerve
+for _c in (drivekin.DifferentialSwerveMotorVelocities,
+           drivekin.DifferentialSwerveModuleVelocities,
+           drivekin.MecanumDriveWheelVelocities, drivekin.MecanumDriveWheelPositions,
            drivekin.MecanumDriveWheelAccelerations, drivekin.DifferentialDriveWheelVelocities,
            drivekin.DifferentialDriveWheelPositions,
            drivekin.DifferentialDriveWheelAccelerations):
