@@ -204,13 +204,14 @@ cdef double* float64_data(object arr, Py_ssize_t rows, Py_ssize_t cols, bint wri
     PyArray_Check(arr)."""
     cdef cnp.ndarray a = <cnp.ndarray>arr
     cdef int ndim = 1 if cols == 0 else 2
-    cdef str want = (f"({rows if rows >= 0 else 'N'},)" if cols == 0 else
-                     f"({rows if rows >= 0 else 'N'}, {cols})")
+    cdef str n
     if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
         raise TypeError(f"{name} must have dtype float64 (native byte order), got {a.dtype}")
     if (cnp.PyArray_NDIM(a) != ndim or (rows >= 0 and a.shape[0] != rows)
             or (cols > 0 and a.shape[1] != cols)):
-        raise ValueError(f"{name} must have shape {want}, got {(<object>a).shape}")
+        n = str(rows) if rows >= 0 else "N"
+        raise ValueError(f"{name} must have shape {f'({n},)' if cols == 0 else f'({n}, {cols})'}, "
+                         f"got {(<object>a).shape}")
     if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
         raise ValueError(f"{name} must be C-contiguous and aligned")
     if writable and not cnp.PyArray_ISWRITEABLE(a):
