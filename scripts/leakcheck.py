@@ -240,6 +240,83 @@ ERRORS = [
         memoryview(states_arr)), TypeError),
 ]
 
+# --- differential swerve (drivekin.diffswerve) -----------------------------------------
+from drivekin import (  # noqa: E402
+    DifferentialSwerveModuleKinematics, DifferentialSwerveModuleVelocities,
+    DifferentialSwerveMotorVelocities,
+)
+
+dsk = DifferentialSwerveModuleKinematics(3.0, 5.0, 0.05, motor2Inverted=True)
+dsk.resetModulePosition(angle, 12.0, -7.0)
+ds_motors, ds_module, ds_pos = (DifferentialSwerveMotorVelocities(),
+                                DifferentialSwerveModuleVelocities(), SwerveModulePosition())
+ds_rates, ds_rates_arr = [1.0, -2.0, 4.0, 0.5], np.array([1.0, -2.0, 4.0, 0.5])
+many_rates = [0.01 * i for i in range(40)]
+
+
+def ds_saturated():            # fresh over-the-limit motors for the in-place desaturation
+    ds_motors.motor1, ds_motors.motor2 = 280.0, 220.0
+    return ds_motors
+
+
+OPERATIONS += [
+    ("diffswerve toMotorVelocities", lambda: dsk.toMotorVelocities(1.5, -2.0)),
+    ("diffswerve toMotorVelocitiesInto", lambda: dsk.toMotorVelocitiesInto(1.5, -2.0, ds_motors)),
+    ("diffswerve toModuleVelocities", lambda: dsk.toModuleVelocities(120.0, -80.0)),
+    ("diffswerve toModuleVelocitiesInto", lambda: dsk.toModuleVelocitiesInto(
+        120.0, -80.0, ds_module)),
+    ("diffswerve toModulePosition", lambda: dsk.toModulePosition(30.0, -25.0)),
+    ("diffswerve toModulePositionInto", lambda: dsk.toModulePositionInto(30.0, -25.0, ds_pos)),
+    ("diffswerve resetModulePosition", lambda: dsk.resetModulePosition(angle, 12.0, -7.0)),
+    ("diffswerve desaturateMotorVelocities", lambda: dsk.desaturateMotorVelocities(
+        ds_saturated(), 200.0)),
+    ("diffswerve desaturateMotorVelocitiesInPlace", lambda: dsk.desaturateMotorVelocitiesInPlace(
+        ds_saturated(), 200.0)),
+    ("diffswerve desaturateMotorVelocitiesInPlace proportional",
+     lambda: dsk.desaturateMotorVelocitiesInPlace(ds_saturated(), 200.0, proportional=True)),
+    ("diffswerve desaturateModuleVelocitiesInPlace list", lambda: dsk
+        .desaturateModuleVelocitiesInPlace(new_state_copies(), ds_rates, 400.0)),
+    ("diffswerve desaturateModuleVelocitiesInPlace ndarray", lambda: dsk
+        .desaturateModuleVelocitiesInPlace(states_arr, ds_rates_arr, 400.0)),
+    ("diffswerve desaturateModuleVelocitiesInPlace 40 modules", lambda: dsk
+        .desaturateModuleVelocitiesInPlace(many_states, many_rates, 1e6)),
+    ("DifferentialSwerveModuleKinematics()", lambda: DifferentialSwerveModuleKinematics(
+        3.0, 5.0, 0.05, motor2Inverted=True)),
+    ("copy.copy(diffswerve kinematics)", lambda: copy.copy(dsk)),
+]
+
+ERRORS += [
+    ("DifferentialSwerveModuleKinematics(zero ratio)", lambda: DifferentialSwerveModuleKinematics(
+        0.0, 5.0, 0.05), ValueError),
+    ("DifferentialSwerveModuleKinematics(inf radius)", lambda: DifferentialSwerveModuleKinematics(
+        3.0, 5.0, float("inf")), ValueError),
+    ("diffswerve toMotorVelocitiesInto wrong out", lambda: dsk.toMotorVelocitiesInto(
+        1.0, 2.0, ds_module), TypeError),
+    ("diffswerve resetModulePosition NaN", lambda: dsk.resetModulePosition(
+        angle, float("nan"), 0.0), ValueError),
+    ("diffswerve desaturate negative limit", lambda: dsk.desaturateMotorVelocities(
+        ds_motors, -1.0), ValueError),
+    ("diffswerve desaturate proportional=1", lambda: dsk.desaturateMotorVelocities(
+        ds_motors, 1.0, proportional=1), TypeError),
+    ("diffswerve drive level short rates", lambda: dsk.desaturateModuleVelocitiesInPlace(
+        states, ds_rates[:3], 400.0), ValueError),
+    ("diffswerve drive level None rate", lambda: dsk.desaturateModuleVelocitiesInPlace(
+        states, [1.0, None, 1.0, 1.0], 400.0), TypeError),
+    ("diffswerve drive level None module", lambda: dsk.desaturateModuleVelocitiesInPlace(
+        states[:3] + [None], ds_rates, 400.0), TypeError),
+    ("diffswerve drive level float32 rates", lambda: dsk.desaturateModuleVelocitiesInPlace(
+        states_arr, ds_rates_arr.astype(np.float32), 400.0), TypeError),
+    ("diffswerve drive level 40 modules, 39 rates", lambda: dsk
+        .desaturateModuleVelocitiesInPlace(many_states, many_rates[:39], 1e6), ValueError),
+    ("diffswerve drive level 40 modules, bad rate", lambda: dsk
+        .desaturateModuleVelocitiesInPlace(many_states, many_rates[:39] + ["x"], 1e6),
+     TypeError),
+    ("diffswerve __setstate__ NaN", lambda: dsk.__setstate__((angle, float("nan"), 0.0)),
+     ValueError),
+    ("uninitialised diffswerve kinematics", lambda: DifferentialSwerveModuleKinematics.__new__(
+        DifferentialSwerveModuleKinematics).toModulePosition(0.0, 0.0), RuntimeError),
+]
+
 
 def expect(fn, exc):
     """A callable that runs ``fn`` and requires it to raise ``exc``."""
