@@ -41,6 +41,8 @@ def _row(text: str, label: str) -> str:
 DRIVETRAINS = ("swerve", "mecanum", "differential")
 ODOMETRY = {"swerve": "SwerveDriveOdometry", "mecanum": "MecanumDriveOdometry",
             "differential": "DifferentialDriveOdometry"}
+DRIVETRAINS += ("diffswerve",)
+ODOMETRY["diffswerve"] = "SwerveDriveOdometry"
 
 
 @pytest.fixture(scope="module", params=DRIVETRAINS)
@@ -136,3 +138,28 @@ def test_rejects_unknown_drivetrain():
     assert result.returncode == 2
     assert result.stdout == ""
     assert "--drivetrain" in result.stderr and "invalid choice" in result.stderr
+
+
+def test_diffswerve_odometry_matches_the_plant_and_respects_the_motor_limit():
+    # --max-speed 1.0 makes the spin segment saturate the motors: the drive-level factor
+    # must drop below 1 and no motor command may exceed the limit.
+    result = run_demo("--drivetrain", "diffswerve", "--seconds", "30", "--max-speed", "1.0",
+                      "--json")
+    assert result.returncode == 0, result.stderr
+    d = json.loads(result.stdout)["details"]
+    limit = 0.5 * 14.0 / 0.0508 * 1.0              # R_L / r · max speed / 2
+    assert d["motor_limit_radps"] == pytest.approx(limit, rel=1e-15)
+    assert d["peak_motor_command_radps"] <= d["motor_limit_radps"]
+    assert d["peak_motor_command_radps"] > 0.99 * d["motor_limit_radps"]
+    assert 0.0 < d["min_drive_factor"] < 1.0
+    # Module positions from motor positions agree with the plant's own integration (the
+    # consistency quail's position formula lacks): only rounding separates the paths.
+    assert d["max_position_error_m"] < 1e-9
+    assert d["max_pod_angle_error_rad"] < 1e-9
+
+
+def test_diffswerve_text_report_has_its_rows():
+    out = run_demo("--drivetrain", "diffswerve", "--seconds", "1", "--quiet").stdout
+    for label in ("motor limit", "peak motor command", "min drive-level factor",
+                  "odometry vs truth", "pod angle vs truth"):
+        _row(out, label)

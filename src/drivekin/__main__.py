@@ -46,14 +46,19 @@ def parse_args(argv=None):
     parser = argparse.ArgumentParser(
         prog="python -m drivekin",
         description=(
-            "Simulate a 50 Hz drivetrain control loop (swerve, mecanum or differential) on "
+            "Simulate a 50 Hz drivetrain control loop (swerve, mecanum, differential or "
+            "differential swerve) on "
             "drivekin's allocation-free path and report per-step latency against the 20 ms "
             "budget, allocator activity and the final odometry pose. A scripted driver "
             "(forward, strafe, spin, figure-eight while rotating, return, stop; repeating "
-            "every 30 s) feeds the commands: field-relative for swerve and mecanum, "
+            "every 30 s) feeds the commands: field-relative for swerve, differential swerve "
+            "and mecanum, "
             "arcade-style (forward and rotation only) for differential. Each step runs "
             "inverse kinematics, desaturates, applies a wheel response model (wheel-speed "
-            "lag; for swerve also optimize, a steering rate limit and cosine scaling) and "
+            "lag; for swerve also optimize, a steering rate limit and cosine scaling; for "
+            "differential swerve pods motor velocities, a motor limit at the --max-speed of "
+            "pure driving, simulated motors and module positions from motor positions, "
+            "checked against the simulated truth) and "
             "updates the drivetrain's odometry class from the wheel distances and a "
             "simulated gyro. The loop runs as fast as it can (no sleeping); it is run twice "
             "on identical simulations: once timed with tracemalloc off, once under "
