@@ -60,14 +60,16 @@ def bench_op(benchmark, rp, dk):
 
 @pytest.fixture
 def check_op(rp, dk):
-    """``check_op(op)``: every variant produces the robotpy baseline's numbers."""
-    from registry import evaluate, values_agree
+    """``check_op(op)``: every variant produces the robotpy baseline's numbers (for a
+    drivekin-only operation: its ``expected`` numbers, else its façade's)."""
+    from registry import baseline_of, evaluate, reference_value, values_agree
 
     def run(op):
         _require(op)
-        ref = evaluate(op.robotpy, op.robotpy.setup(rp, dk))
+        baseline_of(op)                      # a baseline must name a registered case
+        ref = reference_value(op, rp, dk)
         for name, case in op.variants().items():
             got = evaluate(case, case.setup(rp, dk))
-            assert values_agree(ref, got), f"{op.key} {name}: {got} != robotpy {ref}"
+            assert values_agree(ref, got), f"{op.key} {name}: {got} != reference {ref}"
 
     return run

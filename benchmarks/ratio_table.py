@@ -52,7 +52,8 @@ sys.path.insert(0, str(HERE))
 
 from _common import (INNER, build_drivekin, build_drivekin_geometry, build_robotpy,  # noqa: E402
                      compile_timer, kinematics_available, machine_description)
-from registry import CALIBRATION, OPERATIONS, VARIANTS, evaluate, values_agree  # noqa: E402
+from registry import (CALIBRATION, OPERATIONS, VARIANTS, baseline_of,  # noqa: E402
+                      evaluate, reference_value, values_agree, with_baselines)
 
 
 ROBOTS = ("4-module swerve at (±0.3, ±0.3) m, mecanum with wheels at the same points, "
@@ -63,18 +64,20 @@ ROBOTS = ("4-module swerve at (±0.3, ±0.3) m, mecanum with wheels at the same 
 # Cases
 
 def prepare(ops):
-    """Check every variant against robotpy; return ([(key, variant, case, env)], failures).
+    """Check every variant against robotpy (drivekin-only operations: against their
+    ``expected`` numbers or their façade); return ([(key, variant, case, env)], failures).
 
     Calibration cases get key None. Each env is fresh (the check may mutate inputs)."""
     rp = build_robotpy()
     dk = build_drivekin() if kinematics_available() else build_drivekin_geometry()
     cases, failures = [], []
     for op in ops:
-        ref = evaluate(op.robotpy, op.robotpy.setup(rp, dk))
+        ref = reference_value(op, rp, dk)
         for variant, case in op.variants().items():
             got = evaluate(case, case.setup(rp, dk))
             if not values_agree(ref, got):
-                failures.append(f"{op.key} {variant}: {got} != robotpy {ref}")
+                failures.append(f"{op.key} {variant}: {got} != "
+                                f"{'reference' if op.drivekin_only else 'robotpy'} {ref}")
             cases.append((op.key, variant, case, case.setup(rp, dk)))
     cases += [(None, label, case, case.setup(rp, dk)) for label, case, *_ in CALIBRATION]
     return cases, failures
@@ -211,6 +214,8 @@ def build_table(ops, get, ranges, note, header, unit="ns"):
         "|---|---:|---:|---:|:---:|:---:|" + ("---|" if ranges else "")]
     missed, extras = [], []
     for op in ops:
+        if op.drivekin_only:
+            continue
         base = get(op.key, "robotpy")
         if base is None:
             lines.append(f"| {op.title} | n/a | n/a | n/a | {_targets(op)} | — |"
@@ -244,10 +249,68 @@ def build_table(ops, get, ranges, note, header, unit="ns"):
         lines += ["", "Extra variants (ratio to the robotpy column above):", "",
                   f"| operation | variant | statement | {unit}/call | × robotpy |",
                   "|---|---|---|---:|---:|"] + extras
+    own_lines, own_missed = drivekin_only_table([op for op in ops if op.drivekin_only], get,
+                                                unit)
+    lines += own_lines
+    missed += own_missed
     lines += ["", f"{unit}/call = {note}. Ratio = drivekin / robotpy (lower is faster); "
               "a target is met when ratio <= target."]
     if ops and any(op.needs_kinematics for op in ops) and not kinematics_available():
         lines += ["", "n/a: drivekin.kinematics is not built."]
+    return lines, missed
+
+
+def drivekin_only_table(ops, get, unit):
+    """Rows for operations without a robotpy case: absolute times per variant, checked
+    against ``target_ns`` (time runs only: instruction counts have no ns), and the ratio
+    to the operation's drivekin baseline from the same run, checked against
+    ``baseline_targets``. Returns (lines, missed)."""
+    if not ops:
+        return [], []
+    lines = ["", "drivekin-only operations (no robotpy peer): times per call, and the ratio "
+             "to a drivekin baseline operation timed in the same run:", "",
+             f"| operation | drivekin façade {unit}/call | drivekin allocation-free "
+             f"{unit}/call | target ns façade / alloc-free | baseline | baseline "
+             f"{unit}/call | ratio to baseline façade / alloc-free | target ratios | met? |",
+             "|---|---:|---:|:---:|---|---:|:---:|:---:|:---:|"]
+    missed, extras = [], []
+    for op in ops:
+        times = [get(op.key, v) for v in VARIANTS[1:]]
+        met = []
+        if op.target_ns is not None and unit == "ns":
+            for v, x, limit in zip(VARIANTS[1:], times, op.target_ns):
+                if x is not None:
+                    met.append("yes" if x <= limit else "**NO**")
+                    if x > limit:
+                        missed.append(f"{op.title} {v}: {x:.1f} ns > {limit:g} ns")
+        ref = baseline_of(op)
+        base = get(*ref) if ref else None
+        ratios = [None if (x is None or not base) else x / base for x in times]
+        if op.baseline_targets is not None:
+            for v, r, limit in zip(VARIANTS[1:], ratios, op.baseline_targets):
+                if r is not None:
+                    met.append("yes" if r <= limit else "**NO**")
+                    if r > limit:
+                        missed.append(f"{op.title} {v}: {r:.3f}× {op.baseline} > {limit}")
+        cell = (lambda x: "n/a" if x is None else fmt(x))
+        ns_t = ("—" if op.target_ns is None else
+                f"{op.target_ns[0]:g} / {op.target_ns[1]:g}")
+        r_t = ("—" if op.baseline_targets is None else
+               f"{op.baseline_targets[0]:.2f} / {op.baseline_targets[1]:.2f}")
+        r_cells = " / ".join("—" if r is None else f"{r:.3f}×" for r in ratios)
+        lines.append(f"| {op.title} | {cell(times[0])} | {cell(times[1])} | {ns_t} | "
+                     f"{op.baseline or '—'} | {cell(base)} | {r_cells if ref else '—'} | "
+                     f"{r_t} | {' / '.join(met) if met else '—'} |")
+        for label, case in op.extras.items():
+            x = get(op.key, label)
+            if x is not None:
+                extras.append(f"| {op.title} | {label} | `{case.stmt}` | {fmt(x)} | "
+                              + (f"{x / base:.3f}× |" if base else "— |"))
+    if extras:
+        lines += ["", "Extra variants of the drivekin-only operations (ratio to their "
+                  "baseline):", "",
+                  f"| operation | variant | statement | {unit}/call | × baseline |",
+                  "|---|---|---|---:|---:|"] + extras
     return lines, missed
 
 
@@ -318,7 +381,8 @@ def main(argv=None):
     ops = OPERATIONS
     if args.only:
         prefixes = tuple(p.strip() for p in args.only.split(",") if p.strip())
-        ops = [op for op in ops if op.key.startswith(prefixes)]
+        # Baselines of drivekin-only operations are timed with them, for their ratios.
+        ops = with_baselines([op for op in ops if op.key.startswith(prefixes)])
     runnable = [op for op in ops if kinematics_available() or not op.needs_kinematics]
 
     if args.ir_child:
@@ -387,6 +451,9 @@ def main(argv=None):
         Path(args.json_out).write_text(json.dumps({
             "machine": machine_description(), "unit": unit, "note": note,
             "results": raw, "targets": {op.key: op.targets for op in ops},
+            "drivekin_only": {op.key: {"target_ns": op.target_ns, "baseline": op.baseline,
+                                       "baseline_targets": op.baseline_targets}
+                              for op in ops if op.drivekin_only},
             "missed": missed, "value_failures": failures}, indent=1))
     return 1 if (args.strict and (missed or failures)) else 0
 

@@ -24,6 +24,20 @@ collects ``mecanum``, ``differential`` and ``odometry``; a new suite's file is
 ``test_bench, test_values_agree = _common.bench_tests("<suite>")``). ``ratio_table.py``
 picks new entries up by itself.
 
+**drivekin-only operations** (no robotpy peer: ``robotpy=None``) report absolute times
+instead of ratios to robotpy: ``target_ns`` gives optional upper bounds in ns (façade,
+alloc-free), ``baseline`` names another operation (``"key"`` or ``"key:variant"``, the
+variant defaulting to ``facade``) whose drivekin time, taken in the same run, is the
+denominator of a ratio, and ``baseline_targets`` bounds those ratios (façade, alloc-free).
+``ratio_table.py --only`` times the baseline too. Their values are checked against
+``expected`` (a list of numbers) when given, else every variant against the façade. For
+example dead-wheel odometry against ``DifferentialDriveOdometry.update``::
+
+    register(Operation(
+        key="deadwheel.odometry3", title="DeadWheelOdometry.update (3 wheels)",
+        suite="deadwheel", robotpy=None, facade=Case(...), alloc_free=Case(...),
+        baseline="odometry.differential", baseline_targets=(1.3, 1.3)))
+
 A :class:`Case` is a one-line statement plus a ``setup(rp, dk) -> dict`` that returns the
 local names the statement uses. ``setup`` is called once per case, so mutable inputs and
 output buffers are never shared between cases. ``value`` is an optional expression,
@@ -56,17 +70,26 @@ class Operation:
     key: str                      # "swerve.ik": also the pytest id prefix
     title: str                    # pytest-benchmark group name and table row label
     suite: str                    # which bench_<suite>.py collects it
-    robotpy: Case
+    robotpy: Optional[Case]       # None: a drivekin-only operation (see the module doc)
     facade: Case
     alloc_free: Case
     targets: Optional[tuple] = None          # (façade ratio, alloc-free ratio) upper bounds
     extras: dict = field(default_factory=dict)  # label -> Case, reported separately
     needs_kinematics: bool = True            # False: drivekin.geometry is enough
+    # drivekin-only operations:
+    target_ns: Optional[tuple] = None        # (façade ns, alloc-free ns) upper bounds
+    baseline: Optional[str] = None           # "key" or "key:variant" of the denominator
+    baseline_targets: Optional[tuple] = None  # (façade, alloc-free) / baseline upper bounds
+    expected: Optional[list] = None          # the numbers the façade's `value` must give
 
     def variants(self) -> dict:
-        v = {name: getattr(self, name) for name in VARIANTS}
+        v = {name: getattr(self, name) for name in VARIANTS if getattr(self, name) is not None}
         v.update(self.extras)
         return v
+
+    @property
+    def drivekin_only(self) -> bool:
+        return self.robotpy is None
 
 
 OPERATIONS: list[Operation] = []
@@ -75,12 +98,46 @@ OPERATIONS: list[Operation] = []
 def register(op: Operation) -> Operation:
     if any(o.key == op.key for o in OPERATIONS):
         raise ValueError(f"duplicate operation key {op.key!r}")
+    if op.drivekin_only and op.targets is not None:
+        raise ValueError(f"{op.key}: no robotpy case, so no robotpy ratio targets "
+                         "(use target_ns or baseline_targets)")
+    if not op.drivekin_only and (op.target_ns or op.baseline or op.baseline_targets):
+        raise ValueError(f"{op.key}: target_ns/baseline are for drivekin-only operations")
+    if op.baseline_targets is not None and op.baseline is None:
+        raise ValueError(f"{op.key}: baseline_targets needs a baseline")
     OPERATIONS.append(op)
     return op
 
 
 def suite(name: str) -> list[Operation]:
     return [op for op in OPERATIONS if op.suite == name]
+
+
+def baseline_of(op: Operation) -> Optional[tuple]:
+    """(key, variant) of ``op``'s baseline, or None; ValueError if it names no case."""
+    if op.baseline is None:
+        return None
+    key, _, variant = op.baseline.partition(":")
+    variant = variant or "facade"
+    base = next((o for o in OPERATIONS if o.key == key), None)
+    if base is None or variant not in base.variants():
+        raise ValueError(f"{op.key}: baseline {op.baseline!r} names no registered case")
+    return key, variant
+
+
+def with_baselines(ops: list) -> list:
+    """``ops`` plus the operations their baselines name (registry order)."""
+    keys = {o.key for o in ops} | {baseline_of(o)[0] for o in ops if o.baseline}
+    return [o for o in OPERATIONS if o.key in keys]
+
+
+def reference_value(op: Operation, rp, dk):
+    """The numbers every variant of ``op`` must produce (None: nothing to check)."""
+    if op.robotpy is not None:
+        return evaluate(op.robotpy, op.robotpy.setup(rp, dk))
+    if op.expected is not None:
+        return list(op.expected)
+    return evaluate(op.facade, op.facade.setup(rp, dk))
 
 
 # ---------------------------------------------------------------------------------------
@@ -433,6 +490,131 @@ _odometry_op(
     "odo.update(gyro, left, right)",
     lambda rp, dk: dict(odo=dk.DifferentialDriveOdometry(dk.rot, 0.0, 0.0, dk.pose),
                         gyro=dk.gyro1, left=dk.dpos1[0], right=dk.dpos1[1]))
+
+
+# ---------------------------------------------------------------------------------------
+# Differential swerve pods (drivekin-only: no robotpy peer). One pod with R_A = 3, R_L = 5 and
+# a 0.5 m wheel (quail's docs example: wheel 5 m/s = 10 rad/s, steering 2 rad/s -> motors
+# 28, -22 rad/s), reset to 0.5 rad at motor positions (10, -4). Conversions are held to
+# 40 ns and shown against the differential drive's IK (a comparable one-line conversion).
+
+DIFFSWERVE_TARGET_NS = (40.0, 40.0)
+
+
+def _dsk(rp, dk):
+    from drivekin.diffswerve import DifferentialSwerveModuleKinematics
+
+    k = DifferentialSwerveModuleKinematics(3.0, 5.0, 0.5)
+    k.resetModulePosition(dk.g.Rotation2d(0.5), 10.0, -4.0)
+    return k
+
+
+def _ds_values(cls_name):
+    import drivekin.diffswerve as ds
+
+    return getattr(ds, cls_name)
+
+
+register(Operation(
+    key="diffswerve.motors", title="diffswerve toMotorVelocities(v, w)", suite="diffswerve",
+    robotpy=None,
+    facade=Case("k.toMotorVelocities(v, w)",
+                lambda rp, dk: dict(k=_dsk(rp, dk), v=5.0, w=2.0),
+                value="list(k.toMotorVelocities(v, w))"),
+    alloc_free=Case("k.toMotorVelocitiesInto(v, w, out)",
+                    lambda rp, dk: dict(k=_dsk(rp, dk), v=5.0, w=2.0,
+                                        out=_ds_values("DifferentialSwerveMotorVelocities")()),
+                    value="list(out)", note="out: DifferentialSwerveMotorVelocities"),
+    expected=[28.0, -22.0], target_ns=DIFFSWERVE_TARGET_NS, baseline="differential.ik"))
+
+register(Operation(
+    key="diffswerve.module", title="diffswerve toModuleVelocities(m1, m2)", suite="diffswerve",
+    robotpy=None,
+    facade=Case("k.toModuleVelocities(m1, m2)",
+                lambda rp, dk: dict(k=_dsk(rp, dk), m1=28.0, m2=-22.0),
+                value="list(k.toModuleVelocities(m1, m2))"),
+    alloc_free=Case("k.toModuleVelocitiesInto(m1, m2, out)",
+                    lambda rp, dk: dict(k=_dsk(rp, dk), m1=28.0, m2=-22.0,
+                                        out=_ds_values("DifferentialSwerveModuleVelocities")()),
+                    value="list(out)", note="out: DifferentialSwerveModuleVelocities"),
+    expected=[5.0, 2.0], target_ns=DIFFSWERVE_TARGET_NS, baseline="differential.ik"))
+
+register(Operation(
+    key="diffswerve.position", title="diffswerve toModulePosition(p1, p2)", suite="diffswerve",
+    robotpy=None,
+    facade=Case("k.toModulePosition(p1, p2)",
+                lambda rp, dk: dict(k=_dsk(rp, dk), p1=23.0, p2=-11.0),
+                value="(lambda p: [p.distance, p.angle.getRadians()])("
+                      "k.toModulePosition(p1, p2))"),
+    alloc_free=Case("k.toModulePositionInto(p1, p2, out)",
+                    lambda rp, dk: dict(k=_dsk(rp, dk), p1=23.0, p2=-11.0,
+                                        out=dk.k.SwerveModulePosition()),
+                    value="[out.distance, out.angle.getRadians()]",
+                    note="out: SwerveModulePosition"),
+    expected=[2.0, 2.5], target_ns=DIFFSWERVE_TARGET_NS, baseline="differential.ik"))
+
+# In place: the value check runs one real (steering-first) rescale on fresh motors; while
+# timing, later calls find the motors at the limit and only compare (as the wheel
+# desaturations above). The façade rescales its unchanged input on every call.
+register(Operation(
+    key="diffswerve.desat", title="diffswerve desaturateMotorVelocities(m, max)",
+    suite="diffswerve", robotpy=None,
+    facade=Case("k.desaturateMotorVelocities(m, lim)",
+                lambda rp, dk: dict(k=_dsk(rp, dk), lim=20.0,
+                                    m=_ds_values("DifferentialSwerveMotorVelocities")(28.0, -22.0)),
+                value="list(k.desaturateMotorVelocities(m, lim))",
+                note="motors 28, -22 rad/s, limit 20: rescales on every call"),
+    alloc_free=Case("k.desaturateMotorVelocitiesInPlace(m, lim)",
+                    lambda rp, dk: dict(k=_dsk(rp, dk), lim=20.0,
+                                        m=_ds_values("DifferentialSwerveMotorVelocities")(
+                                            28.0, -22.0)),
+                    value="list(m)", note="rescales on its first call only, then compares"),
+    extras={
+        "alloc_free[proportional]": Case(
+            "k.desaturateMotorVelocitiesInPlace(m, lim, proportional=True)",
+            lambda rp, dk: dict(k=_dsk(rp, dk), lim=28.0,
+                                m=_ds_values("DifferentialSwerveMotorVelocities")(28.0, -22.0)),
+            note="limit 28: compares, never rescales (another rule: value not compared)"),
+    },
+    expected=[20.0, -14.0], baseline="differential.desat.saturated:alloc_free"))
+
+# Drive level: 4 pods like the one above (wheel 0.05 m: 100 motor rad per m) under the
+# swerve IK targets, steering 1, -2, 4, 0.5 rad/s, limit 100 rad/s: the first call scales
+# every wheel by one factor; later calls find the pods at the limit.
+register(Operation(
+    key="diffswerve.drive_desat",
+    title="diffswerve desaturateModuleVelocitiesInPlace(states, rates, max)",
+    suite="diffswerve", robotpy=None,
+    facade=Case("k.desaturateModuleVelocitiesInPlace(states, rates, lim)",
+                lambda rp, dk: dict(k=_ds_drive(), states=fresh_states(dk),
+                                    rates=[1.0, -2.0, 4.0, 0.5], lim=100.0),
+                value="dk_states(states)",
+                note="same call as the alloc-free column: the method has one (in-place) form"),
+    alloc_free=Case("k.desaturateModuleVelocitiesInPlace(states, rates, lim)",
+                    lambda rp, dk: dict(k=_ds_drive(), states=fresh_states(dk),
+                                        rates=[1.0, -2.0, 4.0, 0.5], lim=100.0),
+                    value="dk_states(states)",
+                    note="states: list of 4 SwerveModuleVelocity, rates: list of 4 floats"),
+    extras={
+        "alloc_free[ndarray]": Case(
+            "k.desaturateModuleVelocitiesInPlace(states, rates, lim)",
+            lambda rp, dk: dict(k=_ds_drive(), states=states_array(dk),
+                                rates=_np_array([1.0, -2.0, 4.0, 0.5]), lim=100.0),
+            value="flat_array(states)", note="states: (4, 2) ndarray, rates: (4,) ndarray"),
+    },
+    baseline="swerve.desat1:alloc_free"))
+
+
+def _ds_drive():
+    from drivekin.diffswerve import DifferentialSwerveModuleKinematics
+
+    return DifferentialSwerveModuleKinematics(3.0, 5.0, 0.05)
+
+
+def _np_array(values):
+    import numpy as np
+
+    return np.array(values, dtype=np.float64)
 
 
 # ---------------------------------------------------------------------------------------
