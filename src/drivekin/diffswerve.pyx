@@ -10,8 +10,8 @@ per pod turn)::
 With ``motor2Inverted=True`` motor 2 is mounted reversed: what it reads and what it is
 commanded is −ω_m2. Units: m, m/s, rad, rad/s. The same linear map converts motor
 position changes (rad) into the pod's rotation (rad) and the wheel's travel (m), so
-integrating the velocity map and converting the integrated motor positions agree
-exactly (quail's ``calculateModuleAngle`` does not: it is off by a factor 2·R_s²).
+integrating the velocity map and converting the integrated motor positions agree to
+rounding (quail's ``calculateModuleAngle`` does not: it is off by a factor 2·R_s²).
 """
 cimport cython
 cimport numpy as cnp
@@ -65,7 +65,7 @@ cdef class DifferentialSwerveMotorVelocities(_WheelValues):
     """DifferentialSwerveMotorVelocities(motor1=0.0, motor2=0.0)
 
     The angular velocities of a differential swerve pod's two motors, rad/s, as each
-    motor reads them (with ``motor2Inverted`` the kinematics already negated motor 2).
+    motor reads them (a reversed motor 2, ``motor2Inverted=True``, reads −ω_m2).
     Mutable; ``==`` compares each motor within 1e-9 rad/s (so instances are unhashable);
     unpacks as ``motor1, motor2 = velocities``.
     """
