@@ -42,17 +42,19 @@ cdef double IN_TO_M = 0.0254
 cdef extern from *:
     """
     /* One wheel value: a float (or subclass, e.g. numpy.float64, whose value is read
-       without running Python code) or an exact int. Returns 1 for anything else. */
+       without running Python code) or an exact int. Returns 1 for anything else and 2
+       for an int too large for a double. */
     static inline int drivekin_read_number(PyObject *o, double *out) {
         if (PyFloat_Check(o)) { *out = PyFloat_AS_DOUBLE(o); return 0; }
         if (PyLong_CheckExact(o)) {
             *out = PyLong_AsDouble(o);
-            return (*out == -1.0 && PyErr_Occurred()) ? -1 : 0;
+            if (*out == -1.0 && PyErr_Occurred()) { PyErr_Clear(); return 2; }
+            return 0;
         }
         return 1;
     }
     """
-    int read_number "drivekin_read_number"(PyObject* o, double* out) except -1
+    int read_number "drivekin_read_number"(PyObject* o, double* out) noexcept
 
 
 cdef inline double optional_number(object value, str what) except? -1.0:
@@ -184,6 +186,7 @@ cdef class DeadWheelKinematics:
         """Copy the n wheel values into ``out`` (C memory). Runs no Python code: only
         lists and tuples of numbers and float64 arrays are accepted."""
         cdef Py_ssize_t i, size, stride
+        cdef int bad
         cdef PyObject** items
         cdef cnp.ndarray a
         cdef char* data
@@ -194,9 +197,12 @@ cdef class DeadWheelKinematics:
                                  f"got {size}")
             items = PySequence_Fast_ITEMS(values)
             for i in range(size):
-                if read_number(items[i], &out[i]) == 1:
+                bad = read_number(items[i], &out[i])
+                if bad == 1:
                     raise TypeError(f"{what}[{i}] must be a float, got "
                                     f"{type_name(<object>items[i])}")
+                if bad == 2:
+                    raise ValueError(f"{what}[{i}] is an int too large for a float")
             return 0
         if not cnp.PyArray_Check(values):
             raise TypeError(f"{what} must be a list or tuple of {self.n} floats or a 1-D "
