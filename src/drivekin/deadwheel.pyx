@@ -126,23 +126,27 @@ cdef class DeadWheelKinematics:
             raise ValueError(parallel_message(rows[0, 0], rows[0, 1]))
         pa = np.linalg.pinv(a)
         g = pa @ rows[:, 2]
-        # Rank of M with unit-length columns, so the lever arms' scale (wheels close to
-        # the centre) does not decide observability; a zero lever-arm column means every
-        # wheel line passes through the robot's centre.
-        norms = np.linalg.norm(rows, axis=0)
-        heading = n >= 3 and norms[2] > 0.0
-        if heading:
-            sv = np.linalg.svd(rows / norms, compute_uv=False)
-            heading = sv[2] > RANK_TOL * sv[0]
+        # Rank of M with the lever arms measured in units of the layout's size, so that
+        # neither the choice of metres nor a small robot decides observability. Lever arms
+        # that vanish on that scale (every wheel line through one point) leave rotation
+        # about that point unobservable.
+        size = max(float(np.hypot((<Pose2d>p).p.t.x, (<Pose2d>p).p.t.y)) for p in poses)
+        scaled = rows.copy()
+        if size > 0.0:
+            scaled[:, 2] /= size
+        sv = np.linalg.svd(scaled, compute_uv=False)
+        heading = n >= 3 and sv[2] > RANK_TOL * sv[0]
         if heading:
             p3 = np.linalg.pinv(rows)
             why = None
         else:
             p3 = np.zeros((3, n))
+            # The invisible rotation's centre, (g1, −g0); round-off below the layout's
+            # scale is printed as 0.
+            px, py = (0.0 if abs(v) <= 1e-12 * size else float(v) for v in (g[1], -g[0]))
             why = (f"{n} wheels cannot observe rotation" if n < 3 else
-                   f"every wheel's line passes through ({float(g[1]):.6g}, "
-                   f"{float(-g[0]):.6g}) m, so a rotation about that point cannot be "
-                   "observed")
+                   f"every wheel's line passes through ({px:.6g}, {py:.6g}) m, so a "
+                   "rotation about that point cannot be observed")
         cdef double[:, ::1] mr = np.ascontiguousarray(rows)
         cdef double[:, ::1] m3 = np.ascontiguousarray(p3)
         cdef double[:, ::1] m2 = np.ascontiguousarray(pa)
