@@ -38,9 +38,9 @@ def _row(text: str, label: str) -> str:
     return m.group(1)
 
 
-DRIVETRAINS = ("swerve", "mecanum", "differential")
+DRIVETRAINS = ("swerve", "mecanum", "differential", "deadwheel")
 ODOMETRY = {"swerve": "SwerveDriveOdometry", "mecanum": "MecanumDriveOdometry",
-            "differential": "DifferentialDriveOdometry"}
+            "differential": "DifferentialDriveOdometry", "deadwheel": "DeadWheelOdometry"}
 
 
 @pytest.fixture(scope="module", params=DRIVETRAINS)
@@ -106,6 +106,22 @@ def test_json_run_moves_and_is_deterministic(drivetrain):
     assert allocations == {"allocator_calls": 0, "traced_peak_bytes": 0, "traced_net_bytes": 0}
     lat = a["latency_us"]
     assert 0.0 < lat["p50"] <= lat["p99"] <= lat["max"]
+
+
+def test_deadwheel_mode_reports_both_odometries_against_the_truth():
+    r = run_demo("--drivetrain", "deadwheel", "--seconds", "30", "--json")
+    assert r.returncode == 0, r.stderr
+    a = json.loads(r.stdout)
+    drive, dead = a["drive_encoder_error_m"], a["dead_wheel_error_m"]
+    # The drive encoders miss the simulated slip; the dead wheels only see ticks and
+    # noise. The bounds are loose physical expectations, not measured results.
+    assert drive["final"] > 0.1 and drive["max"] >= drive["final"]
+    assert 0.0 < dead["final"] < 0.02 and dead["max"] >= dead["final"]
+    # The reported (dead-wheel) pose is the odometry's, close to the truth.
+    truth, pose = a["true_pose"], a["final_pose"]
+    assert abs(truth["x_m"] - pose["x_m"]) < 0.02 and abs(truth["y_m"] - pose["y_m"]) < 0.02
+    text = run_demo("--drivetrain", "deadwheel", "--seconds", "1")
+    assert "dead-wheel error" in text.stdout and "drive-encoder error" in text.stdout
 
 
 def test_default_drivetrain_is_swerve():

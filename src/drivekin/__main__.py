@@ -55,7 +55,9 @@ def parse_args(argv=None):
             "inverse kinematics, desaturates, applies a wheel response model (wheel-speed "
             "lag; for swerve also optimize, a steering rate limit and cosine scaling) and "
             "updates the drivetrain's odometry class from the wheel distances and a "
-            "simulated gyro. The loop runs as fast as it can (no sleeping); it is run twice "
+            "simulated gyro. 'deadwheel' is the mecanum robot with wheel slip, localized "
+            "both by its drive encoders and by three dead wheels, with both errors against "
+            "the simulated truth. The loop runs as fast as it can (no sleeping); it is run twice "
             "on identical simulations: once timed with tracemalloc off, once under "
             "tracemalloc to count allocations."),
         epilog="Example: python -m drivekin --drivetrain mecanum --seconds 60 --max-speed 4",
