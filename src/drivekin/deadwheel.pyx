@@ -57,13 +57,14 @@ cdef extern from *:
     int read_number "drivekin_read_number"(PyObject* o, double* out) noexcept
 
 
-cdef inline double optional_number(object value, str what) except? -1.0:
+cdef inline double gyro_number(object value, str call) except? -1.0:
     # Converted before any wheel value is read into scratch memory: __float__ of a
     # user object is Python code, which must not run between reading and solving.
     try:
         return value
     except TypeError:
-        raise TypeError(f"{what} must be a number or None, got {type_name(value)}") from None
+        raise TypeError(f"{call}: the gyro argument must be a number or None, got "
+                        f"{type_name(value)}") from None
 
 
 cdef str parallel_message(double c, double s):
@@ -247,7 +248,7 @@ cdef class DeadWheelKinematics:
         cdef double w = 0.0
         self._ready()
         if gyro is not None:
-            w = optional_number(gyro, call + ": the gyro argument")
+            w = gyro_number(gyro, call)
         elif not self.heading:
             self._need_heading(call)
         self._read(values, self.s, what)
