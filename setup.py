@@ -37,8 +37,8 @@ if trace:
 # exactly as in WPILib.
 compile_args = ["-O3", "-fno-math-errno"] if os.name != "nt" else []
 
-modules = ["geometry", "kinematics", "_wheels", "differential", "mecanum", "odometry", "_alloccount"]
-modules += ["diffswerve"]          # differential swerve pods (issue 7 §3)
+modules = ["geometry", "kinematics", "_wheels", "differential", "mecanum", "deadwheel",
+           "diffswerve", "odometry", "_alloccount"]
 extensions = [
     Extension(
         f"drivekin.{name}",

@@ -38,11 +38,10 @@ def _row(text: str, label: str) -> str:
     return m.group(1)
 
 
-DRIVETRAINS = ("swerve", "mecanum", "differential")
+DRIVETRAINS = ("swerve", "mecanum", "differential", "deadwheel", "diffswerve")
 ODOMETRY = {"swerve": "SwerveDriveOdometry", "mecanum": "MecanumDriveOdometry",
-            "differential": "DifferentialDriveOdometry"}
-DRIVETRAINS += ("diffswerve",)
-ODOMETRY["diffswerve"] = "SwerveDriveOdometry"
+            "differential": "DifferentialDriveOdometry", "deadwheel": "DeadWheelOdometry",
+            "diffswerve": "SwerveDriveOdometry"}
 
 
 @pytest.fixture(scope="module", params=DRIVETRAINS)
@@ -110,6 +109,22 @@ def test_json_run_moves_and_is_deterministic(drivetrain):
     assert 0.0 < lat["p50"] <= lat["p99"] <= lat["max"]
 
 
+def test_deadwheel_mode_reports_both_odometries_against_the_truth():
+    r = run_demo("--drivetrain", "deadwheel", "--seconds", "30", "--json")
+    assert r.returncode == 0, r.stderr
+    a = json.loads(r.stdout)
+    drive, dead = a["drive_encoder_error_m"], a["dead_wheel_error_m"]
+    # The drive encoders miss the simulated slip; the dead wheels only see ticks and
+    # noise. The bounds are loose physical expectations, not measured results.
+    assert drive["final"] > 0.1 and drive["max"] >= drive["final"]
+    assert 0.0 < dead["final"] < 0.02 and dead["max"] >= dead["final"]
+    # The reported (dead-wheel) pose is the odometry's, close to the truth.
+    truth, pose = a["true_pose"], a["final_pose"]
+    assert abs(truth["x_m"] - pose["x_m"]) < 0.02 and abs(truth["y_m"] - pose["y_m"]) < 0.02
+    text = run_demo("--drivetrain", "deadwheel", "--seconds", "1")
+    assert "dead-wheel error" in text.stdout and "drive-encoder error" in text.stdout
+
+
 def test_default_drivetrain_is_swerve():
     result = run_demo("--seconds", "0.1", "--json")
     assert result.returncode == 0, result.stderr
@@ -146,7 +161,7 @@ def test_diffswerve_odometry_matches_the_plant_and_respects_the_motor_limit():
     result = run_demo("--drivetrain", "diffswerve", "--seconds", "30", "--max-speed", "1.0",
                       "--json")
     assert result.returncode == 0, result.stderr
-    d = json.loads(result.stdout)["details"]
+    d = json.loads(result.stdout)["diffswerve"]
     limit = 0.5 * 14.0 / 0.0508 * 1.0              # R_L / r · max speed / 2
     assert d["motor_limit_radps"] == pytest.approx(limit, rel=1e-15)
     assert d["peak_motor_command_radps"] <= d["motor_limit_radps"]

@@ -4,6 +4,7 @@ Cython kernels.
 Units are SI throughout (m, m/s, m/s², rad, rad/s, rad/s², s); x forward, y left,
 angles counter-clockwise positive.
 """
+from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.differential import (
     DifferentialDriveKinematics,
     DifferentialDriveWheelAccelerations,
@@ -31,9 +32,11 @@ from drivekin.mecanum import (
     MecanumDriveWheelVelocities,
 )
 from drivekin.odometry import (
+    DeadWheelOdometry,
     DifferentialDriveOdometry,
     MecanumDriveOdometry,
     SwerveDriveOdometry,
+    TwoDeadWheelOdometry,
 )
 
 __version__ = "0.1.0"
@@ -41,6 +44,8 @@ __version__ = "0.1.0"
 __all__ = [
     "ChassisAccelerations",
     "ChassisVelocities",
+    "DeadWheelKinematics",
+    "DeadWheelOdometry",
     "DifferentialDriveKinematics",
     "DifferentialDriveOdometry",
     "DifferentialDriveWheelAccelerations",
@@ -61,6 +66,7 @@ __all__ = [
     "Transform2d",
     "Translation2d",
     "Twist2d",
+    "TwoDeadWheelOdometry",
 ]
 # Differential swerve pods (drivekin.diffswerve).
 __all__ += [

@@ -60,7 +60,9 @@ def parse_args(argv=None):
             "pure driving, simulated motors and module positions from motor positions, "
             "checked against the simulated truth) and "
             "updates the drivetrain's odometry class from the wheel distances and a "
-            "simulated gyro. The loop runs as fast as it can (no sleeping); it is run twice "
+            "simulated gyro. 'deadwheel' is the mecanum robot with wheel slip, localized "
+            "both by its drive encoders and by three dead wheels, with both errors against "
+            "the simulated truth. The loop runs as fast as it can (no sleeping); it is run twice "
             "on identical simulations: once timed with tracemalloc off, once under "
             "tracemalloc to count allocations."),
         epilog="Example: python -m drivekin --drivetrain mecanum --seconds 60 --max-speed 4",

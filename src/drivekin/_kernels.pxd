@@ -306,11 +306,14 @@ cdef inline void mat_vec(Py_ssize_t rows, Py_ssize_t cols, const double* m, cons
             acc = acc + m[r * cols + c] * x[c]
         out[r] = acc
 
+cdef inline double gyro_change(rot2_t gyro, rot2_t prev) noexcept nogil:
+    # Wrapped to (−π, π]: 170° -> -170° is +20°.
+    return rot_radians(rot_minus(gyro, prev))
+
 cdef inline void odometry_step(pose2_t* p, rot2_t* prev_gyro,          # IN/OUT
                                double dx, double dy, rot2_t gyro) noexcept nogil:
-    # The heading change always comes from the gyro, wrapped: 170° -> -170° is +20°.
-    cdef double dtheta = rot_radians(rot_minus(gyro, prev_gyro[0]))
-    p[0] = pose_transform_by(p[0], twist_exp(dx, dy, dtheta))
+    # The heading change always comes from the gyro.
+    p[0] = pose_transform_by(p[0], twist_exp(dx, dy, gyro_change(gyro, prev_gyro[0])))
     prev_gyro[0] = gyro
 
 cdef inline void wheels_desaturate(Py_ssize_t n, const double* w, double attainable,
@@ -326,3 +329,25 @@ cdef inline void wheels_desaturate(Py_ssize_t n, const double* w, double attaina
     elif out != w:
         for i in range(n):
             out[i] = w[i]
+
+# ---------------------------------------------------------------------------------------
+# Dead (tracking) wheels: wheel i reads d_i = M_i · (dx, dy, dθ) with M_i = (cos φ_i,
+# sin φ_i, x_i sin φ_i − y_i cos φ_i). The pseudo-inverses are built once per layout.
+
+cdef inline void deadwheel_solve(Py_ssize_t n, const double* p3, const double* p2,
+                                 const double* g, const double* d, bint gyro, double w,
+                                 double* out                         # OUT, 3 values
+                                 ) noexcept nogil:
+    # Without a gyro: t = M⁺·d (p3, 3 x n). With one, dθ = w is fixed and only (dx, dy)
+    # is fitted: A⁺·(d − c·w) = A⁺·d − (A⁺c)·w, with p2 = A⁺ (2 x n) and g = A⁺c.
+    if gyro:
+        mat_vec(2, n, p2, d, out)
+        out[0] = out[0] - g[0] * w
+        out[1] = out[1] - g[1] * w
+        out[2] = w
+    else:
+        mat_vec(3, n, p3, d, out)
+
+cdef inline double deadwheel_reading(const double* row, double x, double y, double z) noexcept nogil:
+    # One wheel's reading for the chassis vector (x, y, z): the inverse map, row by row.
+    return row[0] * x + row[1] * y + row[2] * z

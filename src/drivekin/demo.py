@@ -50,15 +50,21 @@ Before each pass: ``gc.collect()``, then the measured simulation is built, then 
 throw-away simulation runs one full script cycle as warm-up (caches, specialised
 bytecode) and is freed, refilling the freelists (see :func:`prepared_simulation`).
 
+``--drivetrain deadwheel`` runs the mecanum robot with wheel slip and localizes it twice,
+by its drive encoders and by three dead wheels (Road Runner's standard layout, encoder
+ticks and noise), reporting both odometries' errors against the simulated truth (see
+:class:`DeadWheelDrive`).
+
 Only the standard library and drivekin are used. Drivetrains plug in through
 :data:`DRIVETRAINS`: a :class:`Drivetrain` subclass with ``pose``, ``distance``,
-``describe()`` and ``step(command)``.
+``describe()``, ``step(command)`` and optionally ``results()``.
 """
 from __future__ import annotations
 
 import gc
 import itertools
 import math
+import random
 import sys
 import time
 import tracemalloc
@@ -68,6 +74,8 @@ import drivekin
 from drivekin._alloccount import AllocationCounter
 from drivekin import (
     ChassisVelocities,
+    DeadWheelKinematics,
+    DeadWheelOdometry,
     DifferentialDriveKinematics,
     DifferentialSwerveModuleKinematics,
     DifferentialSwerveModuleVelocities,
@@ -85,6 +93,7 @@ from drivekin import (
     SwerveModulePosition,
     SwerveModuleVelocity,
     Translation2d,
+    Twist2d,
 )
 
 DT = 0.02                   # control period, s (50 Hz)
@@ -205,6 +214,8 @@ class Drivetrain:
     ODOMETRY = None
     INPUT = ""
     CHAIN = ()
+    GYRO = ("true heading integrated from the simulated",
+            "wheels (toChassisVelocitiesInto of the measured wheel velocities)")
 
     __slots__ = ("max_speed", "measured", "gyro", "odometry", "pose", "distance",
                  "_gyro_rad", "_x", "_y")
@@ -218,6 +229,10 @@ class Drivetrain:
         self._x = 0.0
         self._y = 0.0
         # Subclasses create ``self.odometry`` and then set ``self.pose`` from it.
+
+    def results(self) -> dict:
+        """Drivetrain-specific results for the report (JSON-ready); none by default."""
+        return {}
 
     def _gyro_step(self) -> Rotation2d:
         """Advance the simulated gyro by the measured rotation rate; return the reading."""
@@ -374,6 +389,13 @@ class MecanumDrive(Drivetrain):
 
     def step(self, command: ChassisVelocities) -> None:
         """Run one control period for a field-relative ``command`` (overwritten)."""
+        p = self._mecanum_step(command, self.measured)
+        self._record(self.odometry.update(self._gyro_step(), p))
+
+    def _mecanum_step(self, command: ChassisVelocities,
+                      measured: ChassisVelocities) -> MecanumDriveWheelPositions:
+        """Command → wheels → wheel lag → encoder distances (returned); the wheels'
+        forward kinematics goes into ``measured``."""
         command.toRobotRelativeInto(self.gyro, command)
         command.discretizeInto(DT, command)
         kinematics = self.kinematics
@@ -399,8 +421,8 @@ class MecanumDrive(Drivetrain):
         v = v + (t.rearRight - v) * a
         w.rearRight = v
         p.rearRight = p.rearRight + v * DT
-        kinematics.toChassisVelocitiesInto(w, self.measured)
-        self._record(self.odometry.update(self._gyro_step(), p))
+        kinematics.toChassisVelocitiesInto(w, measured)
+        return p
 
 
 class DifferentialDrive(Drivetrain):
@@ -455,6 +477,114 @@ class DifferentialDrive(Drivetrain):
         self.right = right
         kinematics.toChassisVelocitiesInto(w, self.measured)
         self._record(self.odometry.update(self._gyro_step(), left, right))
+
+
+class DeadWheelDrive(MecanumDrive):
+    """The mecanum robot of :class:`MecanumDrive`, localized twice: by its drive encoders
+    (MecanumDriveOdometry) and by three dead wheels (DeadWheelOdometry on Road Runner's
+    standard layout), both with the gyro, against a simulated truth.
+
+    Mecanum rollers slip: the robot moves less than its wheel encoders claim, strafing
+    least efficiently. The truth is the drive encoders' forward kinematics scaled by
+    ``EFFICIENCY`` (vx, vy, omega); the gyro integrates the true rotation. The dead wheels
+    roll on the floor, so they read the true motion (their inverse kinematics applied to
+    the true velocity) plus encoder noise of ``NOISE`` m per reading (seeded, so runs are
+    reproducible). Both odometries are compared with the true pose every step."""
+
+    name = "deadwheel"
+    ODOMETRY = DeadWheelOdometry
+    INPUT = "field-relative joystick"
+    CHAIN = ("mecanum chain (as --drivetrain mecanum) → wheel slip → true motion →",
+             "MecanumDriveOdometry.update(gyro, drive encoders) and",
+             "DeadWheelOdometry.update([par0, par1, perp], gyro) → errors against the truth")
+    GYRO = ("true heading: the robot's true rotation rate (after slip)",
+            "integrated over each step")
+    # Road Runner's standard three-wheel layout (peers.md §1.7), inches: parallel wheels
+    # at y = ±7.1, perpendicular wheel at x = −3.75.
+    PAR_Y = 7.1 * 0.0254
+    PERP_X = -3.75 * 0.0254
+    EFFICIENCY = (0.97, 0.85, 0.93)     # true / encoder-claimed vx, vy, omega
+    TICK = 0.035 * math.pi / 2000       # m per encoder tick: 35 mm wheel, 2000 counts/rev
+    NOISE = 2e-5                        # m, extra per-reading noise (1 σ): bumps, scrub
+    SEED = 5190
+
+    __slots__ = ("dead", "dead_positions", "wheel_odometry", "wheel_pose", "truth",
+                 "_uniform", "_rolled", "_claimed", "_errors")
+
+    def __init__(self, max_speed: float) -> None:
+        super().__init__(max_speed)
+        self.wheel_odometry = self.odometry          # MecanumDriveOdometry
+        self.wheel_pose = self.pose
+        self.dead = DeadWheelKinematics([
+            Pose2d(0.0, self.PAR_Y, Rotation2d()), Pose2d(0.0, -self.PAR_Y, Rotation2d()),
+            Pose2d(self.PERP_X, 0.0, Rotation2d.kCCW_Pi_2)])
+        self.dead_positions = [0.0, 0.0, 0.0]        # encoder distances, m (in place)
+        self._rolled = array("d", [0.0, 0.0, 0.0])   # true distances the wheels rolled, m
+        self.odometry = DeadWheelOdometry(self.dead, self.dead_positions, self.gyro)
+        self.pose = self.odometry.getPose()
+        self.truth = Pose2d()
+        self._claimed = ChassisVelocities()          # the drive encoders' forward kinematics
+        # Bound once: binding a method per call would allocate a method object.
+        self._uniform = random.Random(self.SEED).random
+        # final and max error of the drive-encoder and dead-wheel odometry, m
+        self._errors = array("d", [0.0, 0.0, 0.0, 0.0])
+
+    def describe(self) -> str:
+        e = self.EFFICIENCY
+        return (super().describe() + ";\n           3 dead wheels (Road Runner's standard "
+                f"layout): parallel at y = ±{self.PAR_Y:.3f} m,\n           perpendicular "
+                f"at x = {self.PERP_X:.3f} m; {self.TICK * 1e3:.3f} mm ticks, noise σ = "
+                f"{self.NOISE * 1e3:g} mm;\n           slip: the robot moves {e[0]:g}·vx, "
+                f"{e[1]:g}·vy, {e[2]:g}·ω of what the drive encoders claim")
+
+    def _reading(self, i: int, rolled: float) -> float:
+        """Wheel i's encoder after rolling ``rolled`` m more: noise, then whole ticks."""
+        u = self._uniform
+        # Box–Muller with one uniform pair per reading (the second normal is discarded).
+        x = self._rolled[i] + rolled + self.NOISE * math.sqrt(
+            -2.0 * math.log(1.0 - u())) * _cos(2.0 * math.pi * u())
+        self._rolled[i] = x
+        return x - math.fmod(x, self.TICK)
+
+    def step(self, command: ChassisVelocities) -> None:
+        """Run one control period for a field-relative ``command`` (overwritten)."""
+        p = self._mecanum_step(command, self._claimed)
+        c = self._claimed
+        t = self.measured                  # the truth: what the gyro integrates
+        e = self.EFFICIENCY
+        t.vx = c.vx * e[0]
+        t.vy = c.vy * e[1]
+        t.omega = c.omega * e[2]
+        gyro = self._gyro_step()
+        self.truth = self.truth.exp(Twist2d(t.vx * DT, t.vy * DT, t.omega * DT))
+        self.wheel_pose = self.wheel_odometry.update(gyro, p)
+        r0, r1, r2 = self.dead.toWheelVelocities(t)
+        d = self.dead_positions
+        d[0] = self._reading(0, r0 * DT)
+        d[1] = self._reading(1, r1 * DT)
+        d[2] = self._reading(2, r2 * DT)
+        pose = self.odometry.update(d, gyro)
+        self._record(pose)
+        truth = self.truth
+        err = self._errors
+        wheel = self.wheel_pose
+        x = _hypot(wheel.x - truth.x, wheel.y - truth.y)
+        err[0] = x
+        if x > err[1]:
+            err[1] = x
+        x = _hypot(pose.x - truth.x, pose.y - truth.y)
+        err[2] = x
+        if x > err[3]:
+            err[3] = x
+
+    def results(self) -> dict:
+        e = self._errors
+        truth = self.truth
+        return {"true_pose": {"x_m": truth.x, "y_m": truth.y,
+                              "heading_deg": truth.getRotation().getDegrees()},
+                "drive_encoder_error_m": {"final": e[0], "max": e[1]},
+                "dead_wheel_error_m": {"final": e[2], "max": e[3]}}
+
 
 
 class DiffSwervePodSim:
@@ -571,6 +701,8 @@ class DiffSwerveDrive(Drivetrain):
     name = "diffswerve"
     ODOMETRY = SwerveDriveOdometry
     INPUT = "field-relative joystick"
+    GYRO = ("true heading: the simulated pods' own motion (toChassisVelocitiesInto",
+            "of the plant's module velocities) integrated over each step")
     CHAIN = ("toRobotRelativeInto → discretizeInto → toSwerveModuleVelocitiesInto → per pod:",
              "optimizeInPlace, steering rate → desaturateModuleVelocitiesInPlace (motor limit,",
              "one factor) → cosineScaleInPlace → toMotorVelocitiesInto → "
@@ -634,13 +766,14 @@ class DiffSwerveDrive(Drivetrain):
                 f"{self.WHEEL_RADIUS:g} m, motor 2 reversed; motor limit "
                 f"{self.motor_limit:.0f} rad/s, motor lag τ = {self.MOTOR_TAU * 1000:.0f} ms")
 
-    def details(self) -> dict:
+    def results(self) -> dict:
         worst = self._m0.peak
         for m in (self._m1, self._m2, self._m3):
             worst = m.peak if m.peak > worst else worst
-        return {"motor_limit_radps": self.motor_limit, "peak_motor_command_radps": worst,
-                "min_drive_factor": self.min_factor, "max_position_error_m": self.max_error,
-                "max_pod_angle_error_rad": self.max_angle_error}
+        return {"diffswerve": {
+            "motor_limit_radps": self.motor_limit, "peak_motor_command_radps": worst,
+            "min_drive_factor": self.min_factor, "max_position_error_m": self.max_error,
+            "max_pod_angle_error_rad": self.max_angle_error}}
 
     def _angle_error(self, pod) -> None:
         e = abs(pod.position.angle.minus(pod.truth.angle).getRadians())
@@ -680,8 +813,9 @@ class DiffSwerveDrive(Drivetrain):
             self.max_error = error
 
 
+
 DRIVETRAINS = {cls.name: cls for cls in (SwerveDrive, MecanumDrive, DifferentialDrive,
-                                         DiffSwerveDrive)}
+                                         DeadWheelDrive, DiffSwerveDrive)}
 
 
 # ---------------------------------------------------------------------------------------
@@ -826,8 +960,9 @@ def run(args) -> dict:
                "collections_timing_pass": collections},
         "final_pose": pose1,
         "distance_m": sim1.drive.distance,
-        "passes_agree": pose1 == pose2 and sim1.drive.distance == alloc["sim"].drive.distance,
-        **({"details": sim1.drive.details()} if hasattr(sim1.drive, "details") else {}),
+        "passes_agree": (pose1 == pose2 and sim1.drive.distance == alloc["sim"].drive.distance
+                         and sim1.drive.results() == alloc["sim"].drive.results()),
+        **sim1.drive.results(),
     }
 
 
@@ -842,9 +977,8 @@ def header(args, steps: int) -> str:
         f"drivekin {drivekin.__version__} — simulated 50 Hz {drive.name} drive control loop, "
         "allocation-free path",
         f"  robot    {drive.describe()}",
-        f"  odometry {drive.ODOMETRY.__name__}, gyro = true heading integrated from the "
-        "simulated",
-        "           wheels (toChassisVelocitiesInto of the measured wheel velocities)",
+        f"  odometry {drive.ODOMETRY.__name__}, gyro = {drive.GYRO[0]}",
+        f"           {drive.GYRO[1]}",
         f"  limits   wheel speed {args.max_speed:g} m/s, joystick rotation "
         f"{args.max_omega:.2f} rad/s",
         f"  script   {drive.INPUT}, repeats every {JoystickScript.CYCLE:g} s:",
@@ -885,10 +1019,21 @@ def table(r: dict) -> str:
         ("  distance travelled", f"{r['distance_m']:.2f} m", "odometry path length"),
         ("  passes agree", "yes" if r["passes_agree"] else "NO", "pass 1 pose == pass 2 pose"),
     ]
-    if "details" in r:
-        rows.append((r["drivetrain"], "", ""))
-        rows += [(label, fmt.format(r["details"][key]), note)
-                 for key, label, fmt, note in DRIVETRAINS[r["drivetrain"]].DETAILS]
+    if "dead_wheel_error_m" in r:
+        t, de, dw = r["true_pose"], r["drive_encoder_error_m"], r["dead_wheel_error_m"]
+        rows += [
+            ("localization", "", ""),
+            ("  true pose", f"x {t['x_m']:.3f} m, y {t['y_m']:.3f} m",
+             f"heading {t['heading_deg']:.2f}°"),
+            ("  drive-encoder error", f"{de['final'] * 100:.1f} cm",
+             f"final; max {de['max'] * 100:.1f} cm (MecanumDriveOdometry)"),
+            ("  dead-wheel error", f"{dw['final'] * 100:.1f} cm",
+             f"final; max {dw['max'] * 100:.1f} cm (DeadWheelOdometry)"),
+        ]
+    if "diffswerve" in r:
+        rows.append(("differential swerve", "", ""))
+        rows += [(label, fmt.format(r["diffswerve"][key]), note)
+                 for key, label, fmt, note in DiffSwerveDrive.DETAILS]
     w0 = max(len(a) for a, _, _ in rows)
     w1 = max(len(b) for _, b, _ in rows)
     return "\n".join(f"{a:<{w0}}  {b:>{w1}}  {c}".rstrip() if b else a for a, b, c in rows)

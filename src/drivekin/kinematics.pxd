@@ -84,3 +84,7 @@ cdef class SwerveDriveKinematics:
     cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1
     cdef int _deltas(self, object start, object end) except -1
     cdef int _read(self, object states, type cls, str what) except -1
+
+
+# Argument helper shared with the other drivetrain modules (see kinematics.pyx).
+cdef tuple snapshot(object seq, str what)

@@ -5,6 +5,7 @@ from drivekin._types cimport pose2_t, rot2_t
 from drivekin.geometry cimport Rotation2d
 from drivekin.kinematics cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics
+from drivekin.deadwheel cimport DeadWheelKinematics
 
 
 cdef class _Odometry:
@@ -26,3 +27,16 @@ cdef class MecanumDriveOdometry(_Odometry):
 @cython.final
 cdef class DifferentialDriveOdometry(_Odometry):
     cdef double prev_l, prev_r   # wheel distances at the last update, m
+
+@cython.final
+cdef class TwoDeadWheelOdometry(_Odometry):
+    cdef double x_wheel_y        # xWheelYPos: y of the forward-facing wheel, m
+    cdef double y_wheel_x        # yWheelXPos: x of the left-facing wheel, m
+    cdef double prev_x, prev_y   # wheel distances at the last update, m
+
+@cython.final
+cdef class DeadWheelOdometry(_Odometry):
+    cdef DeadWheelKinematics kin
+    cdef double* prev            # wheel distances at the last update, m (n values)
+    cdef bint gyro               # fixed at construction: heading from a gyro
+    cdef int _gyro_arg(self, object gyroAngle, str call) except -1

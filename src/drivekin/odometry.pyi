@@ -1,4 +1,4 @@
-"""Odometry for swerve, mecanum and differential drives (WPILib 2027).
+"""Odometry for swerve, mecanum, differential and dead-wheel drivetrains (WPILib 2027).
 
 Each ``update`` turns the wheel-position changes since the previous call into a twist
 with the drivetrain's forward kinematics, replaces its heading change by the wrapped
@@ -12,7 +12,7 @@ comes from a freelist, so a 50 Hz loop runs without allocator calls.
 # docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
 # they match the runtime ``__doc__`` and that no public name is missing on either side.
 #
-# At runtime the three odometry classes derive from the private base _Odometry; its
+# At runtime the odometry classes derive from the private base _Odometry; its
 # methods are declared on each public class instead.
 
 from collections.abc import Sequence
@@ -21,7 +21,9 @@ from typing import final
 import numpy as np
 import numpy.typing as npt
 
+from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
+from drivekin.kinematics import ChassisVelocities
 from drivekin.kinematics import SwerveDriveKinematics, SwerveModulePosition
 from drivekin.mecanum import MecanumDriveKinematics, MecanumDriveWheelPositions
 
@@ -128,6 +130,105 @@ class DifferentialDriveOdometry:
     def update(self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float) -> Pose2d:
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
+
+    def getPose(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+
+    def resetPose(self, pose: Pose2d) -> None:
+        """Set the pose; the gyro and wheel baselines are left as they are."""
+
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Set the position and keep the heading."""
+
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
+        here that makes the next update report a wrong heading; drivekin does not.)"""
+
+@final
+class TwoDeadWheelOdometry:
+    """TwoDeadWheelOdometry(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose=Pose2d())
+
+    WPILib's two-dead-wheel odometry (goBILDA Pinpoint's layout): a forward-facing wheel
+    at y = ``xWheelYPos`` (m) reading forward motion, a left-facing wheel at
+    x = ``yWheelXPos`` (m) reading leftward motion, and a gyro for the heading. The
+    offsets are Pinpoint's: X-pod offset positive to the left, Y-pod offset positive
+    forward. ``xWheelPos``/``yWheelPos`` are the wheels' current distances (m).
+    Each update uses dθ = the wrapped gyro change, dx = Δx + dθ·xWheelYPos and
+    dy = Δy − dθ·yWheelXPos.
+    """
+
+    def __init__(
+        self,
+        xWheelYPos: float,
+        yWheelXPos: float,
+        xWheelPos: float,
+        yWheelPos: float,
+        gyroAngle: Rotation2d,
+        initialPose: Pose2d | None = None,
+    ) -> None: ...
+    def resetPosition(
+        self, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d, pose: Pose2d
+    ) -> None:
+        """Reset the pose, the gyro baseline and the wheel-distance baselines."""
+
+    def update(self, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d) -> Pose2d:
+        """Integrate the wheel-distance changes (m) since the last call and the gyro
+        change; return the new pose."""
+
+    def toChassisVelocities(self, vx: float, vy: float, omega: float) -> ChassisVelocities:
+        """Return the robot velocity from the forward wheel's and left wheel's surface
+        velocities ``vx``, ``vy`` (m/s) and the gyro rate ``omega`` (rad/s):
+        (vx + omega·xWheelYPos, vy − omega·yWheelXPos, omega)."""
+
+    def getPose(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+
+    def resetPose(self, pose: Pose2d) -> None:
+        """Set the pose; the gyro and wheel baselines are left as they are."""
+
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Set the position and keep the heading."""
+
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
+        here that makes the next update report a wrong heading; drivekin does not.)"""
+
+@final
+class DeadWheelOdometry:
+    """DeadWheelOdometry(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d())
+
+    Tracks a robot's pose from N dead wheels (DeadWheelKinematics) and, optionally, a
+    gyro. ``wheelPositions`` are the wheels' distances (m): a list or tuple of floats or a
+    1-D float64 array, in the kinematics' wheel order. With a gyro (``gyroAngle`` a
+    Rotation2d) every update takes dθ from its wrapped change and fits (dx, dy) to the
+    wheels; without one, all three come from the wheels (the layout must observe
+    rotation). Whether a gyro is used is fixed here: ``update`` and ``resetPosition``
+    must then always pass one, or never.
+    """
+
+    def __init__(
+        self,
+        kinematics: DeadWheelKinematics,
+        wheelPositions: Sequence[float] | npt.NDArray[np.float64],
+        gyroAngle: Rotation2d | None = None,
+        initialPose: Pose2d | None = None,
+    ) -> None: ...
+    def resetPosition(
+        self,
+        wheelPositions: Sequence[float] | npt.NDArray[np.float64],
+        gyroAngle: Rotation2d | None,
+        pose: Pose2d,
+    ) -> None:
+        """Reset the pose, the wheel-position baselines and (with a gyro) the gyro
+        baseline; pass ``gyroAngle=None`` for an odometry without a gyro."""
+
+    def update(
+        self,
+        wheelPositions: Sequence[float] | npt.NDArray[np.float64],
+        gyroAngle: Rotation2d | None = None,
+    ) -> Pose2d:
+        """Integrate the wheel-distance changes (m) since the last call (and the gyro
+        change, with a gyro); return the new pose."""
 
     def getPose(self) -> Pose2d:
         """Return the current pose estimate (field frame, m)."""

@@ -1,4 +1,4 @@
-"""Odometry for swerve, mecanum and differential drives (WPILib 2027).
+"""Odometry for swerve, mecanum, differential and dead-wheel drivetrains (WPILib 2027).
 
 Each ``update`` turns the wheel-position changes since the previous call into a twist
 with the drivetrain's forward kinematics, replaces its heading change by the wrapped
@@ -8,14 +8,18 @@ matter. ``update`` returns the new pose; it allocates nothing beyond that Pose2d
 comes from a freelist, so a 50 Hz loop runs without allocator calls.
 """
 cimport cython
+from libc.math cimport isfinite
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 
 from drivekin._types cimport pose2_t
 from drivekin._wheels cimport _WheelValues
-from drivekin._kernels cimport forward_solve, mat_vec, odometry_step, pose, rot_xy, vec
+from drivekin._kernels cimport (deadwheel_solve, forward_solve, gyro_change, mat_vec,
+                                odometry_step, pose, pose_transform_by, rot_xy, twist_exp, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.kinematics cimport SwerveDriveKinematics, SwerveModulePosition
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
+from drivekin.deadwheel cimport DeadWheelKinematics
+from drivekin.kinematics cimport new_chassis_velocities
 from drivekin._errors import type_name
 
 
@@ -206,4 +210,155 @@ cdef class DifferentialDriveOdometry(_Odometry):
         self.prev_l = leftDistance
         self.prev_r = rightDistance
         odometry_step(&self.pose, &self.prev_gyro, (dl + dr) / 2.0, 0.0, gyroAngle.r)
+        return new_pose(self.pose)
+
+
+cdef class TwoDeadWheelOdometry(_Odometry):
+    """TwoDeadWheelOdometry(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose=Pose2d())
+
+    WPILib's two-dead-wheel odometry (goBILDA Pinpoint's layout): a forward-facing wheel
+    at y = ``xWheelYPos`` (m) reading forward motion, a left-facing wheel at
+    x = ``yWheelXPos`` (m) reading leftward motion, and a gyro for the heading. The
+    offsets are Pinpoint's: X-pod offset positive to the left, Y-pod offset positive
+    forward. ``xWheelPos``/``yWheelPos`` are the wheels' current distances (m).
+    Each update uses dθ = the wrapped gyro change, dx = Δx + dθ·xWheelYPos and
+    dy = Δy − dθ·yWheelXPos.
+    """
+
+    def __init__(self, double xWheelYPos, double yWheelXPos, double xWheelPos,
+                 double yWheelPos, Rotation2d gyroAngle not None, initialPose=None):
+        self._start_init()
+        if not (isfinite(xWheelYPos) and isfinite(yWheelXPos)):
+            raise ValueError(f"wheel offsets must be finite (m), got xWheelYPos="
+                             f"{xWheelYPos!r}, yWheelXPos={yWheelXPos!r}")
+        self.pose = initial(initialPose)
+        self.x_wheel_y = xWheelYPos
+        self.y_wheel_x = yWheelXPos
+        self.prev_x = xWheelPos
+        self.prev_y = yWheelPos
+        self.prev_gyro = gyroAngle.r
+        self.ready = True
+
+    def resetPosition(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle not None,
+                      Pose2d pose not None):
+        """Reset the pose, the gyro baseline and the wheel-distance baselines."""
+        if not self.ready:
+            uninitialised(self)
+        self.prev_x = xWheelPos
+        self.prev_y = yWheelPos
+        self.prev_gyro = gyroAngle.r
+        self.pose = pose.p
+
+    def update(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle not None):
+        """Integrate the wheel-distance changes (m) since the last call and the gyro
+        change; return the new pose."""
+        if not self.ready:
+            uninitialised(self)
+        cdef double dtheta = gyro_change(gyroAngle.r, self.prev_gyro)
+        cdef double dx = xWheelPos - self.prev_x + dtheta * self.x_wheel_y
+        cdef double dy = yWheelPos - self.prev_y - dtheta * self.y_wheel_x
+        self.prev_x = xWheelPos
+        self.prev_y = yWheelPos
+        self.prev_gyro = gyroAngle.r
+        self.pose = pose_transform_by(self.pose, twist_exp(dx, dy, dtheta))
+        return new_pose(self.pose)
+
+    def toChassisVelocities(self, double vx, double vy, double omega):
+        """Return the robot velocity from the forward wheel's and left wheel's surface
+        velocities ``vx``, ``vy`` (m/s) and the gyro rate ``omega`` (rad/s):
+        (vx + omega·xWheelYPos, vy − omega·yWheelXPos, omega)."""
+        if not self.ready:
+            uninitialised(self)
+        return new_chassis_velocities(vx + omega * self.x_wheel_y,
+                                      vy - omega * self.y_wheel_x, omega)
+
+
+cdef class DeadWheelOdometry(_Odometry):
+    """DeadWheelOdometry(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d())
+
+    Tracks a robot's pose from N dead wheels (DeadWheelKinematics) and, optionally, a
+    gyro. ``wheelPositions`` are the wheels' distances (m): a list or tuple of floats or a
+    1-D float64 array, in the kinematics' wheel order. With a gyro (``gyroAngle`` a
+    Rotation2d) every update takes dθ from its wrapped change and fits (dx, dy) to the
+    wheels; without one, all three come from the wheels (the layout must observe
+    rotation). Whether a gyro is used is fixed here: ``update`` and ``resetPosition``
+    must then always pass one, or never.
+    """
+
+    def __cinit__(self, *args, **kwargs):
+        self.prev = NULL
+
+    def __init__(self, DeadWheelKinematics kinematics not None, wheelPositions,
+                 gyroAngle=None, initialPose=None):
+        self._start_init()
+        kinematics._ready()
+        if gyroAngle is None:
+            if not kinematics.heading:
+                kinematics._need_heading("DeadWheelOdometry")
+        elif not isinstance(gyroAngle, Rotation2d):
+            raise TypeError(f"gyroAngle must be a Rotation2d or None, got {type_name(gyroAngle)}")
+        cdef pose2_t p = initial(initialPose)
+        cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kinematics.n)
+        if prev == NULL:
+            raise MemoryError()
+        try:
+            kinematics._read(wheelPositions, prev, "wheelPositions")
+        except BaseException:
+            PyMem_Free(prev)
+            raise
+        self.prev = prev
+        self.kin = kinematics
+        self.gyro = gyroAngle is not None
+        if self.gyro:
+            self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.pose = p
+        self.ready = True
+
+    def __dealloc__(self):
+        PyMem_Free(self.prev)
+
+    cdef int _gyro_arg(self, object gyroAngle, str call) except -1:
+        if self.gyro:
+            if not isinstance(gyroAngle, Rotation2d):
+                raise TypeError(f"{call}: this DeadWheelOdometry uses a gyro, so gyroAngle "
+                                f"must be a Rotation2d, got {type_name(gyroAngle)}")
+        elif gyroAngle is not None:
+            raise ValueError(f"{call}: this DeadWheelOdometry was constructed without a "
+                             "gyro, so gyroAngle must be None")
+        return 0
+
+    def resetPosition(self, wheelPositions, gyroAngle, Pose2d pose not None):
+        """Reset the pose, the wheel-position baselines and (with a gyro) the gyro
+        baseline; pass ``gyroAngle=None`` for an odometry without a gyro."""
+        cdef Py_ssize_t i
+        if not self.ready:
+            uninitialised(self)
+        self._gyro_arg(gyroAngle, "resetPosition")
+        self.kin._read(wheelPositions, self.kin.s, "wheelPositions")
+        for i in range(self.kin.n):
+            self.prev[i] = self.kin.s[i]
+        if self.gyro:
+            self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.pose = pose.p
+
+    def update(self, wheelPositions, gyroAngle=None):
+        """Integrate the wheel-distance changes (m) since the last call (and the gyro
+        change, with a gyro); return the new pose."""
+        cdef DeadWheelKinematics k = self.kin
+        cdef Py_ssize_t i
+        cdef double d, w = 0.0
+        cdef double r[3]
+        if not self.ready:
+            uninitialised(self)
+        self._gyro_arg(gyroAngle, "update")
+        k._read(wheelPositions, k.s, "wheelPositions")
+        for i in range(k.n):
+            d = k.s[i]
+            k.s[i] = d - self.prev[i]
+            self.prev[i] = d
+        if self.gyro:
+            w = gyro_change((<Rotation2d>gyroAngle).r, self.prev_gyro)
+            self.prev_gyro = (<Rotation2d>gyroAngle).r
+        deadwheel_solve(k.n, k.p3, k.p2, k.g, k.s, self.gyro, w, r)
+        self.pose = pose_transform_by(self.pose, twist_exp(r[0], r[1], r[2]))
         return new_pose(self.pose)

@@ -23,8 +23,8 @@ import numpy as np
 import drivekin
 import drivekin.wpistruct as wpistruct
 import registry as reg
-from registry import (Arr, Bytes, Const, Int, Num, Obj, Out, OutArr, OutBytes, OutRawArr,
-                      OutSeq, Prop, RawArr, Seq, Type)
+from registry import (Arr, Bytes, Const, Floats, Int, Num, Obj, Out, OutArr, OutBytes,
+                      OutRawArr, OutSeq, Prop, RawArr, Seq, Type)
 from support import (CLEAN, BadNumber, Boom, Fail, armed_gc, bound, describe, expect_clean,
                      finite, label, member_specs, outcome, receiver, short, snap)
 
@@ -160,6 +160,24 @@ def hostiles(k):
         h = _seq_hostiles(k)
     elif isinstance(k, Num):
         h = _num_hostiles(k)
+    elif isinstance(k, Floats):
+        def with_item(make):
+            def build():
+                v = k.valid()
+                v[-1] = make()
+                return v
+            return build
+        h = [("None", lambda: None, (), None), ("str", lambda: "abc", (), None),
+             ("float", lambda: 0.5, (), None), ("short", lambda: k.valid()[:-1], (), None),
+             ("long", lambda: k.valid() + [1.0], (), None), ("empty", list, (), None),
+             ("None-item", with_item(lambda: None), (), None),
+             ("str-item", with_item(lambda: "1.0"), (), None),
+             ("bool-item", with_item(lambda: True), (), None),
+             ("raising-float-item", with_item(BadNumber), (), None),
+             ("huge-int-item", with_item(lambda: 10 ** 400), (), None),
+             ("generator", lambda: (x for x in k.valid()), (), None),
+             ("object-array", lambda: np.array(k.valid(), dtype=object), (), None),
+             ("float32-array", lambda: np.array(k.valid(), dtype=np.float32), (), None)]
     elif isinstance(k, Int):
         h = [("None", lambda: None, (), None), ("float", lambda: 0.5, (), None),
              ("str", lambda: "abc", (), None), ("raising-index", BadNumber, (Boom,), None),
@@ -475,7 +493,7 @@ def group_gc():
         for si, sig in enumerate(spec):
             base = label(cls, name, si if len(spec) > 1 else None)
             for pos, kind in enumerate(sig.kinds):
-                if isinstance(kind, Seq):
+                if isinstance(kind, (Seq, Floats)):
                     for mode in MUTATIONS:
                         for fuse in (1, 2, 4):
                             cases[f"{base} arg{pos} finalizer-{mode} fuse={fuse}"] = \
@@ -781,6 +799,8 @@ def _leaves_replaced(x, value):
         return value
     if isinstance(x, drivekin.Translation2d):
         return drivekin.Translation2d(value, value)
+    if isinstance(x, drivekin.Pose2d):
+        return drivekin.Pose2d(value, value, x.getRotation())
     if isinstance(x, (tuple, list)):
         return type(x)(_leaves_replaced(i, value) for i in x)
     return x

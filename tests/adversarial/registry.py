@@ -23,6 +23,8 @@ import drivekin.wpistruct as wpistruct
 from drivekin import (
     ChassisAccelerations as CA,
     ChassisVelocities as CV,
+    DeadWheelKinematics,
+    DeadWheelOdometry,
     DifferentialDriveKinematics,
     DifferentialDriveOdometry,
     DifferentialDriveWheelAccelerations as DWA,
@@ -46,6 +48,7 @@ from drivekin import (
     Transform2d,
     Translation2d as T,
     Twist2d,
+    TwoDeadWheelOdometry,
 )
 
 N = 4  # modules of the registry's swerve drive
@@ -71,6 +74,15 @@ def _diffswerve() -> DSK:
     k = DSK(0.5, 0.25, 2.0)
     k.resetModulePosition(R(0.5), 1.0, -2.0)
     return k
+
+
+def _dead_wheels() -> DeadWheelKinematics:
+    # Three wheels, asymmetric, observable without a gyro.
+    return DeadWheelKinematics([Pose2d(0.0, 0.3, R(0.0)), Pose2d(0.1, -0.2, R(0.1)),
+                                Pose2d(-0.2, 0.05, R(np.pi / 2))])
+
+
+DEAD_WHEELS = 3
 
 
 VALID = {  # a fresh, valid, non-trivial instance of each class
@@ -102,6 +114,11 @@ VALID = {  # a fresh, valid, non-trivial instance of each class
         _mecanum(), R(GYRO0), MWP(0.0, 0.0, 0.0, 0.0), Pose2d(1.0, 2.0, R(0.5))),
     DifferentialDriveOdometry: lambda: DifferentialDriveOdometry(
         R(GYRO0), 0.0, 0.0, Pose2d(1.0, 2.0, R(0.5))),
+    DeadWheelKinematics: _dead_wheels,
+    DeadWheelOdometry: lambda: DeadWheelOdometry(
+        _dead_wheels(), [0.0] * DEAD_WHEELS, R(GYRO0), Pose2d(1.0, 2.0, R(0.5))),
+    TwoDeadWheelOdometry: lambda: TwoDeadWheelOdometry(
+        0.1, -0.2, 0.0, 0.0, R(GYRO0), Pose2d(1.0, 2.0, R(0.5))),
 }
 
 ALT = {  # a second valid instance, different from VALID's
@@ -152,11 +169,14 @@ def make(cls):
 IMMUTABLE = {T, R, Pose2d, Transform2d}
 INIT_ONCE = IMMUTABLE | {SwerveDriveKinematics, MecanumDriveKinematics,
                          DifferentialDriveKinematics, SwerveDriveOdometry,
-                         MecanumDriveOdometry, DifferentialDriveOdometry}
-KINEMATICS = {SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics}
+                         MecanumDriveOdometry, DifferentialDriveOdometry,
+                         DeadWheelKinematics, DeadWheelOdometry, TwoDeadWheelOdometry}
+KINEMATICS = {SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics,
+              DeadWheelKinematics}
+ODOMETRY = {SwerveDriveOdometry, MecanumDriveOdometry, DifferentialDriveOdometry,
+            DeadWheelOdometry, TwoDeadWheelOdometry}
 INIT_ONCE |= {DSK}
 KINEMATICS |= {DSK}
-ODOMETRY = {SwerveDriveOdometry, MecanumDriveOdometry, DifferentialDriveOdometry}
 
 
 # ---- argument kinds ---------------------------------------------------------------
@@ -197,6 +217,18 @@ class Seq(Kind):
         return [make(self.cls) for _ in range(self.n or N)]
 
 
+class WheelPoses(Seq):
+    """The registry's dead-wheel layout as a list of Pose2d (a list of equal poses would
+    be an unobservable layout, not a valid one)."""
+
+    def __init__(self):
+        super().__init__(Pose2d, n=None, least=2)
+
+    def valid(self):
+        poses = list(_dead_wheels().getWheelPoses())
+        return poses[::-1] if _alt() else poses
+
+
 class OutSeq(Seq):
     out = True
 
@@ -222,6 +254,18 @@ class Num(Kind):
         return -1.5 * self.value + 0.25 if _alt() else self.value
 
 
+class Floats(Kind):
+    """A list of ``n`` plain floats (one value per dead wheel). Only lists, tuples and
+    float64 arrays are accepted there, never other iterables."""
+
+    def __init__(self, n):
+        self.n = n
+
+    def valid(self):
+        v = [0.25 * (i + 1) for i in range(self.n)]
+        return [-x for x in v] if _alt() else v
+
+
 class Int(Kind):
     def __init__(self, value):
         self.value = value
@@ -237,7 +281,7 @@ class Arr(Kind):
 
     def __init__(self, shape, fill=None, rows_free=False, list_ok=False):
         self.shape, self.fill, self.rows_free = shape, fill, rows_free
-        self.list_ok = list_ok
+        self.list_ok = list_ok   # a plain list of the values is accepted here too
 
     def valid(self):
         if self.fill is not None:
@@ -555,6 +599,49 @@ API[DSK] = {
         S(OutSeq(SMV), NumSeq(), _LIMIT), S(OutArr((N, 2)), _RATES, _LIMIT),
         S(OutSeq(SMV), _RATES, _LIMIT), S(OutArr((N, 2)), NumSeq(), _LIMIT)],
 }
+_DW = Floats(DEAD_WHEELS)
+_DW_ARR = Arr((DEAD_WHEELS,), list_ok=True)
+_GYRO_NUM = Num(0.5, none_ok=True)
+
+
+def _dead_wheel_forward(out=None):
+    extra = (Out(out),) if out else ()
+    return [S(_DW, *extra), S(_DW, *extra, _GYRO_NUM), S(_DW_ARR, *extra, _GYRO_NUM)]
+
+
+_POSE_RESETS = {"getPose": S(), "resetPose": S(Obj(Pose2d)),
+                "resetTranslation": S(Obj(T)), "resetRotation": S(Obj(R))}
+API[DeadWheelKinematics] = {
+    "__init__": S(WheelPoses()), "__reduce__": S(),
+    "fromRoadRunner": S(NUM, NUM, NUM, Num(0.1)),
+    "fromRoadRunnerTwoWheel": S(NUM, NUM, Num(0.1)),
+    "getWheelPoses": S(), "requiresGyro": S(),
+    "toChassisVelocities": _dead_wheel_forward(),
+    "toChassisVelocitiesInto": _dead_wheel_forward(CV),
+    "toTwist2d": _dead_wheel_forward(),
+    "toChassisAccelerations": _dead_wheel_forward(),
+    "toWheelVelocities": S(Obj(CV)),
+    "toWheelVelocitiesInto": S(Obj(CV), OutArr((DEAD_WHEELS,))),
+    "toWheelAccelerations": S(Obj(CA)),
+}
+API[DeadWheelOdometry] = {
+    "__init__": [S(Obj(DeadWheelKinematics), _DW, Obj(R, none_ok=True),
+                   Obj(Pose2d, none_ok=True)),
+                 S(Obj(DeadWheelKinematics), _DW_ARR, Obj(R, none_ok=True))],
+    "resetPosition": [S(_DW, Obj(R), Obj(Pose2d)), S(_DW_ARR, Obj(R), Obj(Pose2d))],
+    "update": [S(_DW, Obj(R)), S(_DW_ARR, Obj(R))],
+    **_POSE_RESETS,
+}
+API[TwoDeadWheelOdometry] = {
+    "__init__": S(NUM, NUM, NUM, NUM, Obj(R), Obj(Pose2d, none_ok=True)),
+    "resetPosition": S(NUM, NUM, Obj(R), Obj(Pose2d)),
+    "update": S(NUM, NUM, Obj(R)),
+    "toChassisVelocities": S(NUM, NUM, NUM),
+    **_POSE_RESETS,
+}
+# The registry's dead-wheel layout must be the one the factories above describe.
+assert len(_dead_wheels().getWheelPoses()) == DEAD_WHEELS
+
 # SwerveDriveOdometry also takes the positions as an (N, 2) array.
 for _m in ("__init__", "resetPosition", "update"):
     _s = API[SwerveDriveOdometry][_m]

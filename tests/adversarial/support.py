@@ -98,6 +98,10 @@ def _odometry_probe(o):
                             for _ in range(reg.N)])
     elif isinstance(o, drivekin.MecanumDriveOdometry):
         pose = o.update(g, drivekin.MecanumDriveWheelPositions(0.0, 0.0, 0.0, 0.0))
+    elif isinstance(o, drivekin.DeadWheelOdometry):
+        pose = o.update([0.0] * reg.DEAD_WHEELS, g)
+    elif isinstance(o, drivekin.TwoDeadWheelOdometry):
+        pose = o.update(0.0, 0.0, g)
     else:
         pose = o.update(g, 0.0, 0.0)
     return (o.getPose().x, o.getPose().y, *_rot(o.getPose().getRotation()), pose.x)
@@ -120,8 +124,13 @@ FIELDS = {
         (t.x, t.y) for t in (k.getFrontLeft(), k.getFrontRight(), k.getRearLeft(),
                              k.getRearRight())),
     drivekin.DifferentialDriveKinematics: lambda k: k.trackwidth,
+    drivekin.DeadWheelKinematics: lambda k: (
+        tuple((p.x, p.y, *_rot(p.getRotation())) for p in k.getWheelPoses()),
+        k.requiresGyro()),
     **{c: _odometry_probe for c in ODOMETRY},
 }
+
+
 def _diffswerve(k):
     # Geometry, plus the reset offset seen through a probe at motor positions 0.
     p = k.toModulePosition(0.0, 0.0)

@@ -17,6 +17,7 @@ import pytest
 
 import drivekin
 from drivekin import (
+    DeadWheelKinematics,
     MecanumDriveKinematics,
     MecanumDriveWheelPositions,
     Pose2d,
@@ -32,6 +33,11 @@ PKG_DIR = Path(drivekin.__file__).resolve().parent
 def _kin4():
     return SwerveDriveKinematics(Translation2d(0.3, 0.3), Translation2d(0.3, -0.3),
                                  Translation2d(-0.3, 0.3), Translation2d(-0.3, -0.3))
+
+
+def _dead_wheel_poses():
+    return [Pose2d(0.0, 0.2, Rotation2d()), Pose2d(0.0, -0.2, Rotation2d()),
+            Pose2d(-0.1, 0.0, Rotation2d(0.0, 1.0))]
 
 
 # One valid value per annotation (as spelled in the stubs).
@@ -50,6 +56,9 @@ SAMPLES = {
         Translation2d(-0.3, 0.25), Translation2d(-0.3, -0.25)),
     "MecanumDriveWheelPositions": lambda: MecanumDriveWheelPositions(0.1, 0.2, 0.3, 0.4),
     "Sequence[Translation2d]": lambda: [Translation2d(0.3, 0.3), Translation2d(-0.3, -0.3)],
+    "Sequence[Pose2d]": lambda: _dead_wheel_poses(),
+    "DeadWheelKinematics": lambda: DeadWheelKinematics(_dead_wheel_poses()),
+    "Sequence[float] | npt.NDArray[np.float64]": lambda: [0.1, 0.2, 0.3],
     "Sequence[SwerveModulePosition] | npt.NDArray[np.float64]":
         lambda: [SwerveModulePosition(0.1, Rotation2d(0.2)) for _ in range(4)],
 }

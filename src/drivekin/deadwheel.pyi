@@ -1,0 +1,115 @@
+"""Dead-wheel (tracking-wheel) kinematics: any number of unpowered wheels at any poses.
+
+Units: m, m/s, m/s², rad, rad/s, rad/s². Robot frame: x forward, y left, CCW positive.
+
+A dead wheel touching the floor at (x, y) and rolling along φ reads the robot's velocity
+at that point projected on its rolling direction:
+
+    d = cos φ·(dx − y·dθ) + sin φ·(dy + x·dθ)
+
+Stacking the wheels gives d = M·t with t = (dx, dy, dθ). Without a gyro the wheels must
+observe all three components and t is the least-squares solution M⁺·d (exact for three
+wheels). With a gyro, dθ is taken from it and only (dx, dy) is fitted, which two
+non-parallel wheels always observe. Redundant wheels are averaged in by the least-squares
+fit, never ignored. Both pseudo-inverses are built once, at construction.
+"""
+
+# Hand-written stub for the compiled module drivekin.deadwheel (deadwheel.pyx). Every
+# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
+# they match the runtime ``__doc__`` and that no public name is missing on either side.
+
+from collections.abc import Sequence
+from typing import final
+
+import numpy as np
+import numpy.typing as npt
+
+from drivekin.geometry import Pose2d, Twist2d
+from drivekin.kinematics import ChassisAccelerations, ChassisVelocities
+
+_WheelReadings = Sequence[float] | npt.NDArray[np.float64]
+
+@final
+class DeadWheelKinematics:
+    """DeadWheelKinematics(wheelPoses)
+
+    Kinematics of N ≥ 2 dead (tracking) wheels. Each wheel is a Pose2d in the robot
+    frame: its translation is the contact point (m), its rotation the direction in which
+    the wheel's reading grows (0 for a wheel that reads forward motion, +90° for one that
+    reads leftward motion). Wheel values are passed everywhere as a list or tuple of
+    floats, or a 1-D float64 array, in the order of ``wheelPoses``.
+
+    The layout must observe (dx, dy) — at least two non-parallel wheels — or ValueError
+    names the direction it cannot see. Without a gyro it must also observe rotation (at
+    least three wheels whose lines do not all meet in one point); a layout that cannot
+    is valid, but every call must then pass the gyro (see :meth:`requiresGyro`).
+    """
+
+    def __init__(self, wheelPoses: Sequence[Pose2d]) -> None: ...
+    @staticmethod
+    def fromRoadRunner(
+        par0YTicks: float, par1YTicks: float, perpXTicks: float, inPerTick: float
+    ) -> DeadWheelKinematics:
+        """Three wheels from Road Runner 1.0's ``ThreeDeadWheelLocalizer`` parameters
+        (paste the tuned numbers as they are): the two parallel wheels' ``parYTicks`` and
+        the perpendicular wheel's ``perpXTicks`` (ticks), and ``inPerTick`` (inches per
+        tick). Wheels are in the order (par0, par1, perp).
+
+        Road Runner's model is par = dx + parYTicks·dθ, so ``parYTicks`` is the *negative*
+        of the wheel's physical y (its tuner reports a left wheel as negative); this
+        factory applies that sign. Feed readings in metres: ticks × inPerTick × 0.0254.
+        The twist is then Road Runner's, with dx and dy in metres instead of inches."""
+
+    @staticmethod
+    def fromRoadRunnerTwoWheel(
+        parYTicks: float, perpXTicks: float, inPerTick: float
+    ) -> DeadWheelKinematics:
+        """Two wheels (par, perp) from Road Runner 1.0's ``TwoDeadWheelLocalizer``
+        parameters (ticks, and inches per tick), used with the IMU as the gyro. Same
+        sign convention and units as :meth:`fromRoadRunner`."""
+
+    def getWheelPoses(self) -> tuple[Pose2d, ...]:
+        """Return the wheel poses (tuple of Pose2d, robot frame, m), constructor order."""
+
+    def requiresGyro(self) -> bool:
+        """True if the wheels alone cannot observe rotation (fewer than three wheels, or
+        all wheel lines meeting in one point): every call must then pass the gyro."""
+
+    def toChassisVelocities(
+        self, wheelVelocities: _WheelReadings, gyroRate: float | None = None
+    ) -> ChassisVelocities:
+        """Return the robot velocity (m/s, m/s, rad/s) from the wheels' surface velocities
+        (m/s). With ``gyroRate`` (rad/s) omega is the gyro's and (vx, vy) the wheels'
+        least-squares fit; without, all three come from the wheels."""
+
+    def toChassisVelocitiesInto(
+        self, wheelVelocities: _WheelReadings, out: ChassisVelocities, gyroRate: float | None = None
+    ) -> None:
+        """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+
+    def toWheelVelocities(self, chassisVelocities: ChassisVelocities) -> tuple[float, ...]:
+        """Return each wheel's surface velocity (tuple of floats, m/s) for a robot
+        velocity."""
+
+    def toWheelVelocitiesInto(
+        self, chassisVelocities: ChassisVelocities, out: npt.NDArray[np.float64]
+    ) -> None:
+        """Allocation-free :meth:`toWheelVelocities`: write into ``out``, a writeable
+        float64 array of shape (N,). Returns None."""
+
+    def toTwist2d(self, wheelDeltas: _WheelReadings, gyroDelta: float | None = None) -> Twist2d:
+        """Return the Twist2d (m, rad) for the wheel distance changes (m). With
+        ``gyroDelta`` (rad, the heading change; wrap it to (−π, π] yourself) dθ is the
+        gyro's and (dx, dy) the wheels' least-squares fit."""
+
+    def toChassisAccelerations(
+        self, wheelAccelerations: _WheelReadings, angularAcceleration: float | None = None
+    ) -> ChassisAccelerations:
+        """Return the robot acceleration (m/s², m/s², rad/s²) from the wheels' surface
+        accelerations (m/s²): the velocity map applied to accelerations (no centripetal
+        term). With ``angularAcceleration`` (rad/s²) alpha is fixed to it."""
+
+    def toWheelAccelerations(
+        self, chassisAccelerations: ChassisAccelerations
+    ) -> tuple[float, ...]:
+        """Return each wheel's surface acceleration (tuple of floats, m/s²)."""

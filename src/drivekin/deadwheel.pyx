@@ -1,0 +1,392 @@
+"""Dead-wheel (tracking-wheel) kinematics: any number of unpowered wheels at any poses.
+
+Units: m, m/s, m/s², rad, rad/s, rad/s². Robot frame: x forward, y left, CCW positive.
+
+A dead wheel touching the floor at (x, y) and rolling along φ reads the robot's velocity
+at that point projected on its rolling direction:
+
+    d = cos φ·(dx − y·dθ) + sin φ·(dy + x·dθ)
+
+Stacking the wheels gives d = M·t with t = (dx, dy, dθ). Without a gyro the wheels must
+observe all three components and t is the least-squares solution M⁺·d (exact for three
+wheels). With a gyro, dθ is taken from it and only (dx, dy) is fitted, which two
+non-parallel wheels always observe. Redundant wheels are averaged in by the least-squares
+fit, never ignored. Both pseudo-inverses are built once, at construction.
+"""
+cimport cython
+cimport numpy as cnp
+from cpython.mem cimport PyMem_Free, PyMem_Malloc
+from cpython.ref cimport Py_INCREF, PyObject
+from cpython.float cimport PyFloat_FromDouble
+from cpython.list cimport PyList_CheckExact
+from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
+from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
+from libc.math cimport M_PI, atan2, fabs, isfinite
+
+import numpy as np
+
+from drivekin._kernels cimport deadwheel_reading, deadwheel_solve
+from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_twist
+from drivekin.kinematics cimport (ChassisAccelerations, ChassisVelocities, _ChassisVector,
+                                  new_chassis_velocities, snapshot)
+from drivekin._errors import type_name
+
+cnp.import_array()
+
+# Singular values below this fraction of the largest (columns scaled to unit length)
+# count as zero: such a layout would turn encoder noise into errors ~1e8 times larger.
+cdef double RANK_TOL = 1e-8
+cdef double IN_TO_M = 0.0254
+
+
+cdef extern from *:
+    """
+    /* One wheel value: a float (or subclass, e.g. numpy.float64, whose value is read
+       without running Python code) or an exact int. Returns 1 for anything else and 2
+       for an int too large for a double. */
+    static inline int drivekin_read_number(PyObject *o, double *out) {
+        if (PyFloat_Check(o)) { *out = PyFloat_AS_DOUBLE(o); return 0; }
+        if (PyLong_CheckExact(o)) {
+            *out = PyLong_AsDouble(o);
+            if (*out == -1.0 && PyErr_Occurred()) { PyErr_Clear(); return 2; }
+            return 0;
+        }
+        return 1;
+    }
+    """
+    int read_number "drivekin_read_number"(PyObject* o, double* out) noexcept
+
+
+cdef inline double gyro_number(object value, str call) except? -1.0:
+    # Converted before any wheel value is read into scratch memory: __float__ of a
+    # user object is Python code, which must not run between reading and solving.
+    try:
+        return value
+    except TypeError:
+        raise TypeError(f"{call}: the gyro argument must be a number or None, got "
+                        f"{type_name(value)}") from None
+
+
+cdef str parallel_message(double c, double s):
+    cdef double deg = atan2(s, c) * 180.0 / M_PI
+    if fabs(s) < 1e-9:
+        what = "they all roll along x, so lateral (y) motion"
+    elif fabs(c) < 1e-9:
+        what = "they all roll along y, so forward (x) motion"
+    else:
+        what = (f"they all roll along {deg:.6g}°, so motion along {deg + 90.0:.6g}° "
+                "(robot frame)")
+    return f"all wheels are parallel: {what} cannot be observed, even with a gyro"
+
+
+cdef class DeadWheelKinematics:
+    """DeadWheelKinematics(wheelPoses)
+
+    Kinematics of N ≥ 2 dead (tracking) wheels. Each wheel is a Pose2d in the robot
+    frame: its translation is the contact point (m), its rotation the direction in which
+    the wheel's reading grows (0 for a wheel that reads forward motion, +90° for one that
+    reads leftward motion). Wheel values are passed everywhere as a list or tuple of
+    floats, or a 1-D float64 array, in the order of ``wheelPoses``.
+
+    The layout must observe (dx, dy) — at least two non-parallel wheels — or ValueError
+    names the direction it cannot see. Without a gyro it must also observe rotation (at
+    least three wheels whose lines do not all meet in one point); a layout that cannot
+    is valid, but every call must then pass the gyro (see :meth:`requiresGyro`).
+    """
+
+    def __cinit__(self, *args, **kwargs):
+        self.buf = NULL
+
+    cdef int _refuse_reinit(self) except -1:
+        if self.buf != NULL:
+            raise TypeError("DeadWheelKinematics is already initialised: __init__ cannot "
+                            "be called again")
+        return 0
+
+    def __init__(self, wheelPoses):
+        self._refuse_reinit()
+        poses = snapshot(wheelPoses, "DeadWheelKinematics() takes a sequence of Pose2d "
+                                     "wheel poses; wheelPoses")
+        cdef Py_ssize_t n = len(poses), i, k
+        if n < 2:
+            raise ValueError(f"dead-wheel kinematics needs at least 2 wheels, got {n}")
+        for i, p in enumerate(poses):
+            if type(p) is not Pose2d:
+                raise TypeError(f"wheel {i} must be a drivekin Pose2d (contact point in m, "
+                                f"rolling direction), got {type_name(p)}")
+            if not (isfinite((<Pose2d>p).p.t.x) and isfinite((<Pose2d>p).p.t.y)
+                    and isfinite((<Pose2d>p).p.r.c) and isfinite((<Pose2d>p).p.r.s)):
+                raise ValueError(f"wheel {i} pose must be finite, got {p!r}")
+        rows = np.empty((n, 3))
+        for i, p in enumerate(poses):
+            c, s = (<Pose2d>p).p.r.c, (<Pose2d>p).p.r.s
+            rows[i] = (c, s, (<Pose2d>p).p.t.x * s - (<Pose2d>p).p.t.y * c)
+        a = rows[:, :2]
+        sv = np.linalg.svd(a, compute_uv=False)
+        if not sv[1] > RANK_TOL * sv[0]:
+            raise ValueError(parallel_message(rows[0, 0], rows[0, 1]))
+        pa = np.linalg.pinv(a)
+        g = pa @ rows[:, 2]
+        # Rank of M with the lever arms measured in units of the layout's size, so that
+        # neither the choice of metres nor a small robot decides observability. Lever arms
+        # that vanish on that scale (every wheel line through one point) leave rotation
+        # about that point unobservable.
+        size = max(float(np.hypot((<Pose2d>p).p.t.x, (<Pose2d>p).p.t.y)) for p in poses)
+        scaled = rows.copy()
+        if size > 0.0:
+            scaled[:, 2] /= size
+        sv = np.linalg.svd(scaled, compute_uv=False)
+        heading = n >= 3 and sv[2] > RANK_TOL * sv[0]
+        if heading:
+            p3 = np.linalg.pinv(rows)
+            why = None
+        else:
+            p3 = np.zeros((3, n))
+            # The invisible rotation's centre, (g1, −g0); round-off below the layout's
+            # scale is printed as 0.
+            px, py = (0.0 if abs(v) <= 1e-12 * size else float(v) for v in (g[1], -g[0]))
+            why = (f"{n} wheels cannot observe rotation" if n < 3 else
+                   f"every wheel's line passes through ({px:.6g}, {py:.6g}) m, so a "
+                   "rotation about that point cannot be observed")
+        cdef double[:, ::1] mr = np.ascontiguousarray(rows)
+        cdef double[:, ::1] m3 = np.ascontiguousarray(p3)
+        cdef double[:, ::1] m2 = np.ascontiguousarray(pa)
+        # Reading a generic iterable ran Python code, which may have initialised this
+        # object meanwhile; committing now would leak and replace that state.
+        self._refuse_reinit()
+        cdef double* buf = <double*>PyMem_Malloc(sizeof(double) * 9 * n)
+        if buf == NULL:
+            raise MemoryError()
+        self.n = n
+        self.m = buf
+        self.p3 = buf + 3 * n
+        self.p2 = buf + 6 * n
+        self.s = buf + 8 * n
+        for i in range(n):
+            for k in range(3):
+                self.m[3 * i + k] = mr[i, k]
+                self.p3[k * n + i] = m3[k, i]
+            for k in range(2):
+                self.p2[k * n + i] = m2[k, i]
+        self.g[0] = g[0]
+        self.g[1] = g[1]
+        self.heading = heading
+        self.no_heading = why
+        self.poses = poses
+        # Set last: a non-NULL buf is what every method checks before computing.
+        self.buf = buf
+
+    def __dealloc__(self):
+        PyMem_Free(self.buf)
+
+    cdef int _ready(self) except -1:
+        if self.buf == NULL:
+            raise RuntimeError("DeadWheelKinematics.__init__ has not completed")
+        return 0
+
+    cdef int _need_heading(self, str call) except -1:
+        raise ValueError(f"{call} needs a gyro with this layout: {self.no_heading}")
+
+    cdef int _read(self, object values, double* out, str what) except -1:
+        """Copy the n wheel values into ``out`` (C memory). Runs no Python code: only
+        lists and tuples of numbers and float64 arrays are accepted."""
+        cdef Py_ssize_t i, size, stride
+        cdef int bad
+        cdef PyObject** items
+        cdef cnp.ndarray a
+        cdef char* data
+        if PyList_CheckExact(values) or PyTuple_CheckExact(values):
+            size = PySequence_Fast_GET_SIZE(values)
+            if size != self.n:
+                raise ValueError(f"{what} must hold {self.n} wheel values (one per wheel), "
+                                 f"got {size}")
+            items = PySequence_Fast_ITEMS(values)
+            for i in range(size):
+                bad = read_number(items[i], &out[i])
+                if bad == 1:
+                    raise TypeError(f"{what}[{i}] must be a float, got "
+                                    f"{type_name(<object>items[i])}")
+                if bad == 2:
+                    raise ValueError(f"{what}[{i}] is an int too large for a float")
+            return 0
+        if not cnp.PyArray_Check(values):
+            raise TypeError(f"{what} must be a list or tuple of {self.n} floats or a 1-D "
+                            f"float64 array, got {type_name(values)}")
+        a = <cnp.ndarray>values
+        if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
+            raise TypeError(f"{what} must have dtype float64 (native byte order), got {a.dtype}")
+        if cnp.PyArray_NDIM(a) != 1 or a.shape[0] != self.n:
+            raise ValueError(f"{what} must have shape ({self.n},), got {(<object>a).shape}")
+        if not cnp.PyArray_ISALIGNED(a):
+            raise ValueError(f"{what} must be aligned")
+        data = <char*>cnp.PyArray_DATA(a)
+        stride = cnp.PyArray_STRIDES(a)[0]
+        for i in range(self.n):
+            out[i] = (<double*>(data + i * stride))[0]
+        return 0
+
+    cdef double* _out_array(self, object out, str what) except NULL:
+        cdef cnp.ndarray a
+        if not cnp.PyArray_Check(out):
+            raise TypeError(f"{what} must be a float64 numpy array of shape ({self.n},), "
+                            f"got {type_name(out)}")
+        a = <cnp.ndarray>out
+        if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
+            raise TypeError(f"{what} must have dtype float64 (native byte order), got {a.dtype}")
+        if cnp.PyArray_NDIM(a) != 1 or a.shape[0] != self.n:
+            raise ValueError(f"{what} must have shape ({self.n},), got {(<object>a).shape}")
+        if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
+            raise ValueError(f"{what} must be C-contiguous and aligned")
+        if not cnp.PyArray_ISWRITEABLE(a):
+            raise ValueError(f"{what} must be writeable")
+        return <double*>cnp.PyArray_DATA(a)
+
+    cdef int _forward(self, object values, object gyro, str what, str call,
+                      double* out) except -1:
+        # The gyro argument first (converting it may run Python code), then the wheels
+        # into scratch, then the solve: nothing runs between reading and solving.
+        cdef double w = 0.0
+        self._ready()
+        if gyro is not None:
+            w = gyro_number(gyro, call)
+        elif not self.heading:
+            self._need_heading(call)
+        self._read(values, self.s, what)
+        deadwheel_solve(self.n, self.p3, self.p2, self.g, self.s, gyro is not None, w, out)
+        return 0
+
+    cdef tuple _inverse(self, _ChassisVector v):
+        # Each reading is computed as its float is created, from values copied into C
+        # locals first, so an allocation that runs a finalizer cannot change the result.
+        cdef double x = v.v.x, y = v.v.y, z = v.v.z
+        cdef tuple t = PyTuple_New(self.n)
+        cdef Py_ssize_t i
+        cdef object f
+        for i in range(self.n):
+            f = PyFloat_FromDouble(deadwheel_reading(self.m + 3 * i, x, y, z))
+            Py_INCREF(f)
+            PyTuple_SET_ITEM(t, i, f)
+        return t
+
+    cdef int _inverse_into(self, _ChassisVector v, object out, str what) except -1:
+        cdef double* o = self._out_array(out, what)
+        cdef double x = v.v.x, y = v.v.y, z = v.v.z
+        cdef Py_ssize_t i
+        for i in range(self.n):
+            o[i] = deadwheel_reading(self.m + 3 * i, x, y, z)
+        return 0
+
+    # -- construction from Road Runner 1.0's tuned parameters ---------------------------
+
+    @staticmethod
+    def fromRoadRunner(double par0YTicks, double par1YTicks, double perpXTicks,
+                       double inPerTick):
+        """Three wheels from Road Runner 1.0's ``ThreeDeadWheelLocalizer`` parameters
+        (paste the tuned numbers as they are): the two parallel wheels' ``parYTicks`` and
+        the perpendicular wheel's ``perpXTicks`` (ticks), and ``inPerTick`` (inches per
+        tick). Wheels are in the order (par0, par1, perp).
+
+        Road Runner's model is par = dx + parYTicks·dθ, so ``parYTicks`` is the *negative*
+        of the wheel's physical y (its tuner reports a left wheel as negative); this
+        factory applies that sign. Feed readings in metres: ticks × inPerTick × 0.0254.
+        The twist is then Road Runner's, with dx and dy in metres instead of inches."""
+        cdef double k = inPerTick * IN_TO_M
+        _check_ticks(inPerTick, par0YTicks=par0YTicks, par1YTicks=par1YTicks,
+                     perpXTicks=perpXTicks)
+        return DeadWheelKinematics((Pose2d(0.0, -par0YTicks * k, Rotation2d()),
+                                    Pose2d(0.0, -par1YTicks * k, Rotation2d()),
+                                    Pose2d(perpXTicks * k, 0.0, Rotation2d(0.0, 1.0))))
+
+    @staticmethod
+    def fromRoadRunnerTwoWheel(double parYTicks, double perpXTicks, double inPerTick):
+        """Two wheels (par, perp) from Road Runner 1.0's ``TwoDeadWheelLocalizer``
+        parameters (ticks, and inches per tick), used with the IMU as the gyro. Same
+        sign convention and units as :meth:`fromRoadRunner`."""
+        cdef double k = inPerTick * IN_TO_M
+        _check_ticks(inPerTick, parYTicks=parYTicks, perpXTicks=perpXTicks)
+        return DeadWheelKinematics((Pose2d(0.0, -parYTicks * k, Rotation2d()),
+                                    Pose2d(perpXTicks * k, 0.0, Rotation2d(0.0, 1.0))))
+
+    # -- queries --------------------------------------------------------------------------
+
+    def getWheelPoses(self):
+        """Return the wheel poses (tuple of Pose2d, robot frame, m), constructor order."""
+        self._ready()
+        return self.poses
+
+    def requiresGyro(self):
+        """True if the wheels alone cannot observe rotation (fewer than three wheels, or
+        all wheel lines meeting in one point): every call must then pass the gyro."""
+        self._ready()
+        return not self.heading
+
+    def __reduce__(self):
+        self._ready()
+        return (DeadWheelKinematics, (self.poses,))
+
+    def __repr__(self):
+        if self.buf == NULL:
+            return "<uninitialised DeadWheelKinematics>"
+        return f"DeadWheelKinematics({list(self.poses)!r})"
+
+    # -- forward and inverse maps ------------------------------------------------------
+
+    def toChassisVelocities(self, wheelVelocities, gyroRate=None):
+        """Return the robot velocity (m/s, m/s, rad/s) from the wheels' surface velocities
+        (m/s). With ``gyroRate`` (rad/s) omega is the gyro's and (vx, vy) the wheels'
+        least-squares fit; without, all three come from the wheels."""
+        cdef double r[3]
+        self._forward(wheelVelocities, gyroRate, "wheelVelocities", "toChassisVelocities", r)
+        return new_chassis_velocities(r[0], r[1], r[2])
+
+    def toChassisVelocitiesInto(self, wheelVelocities, ChassisVelocities out not None,
+                                gyroRate=None):
+        """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+        cdef double r[3]
+        self._forward(wheelVelocities, gyroRate, "wheelVelocities", "toChassisVelocitiesInto", r)
+        out.v.x = r[0]
+        out.v.y = r[1]
+        out.v.z = r[2]
+
+    def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
+        """Return each wheel's surface velocity (tuple of floats, m/s) for a robot
+        velocity."""
+        self._ready()
+        return self._inverse(chassisVelocities)
+
+    def toWheelVelocitiesInto(self, ChassisVelocities chassisVelocities not None, out):
+        """Allocation-free :meth:`toWheelVelocities`: write into ``out``, a writeable
+        float64 array of shape (N,). Returns None."""
+        self._ready()
+        self._inverse_into(chassisVelocities, out, "out")
+
+    def toTwist2d(self, wheelDeltas, gyroDelta=None):
+        """Return the Twist2d (m, rad) for the wheel distance changes (m). With
+        ``gyroDelta`` (rad, the heading change; wrap it to (−π, π] yourself) dθ is the
+        gyro's and (dx, dy) the wheels' least-squares fit."""
+        cdef double r[3]
+        self._forward(wheelDeltas, gyroDelta, "wheelDeltas", "toTwist2d", r)
+        return new_twist(r[0], r[1], r[2])
+
+    def toChassisAccelerations(self, wheelAccelerations, angularAcceleration=None):
+        """Return the robot acceleration (m/s², m/s², rad/s²) from the wheels' surface
+        accelerations (m/s²): the velocity map applied to accelerations (no centripetal
+        term). With ``angularAcceleration`` (rad/s²) alpha is fixed to it."""
+        cdef double r[3]
+        self._forward(wheelAccelerations, angularAcceleration, "wheelAccelerations",
+                      "toChassisAccelerations", r)
+        return ChassisAccelerations(r[0], r[1], r[2])
+
+    def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None):
+        """Return each wheel's surface acceleration (tuple of floats, m/s²)."""
+        self._ready()
+        return self._inverse(chassisAccelerations)
+
+
+def _check_ticks(double inPerTick, **ticks):
+    if not (isfinite(inPerTick) and inPerTick > 0.0):
+        raise ValueError(f"inPerTick must be a positive finite number of inches per tick, "
+                         f"got {inPerTick!r}")
+    for name, value in ticks.items():
+        if not isfinite(value):
+            raise ValueError(f"{name} must be finite (ticks), got {value!r}")
