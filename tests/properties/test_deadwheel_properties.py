@@ -263,15 +263,6 @@ def test_concurrent_wheel_lines_need_a_gyro(data, point):
     assert_needs_gyro(data.draw(concurrent_layouts(point)))
 
 
-SRC_BUG_CENTRE = (
-    "src bug: DeadWheelKinematics scales M's lever-arm column to unit length before the "
-    "rank test, so when every wheel line passes through the robot's centre that column "
-    "is pure rounding noise (x·sin φ − y·cos φ ≈ 1e-17 with cos 90° = 6e-17) and scaling "
-    "blows it up to rank 3: requiresGyro() is False and the gyro-less solve silently "
-    "reports ω ≈ 0 for a spin in place (numpy.pinv's own cut-off drops the noise)")
-
-
-@pytest.mark.xfail(strict=True, reason=SRC_BUG_CENTRE)
 def test_radial_wheels_need_a_gyro():
     # Reference §1.2's example of a singular layout: three wheels rolling radially.
     wheels = [(0.0, 0.2, 90.0), (0.2, 0.0, 0.0), (-0.2, 0.0, 180.0)]
@@ -281,7 +272,6 @@ def test_radial_wheels_need_a_gyro():
     assert_needs_gyro(wheels)
 
 
-@pytest.mark.xfail(strict=True, reason=SRC_BUG_CENTRE)
 @given(st.data())
 def test_wheel_lines_through_the_centre_need_a_gyro(data):
     assert_needs_gyro(data.draw(concurrent_layouts((0.0, 0.0))))
