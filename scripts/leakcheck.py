@@ -36,13 +36,13 @@ import tracemalloc
 import numpy as np
 
 from drivekin import (
-    ChassisAccelerations, ChassisVelocities, DifferentialDriveKinematics,
-    DifferentialDriveOdometry, DifferentialDriveWheelPositions,
+    ChassisAccelerations, ChassisVelocities, DeadWheelKinematics, DeadWheelOdometry,
+    DifferentialDriveKinematics, DifferentialDriveOdometry, DifferentialDriveWheelPositions,
     DifferentialDriveWheelVelocities, MecanumDriveKinematics, MecanumDriveOdometry,
     MecanumDriveWheelPositions, MecanumDriveWheelVelocities, Pose2d, Rotation2d,
     SwerveDriveKinematics, SwerveDriveOdometry, SwerveModuleAcceleration,
     SwerveModulePosition, SwerveModuleVelocity, Transform2d, Translation2d, Twist2d,
-    wpistruct,
+    TwoDeadWheelOdometry, wpistruct,
 )
 from drivekin.geometry import _rotation_from_cos_sin as rotation_from_cos_sin
 
@@ -86,6 +86,19 @@ distinct = itertools.count()
 # More modules than the desaturation's stack buffer holds: its heap path.
 many_states = [SwerveModuleVelocity(4.0 + i, Rotation2d(0.01 * i)) for i in range(40)]
 many_bad = many_states[:39] + [None]
+
+# Dead wheels: three that observe rotation, and two that need the gyro.
+DW_POSES = [Pose2d(0.0, 0.18, Rotation2d(0.0)), Pose2d(0.02, -0.16, Rotation2d(0.0)),
+            Pose2d(-0.1, 0.01, Rotation2d.fromDegrees(90.0))]
+deadwheel = DeadWheelKinematics(DW_POSES)
+deadwheel2 = DeadWheelKinematics.fromRoadRunnerTwoWheel(-2000.0, -1500.0, 0.002)
+dw_list = [0.1, -0.2, 0.3]
+dw_arr = np.array(dw_list)
+dw_strided = np.repeat(dw_arr, 2)[::2]
+out_dw = np.zeros(3)
+dw_odo = DeadWheelOdometry(deadwheel, dw_list)
+dw_gyro_odo = DeadWheelOdometry(deadwheel, dw_list, angle)
+two_dw_odo = TwoDeadWheelOdometry(0.1, -0.15, 0.0, 0.0, angle)
 
 
 class BadFloat:
@@ -178,6 +191,39 @@ OPERATIONS = [
     ("swerve __setstate__", lambda: swerve.__setstate__((angle,) * 4)),
     ("Pose2d(keywords)", lambda: Pose2d(translation=cor, rotation=angle)),
     ("pose.nearest", lambda: pose.nearest([pose, pose])),
+    ("deadwheel FK list", lambda: deadwheel.toChassisVelocities(dw_list)),
+    ("deadwheel FK ndarray", lambda: deadwheel.toChassisVelocities(dw_arr)),
+    ("deadwheel FK strided ndarray", lambda: deadwheel.toChassisVelocities(dw_strided)),
+    ("deadwheel FK gyro", lambda: deadwheel.toChassisVelocities(dw_list, 0.3)),
+    ("deadwheel FK 2 wheels gyro", lambda: deadwheel2.toChassisVelocities((0.1, 0.2), 0.3)),
+    ("deadwheel FK Into", lambda: deadwheel.toChassisVelocitiesInto(dw_list, out_cv)),
+    ("deadwheel FK Into gyro ndarray", lambda: deadwheel.toChassisVelocitiesInto(
+        dw_arr, out_cv, 0.3)),
+    ("deadwheel IK", lambda: deadwheel.toWheelVelocities(cv)),
+    ("deadwheel IK Into", lambda: deadwheel.toWheelVelocitiesInto(cv, out_dw)),
+    ("deadwheel toTwist2d", lambda: deadwheel.toTwist2d(dw_list)),
+    ("deadwheel toTwist2d gyro ndarray", lambda: deadwheel.toTwist2d(dw_arr, 0.02)),
+    ("deadwheel toChassisAccelerations", lambda: deadwheel.toChassisAccelerations(dw_list)),
+    ("deadwheel toWheelAccelerations", lambda: deadwheel.toWheelAccelerations(ca)),
+    ("deadwheel getWheelPoses", lambda: deadwheel.getWheelPoses()),
+    ("DeadWheelKinematics()", lambda: DeadWheelKinematics(DW_POSES), 100),
+    ("DeadWheelKinematics.fromRoadRunner", lambda: DeadWheelKinematics.fromRoadRunner(
+        -962.0, 912.0, -500.0, 0.002), 100),
+    ("DeadWheelKinematics.fromRoadRunnerTwoWheel", lambda: DeadWheelKinematics
+        .fromRoadRunnerTwoWheel(-962.0, -500.0, 0.002), 100),
+    ("copy.copy(deadwheel)", lambda: copy.copy(deadwheel), 100),
+    ("deadwheel odometry update list", lambda: dw_odo.update(dw_list)),
+    ("deadwheel odometry update ndarray", lambda: dw_odo.update(dw_arr)),
+    ("deadwheel odometry update gyro", lambda: dw_gyro_odo.update(dw_strided, angle)),
+    ("deadwheel odometry resetPosition", lambda: dw_gyro_odo.resetPosition(
+        dw_arr, angle, pose)),
+    ("DeadWheelOdometry()", lambda: DeadWheelOdometry(deadwheel, dw_list, angle, pose)),
+    ("two-dead-wheel odometry update", lambda: two_dw_odo.update(0.1, 0.2, angle)),
+    ("two-dead-wheel odometry resetPosition", lambda: two_dw_odo.resetPosition(
+        0.1, 0.2, angle, pose)),
+    ("two-dead-wheel toChassisVelocities", lambda: two_dw_odo.toChassisVelocities(
+        1.0, 0.5, 0.3)),
+    ("TwoDeadWheelOdometry()", lambda: TwoDeadWheelOdometry(0.1, -0.15, 0.0, 0.0, angle, pose)),
 ]
 
 # (name, callable, exception the call must raise)
@@ -238,6 +284,49 @@ ERRORS = [
     ("unpickle non-unit rotation", lambda: rotation_from_cos_sin(2.0, 0.0), ValueError),
     ("memoryview for an array", lambda: swerve.toChassisVelocities(
         memoryview(states_arr)), TypeError),
+    ("deadwheel FK short list", lambda: deadwheel.toChassisVelocities(dw_list[:2]), ValueError),
+    ("deadwheel FK None element", lambda: deadwheel.toChassisVelocities(
+        [0.1, None, 0.3]), TypeError),
+    ("deadwheel FK huge int", lambda: deadwheel.toChassisVelocities(
+        [0.1, 10 ** 400, 0.3]), ValueError),
+    ("deadwheel FK float32", lambda: deadwheel.toChassisVelocities(
+        dw_arr.astype(np.float32)), TypeError),
+    ("deadwheel FK generator", lambda: deadwheel.toChassisVelocities(
+        x for x in dw_list), TypeError),
+    ("deadwheel FK str gyro", lambda: deadwheel.toChassisVelocities(dw_list, "x"), TypeError),
+    ("deadwheel FK gyro raising __float__", lambda: deadwheel.toChassisVelocities(
+        dw_list, BadFloat()), ArithmeticError),
+    ("deadwheel FK needs a gyro", lambda: deadwheel2.toChassisVelocities(
+        [0.1, 0.2]), ValueError),
+    ("deadwheel IK Into wrong shape", lambda: deadwheel.toWheelVelocitiesInto(
+        cv, np.zeros(2)), ValueError),
+    ("deadwheel IK Into float32", lambda: deadwheel.toWheelVelocitiesInto(
+        cv, np.zeros(3, np.float32)), TypeError),
+    ("DeadWheelKinematics(parallel)", lambda: DeadWheelKinematics(
+        DW_POSES[:2] + [Pose2d(0.3, 0.0, Rotation2d.fromDegrees(180.0))]), ValueError),
+    ("DeadWheelKinematics(nan pose)", lambda: DeadWheelKinematics(
+        DW_POSES[:2] + [Pose2d(float("nan"), 0.0, angle)]), ValueError),
+    ("DeadWheelKinematics(None element)", lambda: DeadWheelKinematics(
+        DW_POSES[:2] + [None]), TypeError),
+    ("fromRoadRunner(inPerTick 0)", lambda: DeadWheelKinematics.fromRoadRunner(
+        -962.0, 912.0, -500.0, 0.0), ValueError),
+    ("deadwheel re-init", lambda: deadwheel.__init__(DW_POSES), TypeError),
+    ("uninitialised deadwheel", lambda: DeadWheelKinematics.__new__(
+        DeadWheelKinematics).toChassisVelocities(dw_list), RuntimeError),
+    ("deadwheel odometry update unexpected gyro", lambda: dw_odo.update(dw_list, angle),
+     ValueError),
+    ("deadwheel odometry update missing gyro", lambda: dw_gyro_odo.update(dw_list), TypeError),
+    ("deadwheel odometry update None element", lambda: dw_odo.update([0.1, 0.2, None]),
+     TypeError),
+    ("deadwheel odometry resetPosition float32", lambda: dw_gyro_odo.resetPosition(
+        dw_arr.astype(np.float32), angle, pose), TypeError),
+    ("DeadWheelOdometry(needs a gyro)", lambda: DeadWheelOdometry(deadwheel2, [0.0, 0.0]),
+     ValueError),
+    ("DeadWheelOdometry(bad wheels)", lambda: DeadWheelOdometry(
+        deadwheel, [0.0, None, 0.0], angle), TypeError),
+    ("DeadWheelOdometry re-init", lambda: dw_odo.__init__(deadwheel, dw_list), TypeError),
+    ("TwoDeadWheelOdometry(nan offset)", lambda: TwoDeadWheelOdometry(
+        float("nan"), 0.0, 0.0, 0.0, angle), ValueError),
 ]
 
 # --- differential swerve (drivekin.diffswerve) -----------------------------------------

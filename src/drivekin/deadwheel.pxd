@@ -20,7 +20,6 @@ cdef class DeadWheelKinematics:
     cdef int _ready(self) except -1
     cdef int _read(self, object values, double* out, str what) except -1
     cdef int _need_heading(self, str call) except -1
-    cdef double* _out_array(self, object out, str what) except NULL
     cdef int _forward(self, object values, object gyro, str what, str call,
                       double* out) except -1
     cdef tuple _inverse(self, _ChassisVector v)

@@ -95,7 +95,7 @@ class DeadWheelKinematics:
         self, chassisVelocities: ChassisVelocities, out: npt.NDArray[np.float64]
     ) -> None:
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``, a writeable
-        float64 array of shape (N,). Returns None."""
+        float64 array of shape (N,) (any stride). Returns None."""
 
     def toTwist2d(self, wheelDeltas: _WheelReadings, gyroDelta: float | None = None) -> Twist2d:
         """Return the Twist2d (m, rad) for the wheel distance changes (m). With

@@ -67,6 +67,23 @@ cdef inline double gyro_number(object value, str call) except? -1.0:
                         f"{type_name(value)}") from None
 
 
+cdef char* vector_data(object arr, Py_ssize_t n, bint writable, str what,
+                       Py_ssize_t* stride) except NULL:
+    """Validate a 1-D float64 array of n values (any stride; callers have checked
+    PyArray_Check) and return its data, with its stride in ``stride[0]``."""
+    cdef cnp.ndarray a = <cnp.ndarray>arr
+    if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
+        raise TypeError(f"{what} must have dtype float64 (native byte order), got {a.dtype}")
+    if cnp.PyArray_NDIM(a) != 1 or a.shape[0] != n:
+        raise ValueError(f"{what} must have shape ({n},), got {arr.shape}")
+    if not cnp.PyArray_ISALIGNED(a):
+        raise ValueError(f"{what} must be aligned")
+    if writable and not cnp.PyArray_ISWRITEABLE(a):
+        raise ValueError(f"{what} must be writeable")
+    stride[0] = cnp.PyArray_STRIDES(a)[0]
+    return <char*>cnp.PyArray_DATA(a)
+
+
 cdef str parallel_message(double c, double s):
     cdef double deg = atan2(s, c) * 180.0 / M_PI
     if fabs(s) < 1e-9:
@@ -193,7 +210,6 @@ cdef class DeadWheelKinematics:
         cdef Py_ssize_t i, size, stride
         cdef int bad
         cdef PyObject** items
-        cdef cnp.ndarray a
         cdef char* data
         if PyList_CheckExact(values) or PyTuple_CheckExact(values):
             size = PySequence_Fast_GET_SIZE(values)
@@ -212,34 +228,10 @@ cdef class DeadWheelKinematics:
         if not cnp.PyArray_Check(values):
             raise TypeError(f"{what} must be a list or tuple of {self.n} floats or a 1-D "
                             f"float64 array, got {type_name(values)}")
-        a = <cnp.ndarray>values
-        if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
-            raise TypeError(f"{what} must have dtype float64 (native byte order), got {a.dtype}")
-        if cnp.PyArray_NDIM(a) != 1 or a.shape[0] != self.n:
-            raise ValueError(f"{what} must have shape ({self.n},), got {(<object>a).shape}")
-        if not cnp.PyArray_ISALIGNED(a):
-            raise ValueError(f"{what} must be aligned")
-        data = <char*>cnp.PyArray_DATA(a)
-        stride = cnp.PyArray_STRIDES(a)[0]
+        data = vector_data(values, self.n, False, what, &stride)
         for i in range(self.n):
             out[i] = (<double*>(data + i * stride))[0]
         return 0
-
-    cdef double* _out_array(self, object out, str what) except NULL:
-        cdef cnp.ndarray a
-        if not cnp.PyArray_Check(out):
-            raise TypeError(f"{what} must be a float64 numpy array of shape ({self.n},), "
-                            f"got {type_name(out)}")
-        a = <cnp.ndarray>out
-        if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
-            raise TypeError(f"{what} must have dtype float64 (native byte order), got {a.dtype}")
-        if cnp.PyArray_NDIM(a) != 1 or a.shape[0] != self.n:
-            raise ValueError(f"{what} must have shape ({self.n},), got {(<object>a).shape}")
-        if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
-            raise ValueError(f"{what} must be C-contiguous and aligned")
-        if not cnp.PyArray_ISWRITEABLE(a):
-            raise ValueError(f"{what} must be writeable")
-        return <double*>cnp.PyArray_DATA(a)
 
     cdef int _forward(self, object values, object gyro, str what, str call,
                       double* out) except -1:
@@ -269,11 +261,14 @@ cdef class DeadWheelKinematics:
         return t
 
     cdef int _inverse_into(self, _ChassisVector v, object out, str what) except -1:
-        cdef double* o = self._out_array(out, what)
+        cdef Py_ssize_t i, stride
+        if not cnp.PyArray_Check(out):
+            raise TypeError(f"{what} must be a float64 numpy array of shape ({self.n},), "
+                            f"got {type_name(out)}")
+        cdef char* o = vector_data(out, self.n, True, what, &stride)
         cdef double x = v.v.x, y = v.v.y, z = v.v.z
-        cdef Py_ssize_t i
         for i in range(self.n):
-            o[i] = deadwheel_reading(self.m + 3 * i, x, y, z)
+            (<double*>(o + i * stride))[0] = deadwheel_reading(self.m + 3 * i, x, y, z)
         return 0
 
     # -- construction from Road Runner 1.0's tuned parameters ---------------------------
@@ -356,7 +351,7 @@ cdef class DeadWheelKinematics:
 
     def toWheelVelocitiesInto(self, ChassisVelocities chassisVelocities not None, out):
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``, a writeable
-        float64 array of shape (N,). Returns None."""
+        float64 array of shape (N,) (any stride). Returns None."""
         self._ready()
         self._inverse_into(chassisVelocities, out, "out")
 
