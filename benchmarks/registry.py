@@ -651,3 +651,82 @@ def values_agree(ref, got, tol=1e-9) -> bool:
         return True
     return len(ref) == len(got) and all(abs(a - b) <= tol * max(1.0, abs(a))
                                         for a, b in zip(ref, got))
+
+
+# ---------------------------------------------------------------------------------------
+# Dead wheels (drivekin-only: no robotpy peer). The odometry updates are held to 1.3× of
+# DifferentialDriveOdometry.update in the same run (issue 7), with the differential case's
+# inputs where they apply (one step's distances, gyro1). Three wheels: Road Runner's
+# standard layout (parallel wheels at y = ±7.1 in, perpendicular at x = −3.75 in).
+
+_RR_LAYOUT = (-7.1, 7.1, -3.75, 1.0)        # fromRoadRunner(par0Y, par1Y, perpX, inPerTick)
+_DW_READINGS = [0.0121, 0.0183, 0.0027]     # m, one step's distances (par0, par1, perp)
+
+
+def _dw_kin():
+    from drivekin import DeadWheelKinematics
+
+    return DeadWheelKinematics.fromRoadRunner(*_RR_LAYOUT)
+
+
+def _dw_odometry(dk, gyro, readings):
+    from drivekin import DeadWheelOdometry
+
+    return DeadWheelOdometry(_dw_kin(), readings([0.0, 0.0, 0.0]), dk.rot if gyro else None,
+                             dk.pose)
+
+
+def _np_readings(values):
+    import numpy as np
+
+    return np.array(values, dtype=np.float64)
+
+
+def _dw_case(gyro, readings=list, note=_ODO_NOTE):
+    stmt = "odo.update(pos, gyro)" if gyro else "odo.update(pos)"
+    return Case(stmt, lambda rp, dk: dict(odo=_dw_odometry(dk, gyro, readings),
+                                          pos=readings(_DW_READINGS), gyro=dk.gyro1),
+                value="dk_pose(odo.getPose())", note=note)
+
+
+def _two_dead_wheel_case(note=""):
+    return Case("odo.update(x, y, gyro)",
+                lambda rp, dk: dict(odo=dk.o.TwoDeadWheelOdometry(0.1, -0.15, 0.0, 0.0,
+                                                                  dk.rot, dk.pose),
+                                    x=dk.dpos1[0], y=dk.dpos1[1], gyro=dk.gyro1),
+                value="dk_pose(odo.getPose())", note=note)
+
+
+register(Operation(
+    key="deadwheel.odometry2", title="TwoDeadWheelOdometry.update(x, y, gyro)",
+    suite="deadwheel", robotpy=None,
+    facade=_two_dead_wheel_case(), alloc_free=_two_dead_wheel_case(_ODO_NOTE),
+    baseline="odometry.differential", baseline_targets=(1.3, 1.3)))
+
+register(Operation(
+    key="deadwheel.odometry3", title="DeadWheelOdometry.update (3 wheels, no gyro)",
+    suite="deadwheel", robotpy=None,
+    facade=_dw_case(False, note="pos: list of 3 floats, m"), alloc_free=_dw_case(False),
+    extras={"alloc_free[ndarray]": _dw_case(False, _np_readings,
+                                            note="pos: (3,) float64 ndarray")},
+    baseline="odometry.differential", baseline_targets=(1.3, 1.3)))
+
+register(Operation(
+    key="deadwheel.odometry3g", title="DeadWheelOdometry.update (3 wheels + gyro)",
+    suite="deadwheel", robotpy=None,
+    facade=_dw_case(True, note="pos: list of 3 floats, m; dθ from the gyro"),
+    alloc_free=_dw_case(True),
+    baseline="odometry.differential", baseline_targets=(1.3, 1.3)))
+
+register(Operation(
+    key="deadwheel.fk", title="DeadWheelKinematics.toChassisVelocities (3 wheels)",
+    suite="deadwheel", robotpy=None,
+    facade=Case("kin.toChassisVelocities(w)",
+                lambda rp, dk: dict(kin=_dw_kin(), w=[1.2, 1.5, 0.3]),
+                value="(lambda c: [c.vx, c.vy, c.omega])(kin.toChassisVelocities(w))",
+                note="w: list of 3 floats, m/s"),
+    alloc_free=Case("kin.toChassisVelocitiesInto(w, out)",
+                    lambda rp, dk: dict(kin=_dw_kin(), w=[1.2, 1.5, 0.3],
+                                        out=dk.k.ChassisVelocities()),
+                    value="[out.vx, out.vy, out.omega]", note="out: ChassisVelocities"),
+    baseline="mecanum.fk"))

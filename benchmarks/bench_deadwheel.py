@@ -1,0 +1,10 @@
+"""Dead-wheel kinematics and odometry (drivekin-only: no robotpy peer); cases in
+registry.py, absolute times and ratios to drivekin's DifferentialDriveOdometry.update in
+``ratio_table.py``.
+
+Run: `pytest benchmarks --benchmark-only` (from the repository root); see
+``_common.bench_tests`` for what is collected.
+"""
+from _common import bench_tests
+
+test_bench, test_values_agree = bench_tests("deadwheel")
