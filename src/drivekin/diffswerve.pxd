@@ -16,6 +16,8 @@ cdef struct dswerve_t:
     double r                     # wheel radius, m
     double kv                    # R_L / r: motor rad per m of wheel travel
     double s2                    # +1, or -1 when motor 2 is mounted reversed
+    double ira                   # 1 / R_A, for the inverse map
+    double ikv                   # 1 / kv, m of wheel travel per motor rad
 
 
 # ---------------------------------------------------------------------------------------
@@ -33,8 +35,8 @@ cdef inline void dswerve_module(const dswerve_t* g, double m1, double m2,
                                 double* v, double* w         # OUT, m/s and rad/s
                                 ) noexcept nogil:
     cdef double w2 = g.s2 * m2
-    w[0] = (m1 + w2) / g.ra
-    v[0] = (m1 - w2) / g.kv
+    w[0] = (m1 + w2) * g.ira
+    v[0] = (m1 - w2) * g.ikv
 
 cdef inline double clamp_abs(double x, double limit) noexcept nogil:
     # Rounding in a + (limit − |a|) can land one ulp past the limit; this puts it back.
