@@ -29,7 +29,7 @@ from drivekin._wheels cimport _WheelValues, install_bare_new
 from drivekin._kernels cimport clamp01, rot_rad
 from drivekin.geometry cimport Rotation2d, new_rotation
 from drivekin.kinematics cimport (SwerveModulePosition, SwerveModuleVelocity, _ModuleVector,
-                                  new_module_position)
+                                  float64_data, new_module_position)
 from drivekin._errors import type_name
 from drivekin._format import f2
 
@@ -195,28 +195,6 @@ cdef bint flag(object x, str name) except -1:
 
 cdef int uninitialised() except -1:
     raise RuntimeError("DifferentialSwerveModuleKinematics.__init__ has not completed")
-
-
-cdef double* float64_data(object arr, Py_ssize_t rows, Py_ssize_t cols, bint writable,
-                          str name) except NULL:
-    """Validate a float64 C-contiguous aligned native-endian numpy array of shape (rows,)
-    (cols = 0) or (rows, cols) (rows = -1: any) and return its data. Callers have checked
-    PyArray_Check(arr)."""
-    cdef cnp.ndarray a = <cnp.ndarray>arr
-    cdef int ndim = 1 if cols == 0 else 2
-    cdef str n
-    if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
-        raise TypeError(f"{name} must have dtype float64 (native byte order), got {a.dtype}")
-    if (cnp.PyArray_NDIM(a) != ndim or (rows >= 0 and a.shape[0] != rows)
-            or (cols > 0 and a.shape[1] != cols)):
-        n = str(rows) if rows >= 0 else "N"
-        raise ValueError(f"{name} must have shape {f'({n},)' if cols == 0 else f'({n}, {cols})'}, "
-                         f"got {(<object>a).shape}")
-    if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
-        raise ValueError(f"{name} must be C-contiguous and aligned")
-    if writable and not cnp.PyArray_ISWRITEABLE(a):
-        raise ValueError(f"{name} must be writeable")
-    return <double*>cnp.PyArray_DATA(a)
 
 
 cdef inline bint is_array(object x) noexcept:

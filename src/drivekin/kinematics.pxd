@@ -86,5 +86,7 @@ cdef class SwerveDriveKinematics:
     cdef int _read(self, object states, type cls, str what) except -1
 
 
-# Argument helper shared with the other drivetrain modules (see kinematics.pyx).
+# Argument helpers shared with the other drivetrain modules (see kinematics.pyx).
 cdef tuple snapshot(object seq, str what)
+cdef double* float64_data(object arr, Py_ssize_t rows, Py_ssize_t cols, bint writable,
+                          str name) except NULL

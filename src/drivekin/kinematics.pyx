@@ -531,14 +531,20 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
 # ---------------------------------------------------------------------------------------
 # Argument helpers shared by the kinematics classes
 
-cdef double* module_array(object arr, Py_ssize_t n, bint writable, str name) except NULL:
-    """Validate a (n, 2) float64 C-contiguous native-endian array and return its data
-    (n = -1 accepts any number of rows). Callers have checked PyArray_Check(arr)."""
+cdef double* float64_data(object arr, Py_ssize_t rows, Py_ssize_t cols, bint writable,
+                          str name) except NULL:
+    """Validate a float64 C-contiguous aligned native-endian numpy array of shape (rows,)
+    (cols = 0) or (rows, cols) (rows = -1: any) and return its data. Callers have checked
+    PyArray_Check(arr)."""
     cdef cnp.ndarray a = <cnp.ndarray>arr
+    cdef int ndim = 1 if cols == 0 else 2
+    cdef str n
     if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
         raise TypeError(f"{name} must have dtype float64 (native byte order), got {a.dtype}")
-    if cnp.PyArray_NDIM(a) != 2 or (n >= 0 and a.shape[0] != n) or a.shape[1] != 2:
-        raise ValueError(f"{name} must have shape ({n if n >= 0 else 'N'}, 2), "
+    if (cnp.PyArray_NDIM(a) != ndim or (rows >= 0 and a.shape[0] != rows)
+            or (cols > 0 and a.shape[1] != cols)):
+        n = str(rows) if rows >= 0 else "N"
+        raise ValueError(f"{name} must have shape {f'({n},)' if cols == 0 else f'({n}, {cols})'}, "
                          f"got {(<object>a).shape}")
     if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
         raise ValueError(f"{name} must be C-contiguous and aligned")
@@ -650,7 +656,7 @@ cdef object out_modules(object out, Py_ssize_t n, type cls, str what, double** d
     cdef object fast
     data[0] = NULL
     if not (PyTuple_CheckExact(out) or PyList_CheckExact(out)) and cnp.PyArray_Check(out):
-        data[0] = module_array(out, n, True, what)
+        data[0] = float64_data(out, n, 2, True, what)
         return None
     fast = as_fast(out, what)
     if PySequence_Fast_GET_SIZE(fast) != n:
@@ -894,7 +900,7 @@ cdef class SwerveDriveKinematics:
         cdef PyObject** items
         self._ready()
         if not (PyTuple_CheckExact(states) or PyList_CheckExact(states)) and cnp.PyArray_Check(states):
-            d = module_array(states, n, False, what)
+            d = float64_data(states, n, 2, False, what)
             for i in range(n):
                 self.s0[i] = d[2 * i]
                 self.s1[i] = cos(d[2 * i + 1])
@@ -1121,7 +1127,7 @@ cdef class SwerveDriveKinematics:
         cdef PyObject** items
         if not (PyTuple_CheckExact(moduleVelocities) or PyList_CheckExact(moduleVelocities)) \
                 and cnp.PyArray_Check(moduleVelocities):
-            d = module_array(moduleVelocities, -1, True, "moduleVelocities")
+            d = float64_data(moduleVelocities, -1, 2, True, "moduleVelocities")
             n = cnp.PyArray_DIM(<cnp.ndarray>moduleVelocities, 0)
             desaturate_factors(max_abs(n, d, 2), &p, &div, &mul)
             for i in range(n):
