@@ -102,6 +102,18 @@ class Translation2d:
     def toVector(self) -> npt.NDArray[np.float64]:
         """Return ``numpy.array([x, y])``."""
 
+    @overload
+    @staticmethod
+    def fromFeet(x: float, y: float) -> Translation2d:
+        """Translation2d.fromFeet(x, y) or Translation2d.fromFeet(distance, angle)
+
+        Return the translation (``x``, ``y``) given in feet, or the one of length
+        ``distance`` ft in the direction ``angle`` (a :class:`Rotation2d`), in metres
+        (1 ft = 0.3048 m; the same bits as robotpy-wpimath's ``Translation2d.fromFeet``)."""
+
+    @overload
+    @staticmethod
+    def fromFeet(distance: float, angle: Rotation2d, /) -> Translation2d: ...
     def __add__(self, other: Translation2d) -> Translation2d: ...
     def __sub__(self, other: Translation2d) -> Translation2d: ...
     def __neg__(self) -> Translation2d: ...
@@ -290,6 +302,12 @@ class Pose2d:
     def toMatrix(self) -> npt.NDArray[np.float64]:
         """Return the 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y], [0, 0, 1]]``."""
 
+    @staticmethod
+    def fromFeet(x: float, y: float, angle: Rotation2d | float) -> Pose2d:
+        """Return the pose at (``x``, ``y``) given in feet, in metres, with heading
+        ``angle`` (a :class:`Rotation2d`, or rad as a float); robotpy-wpimath's
+        ``Pose2d.fromFeet`` (1 ft = 0.3048 m, same bits)."""
+
     def __add__(self, other: Transform2d) -> Pose2d: ...
     def __sub__(self, other: Pose2d) -> Transform2d: ...
     def __mul__(self, other: float) -> Pose2d: ...
@@ -359,6 +377,12 @@ class Transform2d:
     def toMatrix(self) -> npt.NDArray[np.float64]:
         """Return the 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y], [0, 0, 1]]``."""
 
+    @staticmethod
+    def fromFeet(x: float, y: float, angle: Rotation2d | float) -> Transform2d:
+        """Return the transform with translation (``x``, ``y``) given in feet, in metres,
+        and rotation ``angle`` (a :class:`Rotation2d`, or rad as a float);
+        robotpy-wpimath's ``Transform2d.fromFeet`` (1 ft = 0.3048 m, same bits)."""
+
     def __add__(self, other: Transform2d) -> Transform2d: ...
     def __mul__(self, other: float) -> Transform2d: ...
     def __rmul__(self, other: float) -> Transform2d: ...
@@ -398,6 +422,12 @@ class Twist2d:
         """Return the Transform2d reached by following this arc from the origin.
 
         Uses the series form when ``|dtheta| < 1e-9``."""
+
+    @staticmethod
+    def fromFeet(dx: float = 0.0, dy: float = 0.0, dtheta: float = 0.0) -> Twist2d:
+        """Return the twist with ``dx``, ``dy`` given in feet (converted to m) and
+        ``dtheta`` in rad; robotpy-wpimath's ``Twist2d.fromFeet`` (1 ft = 0.3048 m, same
+        bits)."""
 
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]

@@ -53,6 +53,27 @@ cdef vec2_t vector2(object a) except *:
     return vec(a[0], a[1])
 
 
+# robotpy-wpimath's fromFeet factories convert through the C++ units library, which
+# multiplies by the numerator of 1 ft = 381/1250 m and then divides by the denominator;
+# the same two roundings give the same bits.
+cdef inline double feet_to_meters(double feet) noexcept nogil:
+    return feet * 381.0 / 1250.0
+
+
+cdef rot2_t feet_angle(object angle, str where) except *:
+    # The angle of Pose2d/Transform2d.fromFeet: a Rotation2d, or radians as a float
+    # (robotpy has both overloads).
+    cdef double rad
+    if isinstance(angle, Rotation2d):
+        return (<Rotation2d>angle).r
+    try:
+        rad = angle
+    except TypeError:
+        raise TypeError(f"{where} takes the angle as a drivekin Rotation2d or in rad "
+                        f"(float), got {type_name(angle)}") from None
+    return rot_rad(rad)
+
+
 # ---------------------------------------------------------------------------------------
 @cython.freelist(64)
 cdef class Translation2d:
@@ -222,6 +243,26 @@ cdef class Translation2d:
 
     def __str__(self):
         return f"Translation2d(X: {f2(self.v.x)}, Y: {f2(self.v.y)})"
+
+    @staticmethod
+    def fromFeet(double x, y):
+        """Translation2d.fromFeet(x, y) or Translation2d.fromFeet(distance, angle)
+
+        Return the translation (``x``, ``y``) given in feet, or the one of length
+        ``distance`` ft in the direction ``angle`` (a :class:`Rotation2d`), in metres
+        (1 ft = 0.3048 m; the same bits as robotpy-wpimath's ``Translation2d.fromFeet``)."""
+        cdef double d = feet_to_meters(x), fy
+        cdef Rotation2d a
+        if isinstance(y, Rotation2d):
+            a = <Rotation2d>y
+            return new_translation(vec(d * a.r.c, d * a.r.s))
+        try:
+            fy = y
+        except TypeError:
+            raise TypeError("Translation2d.fromFeet(x, y) takes y in ft (float), or "
+                            "(distance, angle) a drivekin Rotation2d; got "
+                            f"{type_name(y)}") from None
+        return new_translation(vec(d, feet_to_meters(fy)))
 
 
 # ---------------------------------------------------------------------------------------
@@ -632,6 +673,14 @@ cdef class Pose2d(_Frame2d):
             return self.minus(other)
         return NotImplemented
 
+    @staticmethod
+    def fromFeet(double x, double y, angle):
+        """Return the pose at (``x``, ``y``) given in feet, in metres, with heading
+        ``angle`` (a :class:`Rotation2d`, or rad as a float); robotpy-wpimath's
+        ``Pose2d.fromFeet`` (1 ft = 0.3048 m, same bits)."""
+        return new_pose(pose(vec(feet_to_meters(x), feet_to_meters(y)),
+                             feet_angle(angle, "Pose2d.fromFeet(x, y, angle)")))
+
 
 # ---------------------------------------------------------------------------------------
 cdef class Transform2d(_Frame2d):
@@ -681,6 +730,14 @@ cdef class Transform2d(_Frame2d):
         if isinstance(other, Transform2d):
             return self.plus(other)
         return NotImplemented
+
+    @staticmethod
+    def fromFeet(double x, double y, angle):
+        """Return the transform with translation (``x``, ``y``) given in feet, in metres,
+        and rotation ``angle`` (a :class:`Rotation2d`, or rad as a float);
+        robotpy-wpimath's ``Transform2d.fromFeet`` (1 ft = 0.3048 m, same bits)."""
+        return new_transform(pose(vec(feet_to_meters(x), feet_to_meters(y)),
+                                  feet_angle(angle, "Transform2d.fromFeet(x, y, angle)")))
 
 
 # ---------------------------------------------------------------------------------------
@@ -752,6 +809,13 @@ cdef class Twist2d:
 
     def __str__(self):
         return f"Twist2d(dX: {f2(self.t.dx)}, dY: {f2(self.t.dy)}, dTheta: {f2(self.t.dtheta)})"
+
+    @staticmethod
+    def fromFeet(double dx=0.0, double dy=0.0, double dtheta=0.0):
+        """Return the twist with ``dx``, ``dy`` given in feet (converted to m) and
+        ``dtheta`` in rad; robotpy-wpimath's ``Twist2d.fromFeet`` (1 ft = 0.3048 m, same
+        bits)."""
+        return new_twist(feet_to_meters(dx), feet_to_meters(dy), dtheta)
 
 
 # WPILib's named constants.
