@@ -74,3 +74,7 @@ __all__ += [
     "DifferentialSwerveModuleVelocities",
     "DifferentialSwerveMotorVelocities",
 ]
+# WPILib's Units helper class (drivekin.units).
+from drivekin.units import Units
+
+__all__ += ["Units"]

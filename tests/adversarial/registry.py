@@ -49,6 +49,7 @@ from drivekin import (
     Translation2d as T,
     Twist2d,
     TwoDeadWheelOdometry,
+    Units,
 )
 
 N = 4  # modules of the registry's swerve drive
@@ -467,6 +468,7 @@ API = {
         "getAngle": S(), "rotateBy": S(Obj(R)), "rotateAround": S(Obj(T), Obj(R)),
         "dot": S(Obj(T)), "cross": S(Obj(T)), "nearest": S(Seq(T, n=None, least=1)),
         "interpolate": S(Obj(T), NUM), "toVector": S(),
+        "fromFeet": [S(NUM, NUM), S(NUM, Obj(R, float_ok=True))],
     },
     R: {
         **_arith(R),
@@ -494,6 +496,7 @@ API = {
         "relativeTo": S(Obj(Pose2d)), "rotateBy": S(Obj(R)),
         "rotateAround": S(Obj(T), Obj(R)), "exp": S(Obj(Twist2d)), "log": S(Obj(Pose2d)),
         "nearest": S(Seq(Pose2d, n=None, least=1)), "interpolate": S(Obj(Pose2d), NUM),
+        "fromFeet": [S(NUM, NUM, Obj(R, float_ok=True)), S(NUM, NUM, NUM)],
     },
     Transform2d: {
         **_FRAME,
@@ -505,10 +508,12 @@ API = {
         "kZero": Const(Transform2d()),
         "inverse": S(), "plus": S(Obj(Transform2d)), "__add__": S(Obj(Transform2d)),
         "log": S(),
+        "fromFeet": [S(NUM, NUM, Obj(R, float_ok=True)), S(NUM, NUM, NUM)],
     },
     Twist2d: {
         "__init__": S(NUM, NUM, NUM), "__reduce__": S(), "__eq__": S(Obj(Twist2d)),
         "dx": Prop(NUM), "dy": Prop(NUM), "dtheta": Prop(NUM), "exp": S(),
+        "fromFeet": [S(), S(NUM, NUM, NUM)],
     },
     CV: {**_chassis(CV, ("vx", "vy", "omega")),
          "toTwist2d": S(NUM), "discretize": S(NUM), "discretizeInto": S(NUM, Out(CV))},
@@ -647,6 +652,19 @@ for _m in ("__init__", "resetPosition", "update"):
     _s = API[SwerveDriveOdometry][_m]
     API[SwerveDriveOdometry][_m] = [_s, Sig(*[(_MOD_ARR if isinstance(k, Seq) else k)
                                               for k in _s.kinds])]
+
+
+# Units: static methods only and no instances (like the Java class), so the receiver is the
+# class itself and the instance lifecycle cases do not apply (cases.NAMESPACES).
+NAMESPACES = {Units}
+VALID[Units] = lambda: Units
+API[Units] = {name: S(NUM) for name in (
+    "metersToFeet", "feetToMeters", "metersToInches", "inchesToMeters", "degreesToRadians",
+    "radiansToDegrees", "radiansToRotations", "degreesToRotations", "rotationsToDegrees",
+    "rotationsToRadians", "rotationsPerMinuteToRadiansPerSecond",
+    "radiansPerSecondToRotationsPerMinute", "milesPerHourToMetersPerSecond",
+    "metersPerSecondToMilesPerHour", "millisecondsToSeconds", "secondsToMilliseconds",
+    "kilogramsToLbs", "lbsToKilograms")}
 
 
 # ---- wpistruct --------------------------------------------------------------------
