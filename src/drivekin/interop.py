@@ -112,8 +112,18 @@ def _load() -> _Wpimath:
 
 # ---- drivekin -> wpimath ---------------------------------------------------------------
 
+def _check_unit(c: float, s: float, r: object, where: str) -> None:
+    # A rotation is a unit (cos, sin) pair, or the NaN pair of a non-finite angle. Both
+    # libraries store (0, 0) for Rotation2d(x, y) when hypot(x, y) overflows (x/inf);
+    # that is no rotation, and neither side can rebuild it from its pair.
+    if not (c != c and s != s) and not abs((c * c + s * s) - 1.0) <= 1e-9:
+        raise ValueError(f"{where}: this {_qualified(r)} stores (cos, sin) = ({c!r}, {s!r}), "
+                         "which is not a unit vector")
+
+
 def _rotation_to(r: Rotation2d, w: _Wpimath) -> Any:
     c, s = r.getCos(), r.getSin()
+    _check_unit(c, s, r, "toWpimath()")
     if c == c and s == s:
         # robotpy's Rotation2d(x, y) divides by hypot(x, y): exact whenever that is 1.0
         # (division by a positive number keeps the sign of zero, so == suffices here).
@@ -230,9 +240,7 @@ def _rotation_from(r: Any) -> Rotation2d:
     c, s = r.cos(), r.sin()
     # The stored pair is copied as is (a unit vector, or NaN for a non-finite angle).
     # Rotation2d(x, y) would renormalise it, and Rotation2d(angle) would recompute it.
-    if not (c != c and s != s) and not abs((c * c + s * s) - 1.0) <= 1e-9:
-        raise ValueError(f"fromWpimath(): this {_qualified(r)} stores (cos, sin) = "
-                         f"({c!r}, {s!r}), which is not a unit vector")
+    _check_unit(c, s, r, "fromWpimath()")
     return _rotation_from_cos_sin(c, s)  # type: ignore[no-any-return]
 
 
@@ -340,14 +348,21 @@ def _lookup(table: dict[type, Callable[..., Any]], obj: object) -> Callable[...,
     return None
 
 
+def _from_package(obj: object, package: str) -> bool:
+    # The class or one of its bases (a user's subclass of a robotpy class) is the package's.
+    for klass in type(obj).__mro__:
+        module = getattr(klass, "__module__", None) or ""
+        if module == package or module.startswith(package + "."):
+            return True
+    return False
+
+
 def _is_wpimath(obj: object) -> bool:
-    module = getattr(type(obj), "__module__", None) or ""
-    return module == "wpimath" or module.startswith("wpimath.")
+    return _from_package(obj, "wpimath")
 
 
 def _is_drivekin(obj: object) -> bool:
-    module = getattr(type(obj), "__module__", None) or ""
-    return module == "drivekin" or module.startswith("drivekin.")
+    return _from_package(obj, "drivekin")
 
 
 _STATEFUL = ("odometry and estimators are stateful and are not converted: build one from "
@@ -360,7 +375,7 @@ def _to_one(obj: object, where: str) -> Any:
         return fn(obj, _load())
     name = type(obj).__name__
     if isinstance(obj, (list, tuple)):
-        reason = "nested lists and tuples are not converted (one level only)"
+        reason = "only a plain list or tuple is converted, and only one level deep"
     elif _is_wpimath(obj):
         reason = "it is already a robotpy-wpimath object (fromWpimath converts to drivekin)"
     elif _is_drivekin(obj) and name in _NO_PEER_2027:
@@ -383,7 +398,7 @@ def _from_one(obj: object, where: str) -> Any:
         stateful = name.endswith(("Odometry", "Odometry3d", "PoseEstimator", "PoseEstimator3d"))
         reason = _STATEFUL if stateful else "drivekin has no counterpart of it"
     elif isinstance(obj, (list, tuple)):
-        reason = "nested lists and tuples are not converted (one level only)"
+        reason = "only a plain list or tuple is converted, and only one level deep"
     elif _is_drivekin(obj):
         reason = "it is already a drivekin object (toWpimath converts to robotpy-wpimath)"
     else:
