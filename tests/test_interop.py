@@ -454,6 +454,7 @@ def test_a_bad_item_is_named_by_index(wp):
     (DeadWheelKinematics([Pose2d(0.0, 0.3, Rotation2d()), Pose2d(0.0, -0.3, Rotation2d()),
                           Pose2d(-0.2, 0.0, Rotation2d(PI / 2))]), "no counterpart"),
     (DifferentialDriveOdometry(Rotation2d(), 0.0, 0.0), "stateful"),
+    (drivekin.DifferentialDrivePoseEstimator(Rotation2d(), 0.0, 0.0, Pose2d()), "stateful"),
     (None, "not a drivekin"), (1.5, "not a drivekin"), ("Pose2d", "not a drivekin"),
     (object(), "not a drivekin"),
 ])
@@ -478,6 +479,8 @@ def test_the_other_direction_is_refused_by_name(wp):
     (lambda g, k: g.Pose3d(), "no counterpart"),
     (lambda g, k: g.Translation3d(), "no counterpart"),
     (lambda g, k: k.DifferentialDriveOdometry(g.Rotation2d(), 0.0, 0.0), "stateful"),
+    (lambda g, k: __import__("wpimath.estimator").estimator.DifferentialDrivePoseEstimator(
+        k.DifferentialDriveKinematics(0.6), g.Rotation2d(), 0.0, 0.0, g.Pose2d()), "stateful"),
 ])
 def test_from_wpimath_refuses_what_drivekin_lacks(wp, make, needle):
     obj = make(wp.g, wp.k)

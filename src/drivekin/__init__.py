@@ -16,6 +16,14 @@ from drivekin.diffswerve import (
     DifferentialSwerveModuleVelocities,
     DifferentialSwerveMotorVelocities,
 )
+from drivekin.estimator import (
+    DeadWheelPoseEstimator,
+    DifferentialDrivePoseEstimator,
+    MathSharedStore,
+    MecanumDrivePoseEstimator,
+    SwerveDrivePoseEstimator,
+    TwoDeadWheelPoseEstimator,
+)
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.kinematics import (
     ChassisAccelerations,
@@ -46,13 +54,17 @@ __all__ = [
     "ChassisVelocities",
     "DeadWheelKinematics",
     "DeadWheelOdometry",
+    "DeadWheelPoseEstimator",
     "DifferentialDriveKinematics",
     "DifferentialDriveOdometry",
+    "DifferentialDrivePoseEstimator",
     "DifferentialDriveWheelAccelerations",
     "DifferentialDriveWheelPositions",
     "DifferentialDriveWheelVelocities",
+    "MathSharedStore",
     "MecanumDriveKinematics",
     "MecanumDriveOdometry",
+    "MecanumDrivePoseEstimator",
     "MecanumDriveWheelAccelerations",
     "MecanumDriveWheelPositions",
     "MecanumDriveWheelVelocities",
@@ -60,6 +72,7 @@ __all__ = [
     "Rotation2d",
     "SwerveDriveKinematics",
     "SwerveDriveOdometry",
+    "SwerveDrivePoseEstimator",
     "SwerveModuleAcceleration",
     "SwerveModulePosition",
     "SwerveModuleVelocity",
@@ -67,6 +80,7 @@ __all__ = [
     "Translation2d",
     "Twist2d",
     "TwoDeadWheelOdometry",
+    "TwoDeadWheelPoseEstimator",
 ]
 # Differential swerve pods (drivekin.diffswerve).
 __all__ += [

@@ -171,6 +171,17 @@ cdef inline twist2_t transform_log_angle(pose2_t tr, double theta) noexcept nogi
 cdef inline twist2_t transform_log(pose2_t tr) noexcept nogil:
     return transform_log_angle(tr, rot_radians(tr.r))
 
+cdef inline pose2_t pose_interpolate(pose2_t a, pose2_t b, double t) noexcept nogil:
+    # Pose2d.interpolate: along the constant-curvature arc from a to b; t < 0 gives a and
+    # t >= 1 gives b (WPILib's clamp); a NaN t propagates.
+    cdef twist2_t tw
+    if t < 0.0:
+        return a
+    if t >= 1.0:
+        return b
+    tw = transform_log(pose_relative_to(b, a))
+    return pose_transform_by(a, twist_exp(tw.dx * t, tw.dy * t, tw.dtheta * t))
+
 # ---------------------------------------------------------------------------------------
 # ChassisVelocities
 

@@ -16,16 +16,15 @@ fit, never ignored. Both pseudo-inverses are built once, at construction.
 cimport cython
 cimport numpy as cnp
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from cpython.ref cimport Py_INCREF, PyObject
+from cpython.ref cimport Py_INCREF
 from cpython.float cimport PyFloat_FromDouble
-from cpython.list cimport PyList_CheckExact
-from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
-from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
+from cpython.tuple cimport PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, atan2, fabs, isfinite
 
 import numpy as np
 
 from drivekin._kernels cimport deadwheel_reading, deadwheel_solve
+from drivekin._numbers cimport read_floats, vector_data
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_twist
 from drivekin.kinematics cimport (ChassisAccelerations, ChassisVelocities, _ChassisVector,
                                   new_chassis_velocities, snapshot)
@@ -39,24 +38,6 @@ cdef double RANK_TOL = 1e-8
 cdef double IN_TO_M = 0.0254
 
 
-cdef extern from *:
-    """
-    /* One wheel value: a float (or subclass, e.g. numpy.float64, whose value is read
-       without running Python code) or an exact int. Returns 1 for anything else and 2
-       for an int too large for a double. */
-    static inline int drivekin_read_number(PyObject *o, double *out) {
-        if (PyFloat_Check(o)) { *out = PyFloat_AS_DOUBLE(o); return 0; }
-        if (PyLong_CheckExact(o)) {
-            *out = PyLong_AsDouble(o);
-            if (*out == -1.0 && PyErr_Occurred()) { PyErr_Clear(); return 2; }
-            return 0;
-        }
-        return 1;
-    }
-    """
-    int read_number "drivekin_read_number"(PyObject* o, double* out) noexcept
-
-
 cdef inline double gyro_number(object value, str call) except? -1.0:
     # Converted before any wheel value is read into scratch memory: __float__ of a
     # user object is Python code, which must not run between reading and solving.
@@ -65,23 +46,6 @@ cdef inline double gyro_number(object value, str call) except? -1.0:
     except TypeError:
         raise TypeError(f"{call}: the gyro argument must be a number or None, got "
                         f"{type_name(value)}") from None
-
-
-cdef char* vector_data(object arr, Py_ssize_t n, bint writable, str what,
-                       Py_ssize_t* stride) except NULL:
-    """Validate a 1-D float64 array of n values (any stride; callers have checked
-    PyArray_Check) and return its data, with its stride in ``stride[0]``."""
-    cdef cnp.ndarray a = <cnp.ndarray>arr
-    if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
-        raise TypeError(f"{what} must have dtype float64 (native byte order), got {a.dtype}")
-    if cnp.PyArray_NDIM(a) != 1 or a.shape[0] != n:
-        raise ValueError(f"{what} must have shape ({n},), got {arr.shape}")
-    if not cnp.PyArray_ISALIGNED(a):
-        raise ValueError(f"{what} must be aligned")
-    if writable and not cnp.PyArray_ISWRITEABLE(a):
-        raise ValueError(f"{what} must be writeable")
-    stride[0] = cnp.PyArray_STRIDES(a)[0]
-    return <char*>cnp.PyArray_DATA(a)
 
 
 cdef str parallel_message(double c, double s):
@@ -205,33 +169,8 @@ cdef class DeadWheelKinematics:
         raise ValueError(f"{call} needs a gyro with this layout: {self.no_heading}")
 
     cdef int _read(self, object values, double* out, str what) except -1:
-        """Copy the n wheel values into ``out`` (C memory). Runs no Python code: only
-        lists and tuples of numbers and float64 arrays are accepted."""
-        cdef Py_ssize_t i, size, stride
-        cdef int bad
-        cdef PyObject** items
-        cdef char* data
-        if PyList_CheckExact(values) or PyTuple_CheckExact(values):
-            size = PySequence_Fast_GET_SIZE(values)
-            if size != self.n:
-                raise ValueError(f"{what} must hold {self.n} wheel values (one per wheel), "
-                                 f"got {size}")
-            items = PySequence_Fast_ITEMS(values)
-            for i in range(size):
-                bad = read_number(items[i], &out[i])
-                if bad == 1:
-                    raise TypeError(f"{what}[{i}] must be a float, got "
-                                    f"{type_name(<object>items[i])}")
-                if bad == 2:
-                    raise ValueError(f"{what}[{i}] is an int too large for a float")
-            return 0
-        if not cnp.PyArray_Check(values):
-            raise TypeError(f"{what} must be a list or tuple of {self.n} floats or a 1-D "
-                            f"float64 array, got {type_name(values)}")
-        data = vector_data(values, self.n, False, what, &stride)
-        for i in range(self.n):
-            out[i] = (<double*>(data + i * stride))[0]
-        return 0
+        """Copy the n wheel values into ``out`` (C memory), running no Python code."""
+        return read_floats(values, self.n, out, what, "wheel values (one per wheel)")
 
     cdef int _forward(self, object values, object gyro, str what, str call,
                       double* out) except -1:

@@ -12,7 +12,7 @@ import numpy as np
 
 from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t
 from drivekin._kernels cimport (
-    pose, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
+    pose, pose_interpolate, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
     rot_neg, rot_plus, rot_rad, rot_radians, rot_times, rot_xy, transform_inverse,
     transform_log, twist_exp, vec, vec_eq, vec_rotate,
 )
@@ -660,8 +660,7 @@ cdef class Pose2d(_Frame2d):
             return self
         if t >= 1.0:
             return endValue
-        cdef twist2_t tw = transform_log(pose_relative_to(endValue.p, self.p))
-        return new_pose(pose_transform_by(self.p, twist_exp(tw.dx * t, tw.dy * t, tw.dtheta * t)))
+        return new_pose(pose_interpolate(self.p, endValue.p, t))
 
     def __add__(self, other):
         if isinstance(other, Transform2d):

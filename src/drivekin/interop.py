@@ -382,7 +382,7 @@ def _to_one(obj: object, where: str) -> Any:
         reason = f"robotpy-wpimath 2026 has no {name} (it is new in WPILib 2027)"
     elif _is_drivekin(obj) and name in _NO_PEER_DRIVEKIN:
         reason = f"robotpy-wpimath 2026 has no counterpart of {name}"
-    elif _is_drivekin(obj) and name.endswith("Odometry"):
+    elif _is_drivekin(obj) and name.endswith(("Odometry", "PoseEstimator")):
         reason = _STATEFUL
     else:
         reason = "it is not a drivekin value or kinematics type"

@@ -1,10 +1,12 @@
-# Odometry for the three drivetrains (WPILib 2027 semantics): the pose is integrated from
-# wheel-position changes, with the heading change always taken from the gyro.
+# Odometry for every drivetrain (WPILib 2027 semantics): the pose is integrated from
+# wheel-position changes, with the heading change taken from the gyro (or, for dead wheels
+# without one, from the wheels). ``_step`` is ``update`` without building the returned
+# Pose2d, for the pose estimators.
 cimport cython
 from drivekin._types cimport pose2_t, rot2_t
 from drivekin.geometry cimport Rotation2d
 from drivekin.kinematics cimport SwerveDriveKinematics
-from drivekin.mecanum cimport MecanumDriveKinematics
+from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
 from drivekin.deadwheel cimport DeadWheelKinematics
 
 
@@ -18,21 +20,26 @@ cdef class _Odometry:
 cdef class SwerveDriveOdometry(_Odometry):
     cdef SwerveDriveKinematics kin
     cdef double* prev            # module distances at the last update, m (n values)
+    cdef int _step(self, Rotation2d gyroAngle, object modulePositions) except -1
 
 @cython.final
 cdef class MecanumDriveOdometry(_Odometry):
     cdef MecanumDriveKinematics kin
     cdef double prev[4]          # wheel distances at the last update, m
+    cdef int _step(self, Rotation2d gyroAngle, MecanumDriveWheelPositions wheelPositions) except -1
 
 @cython.final
 cdef class DifferentialDriveOdometry(_Odometry):
     cdef double prev_l, prev_r   # wheel distances at the last update, m
+    cdef int _step(self, Rotation2d gyroAngle, double leftDistance,
+                   double rightDistance) except -1
 
 @cython.final
 cdef class TwoDeadWheelOdometry(_Odometry):
     cdef double x_wheel_y        # xWheelYPos: y of the forward-facing wheel, m
     cdef double y_wheel_x        # yWheelXPos: x of the left-facing wheel, m
     cdef double prev_x, prev_y   # wheel distances at the last update, m
+    cdef int _step(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle) except -1
 
 @cython.final
 cdef class DeadWheelOdometry(_Odometry):
@@ -40,3 +47,4 @@ cdef class DeadWheelOdometry(_Odometry):
     cdef double* prev            # wheel distances at the last update, m (n values)
     cdef bint gyro               # fixed at construction: heading from a gyro
     cdef int _gyro_arg(self, object gyroAngle, str call) except -1
+    cdef int _step(self, object wheelPositions, object gyroAngle) except -1

@@ -116,6 +116,10 @@ cdef class SwerveDriveOdometry(_Odometry):
     def update(self, Rotation2d gyroAngle not None, modulePositions):
         """Integrate the module-distance changes since the last call (at the current module
         angles) and the gyro change; return the new pose."""
+        self._step(gyroAngle, modulePositions)
+        return new_pose(self.pose)
+
+    cdef int _step(self, Rotation2d gyroAngle, object modulePositions) except -1:
         cdef SwerveDriveKinematics k = self.kin
         cdef Py_ssize_t i
         cdef double d
@@ -129,7 +133,7 @@ cdef class SwerveDriveOdometry(_Odometry):
             self.prev[i] = d
         forward_solve(3, k.n, k.f1, k.s0, k.s1, k.s2, r)
         odometry_step(&self.pose, &self.prev_gyro, r[0], r[1], gyroAngle.r)
-        return new_pose(self.pose)
+        return 0
 
 
 cdef class MecanumDriveOdometry(_Odometry):
@@ -161,6 +165,10 @@ cdef class MecanumDriveOdometry(_Odometry):
                MecanumDriveWheelPositions wheelPositions not None):
         """Integrate the wheel-distance changes since the last call and the gyro change;
         return the new pose."""
+        self._step(gyroAngle, wheelPositions)
+        return new_pose(self.pose)
+
+    cdef int _step(self, Rotation2d gyroAngle, MecanumDriveWheelPositions wheelPositions) except -1:
         cdef double d[4]
         cdef double r[3]
         cdef Py_ssize_t i
@@ -172,7 +180,7 @@ cdef class MecanumDriveOdometry(_Odometry):
         self.prev = w.w
         mat_vec(3, 4, self.kin.f, d, r)
         odometry_step(&self.pose, &self.prev_gyro, r[0], r[1], gyroAngle.r)
-        return new_pose(self.pose)
+        return 0
 
 
 cdef class DifferentialDriveOdometry(_Odometry):
@@ -204,13 +212,18 @@ cdef class DifferentialDriveOdometry(_Odometry):
     def update(self, Rotation2d gyroAngle not None, double leftDistance, double rightDistance):
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
+        self._step(gyroAngle, leftDistance, rightDistance)
+        return new_pose(self.pose)
+
+    cdef int _step(self, Rotation2d gyroAngle, double leftDistance,
+                   double rightDistance) except -1:
         if not self.ready:
             uninitialised(self)
         cdef double dl = leftDistance - self.prev_l, dr = rightDistance - self.prev_r
         self.prev_l = leftDistance
         self.prev_r = rightDistance
         odometry_step(&self.pose, &self.prev_gyro, (dl + dr) / 2.0, 0.0, gyroAngle.r)
-        return new_pose(self.pose)
+        return 0
 
 
 cdef class TwoDeadWheelOdometry(_Odometry):
@@ -252,6 +265,10 @@ cdef class TwoDeadWheelOdometry(_Odometry):
     def update(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle not None):
         """Integrate the wheel-distance changes (m) since the last call and the gyro
         change; return the new pose."""
+        self._step(xWheelPos, yWheelPos, gyroAngle)
+        return new_pose(self.pose)
+
+    cdef int _step(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle) except -1:
         if not self.ready:
             uninitialised(self)
         cdef double dtheta = gyro_change(gyroAngle.r, self.prev_gyro)
@@ -261,7 +278,7 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         self.prev_y = yWheelPos
         self.prev_gyro = gyroAngle.r
         self.pose = pose_transform_by(self.pose, twist_exp(dx, dy, dtheta))
-        return new_pose(self.pose)
+        return 0
 
     def toChassisVelocities(self, double vx, double vy, double omega):
         """Return the robot velocity from the forward wheel's and left wheel's surface
@@ -344,6 +361,10 @@ cdef class DeadWheelOdometry(_Odometry):
     def update(self, wheelPositions, gyroAngle=None):
         """Integrate the wheel-distance changes (m) since the last call (and the gyro
         change, with a gyro); return the new pose."""
+        self._step(wheelPositions, gyroAngle)
+        return new_pose(self.pose)
+
+    cdef int _step(self, object wheelPositions, object gyroAngle) except -1:
         cdef DeadWheelKinematics k = self.kin
         cdef Py_ssize_t i
         cdef double d, w = 0.0
@@ -361,4 +382,4 @@ cdef class DeadWheelOdometry(_Odometry):
             self.prev_gyro = (<Rotation2d>gyroAngle).r
         deadwheel_solve(k.n, k.p3, k.p2, k.g, k.s, self.gyro, w, r)
         self.pose = pose_transform_by(self.pose, twist_exp(r[0], r[1], r[2]))
-        return new_pose(self.pose)
+        return 0

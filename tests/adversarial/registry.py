@@ -25,6 +25,12 @@ from drivekin import (
     ChassisVelocities as CV,
     DeadWheelKinematics,
     DeadWheelOdometry,
+    DeadWheelPoseEstimator,
+    DifferentialDrivePoseEstimator,
+    MathSharedStore,
+    MecanumDrivePoseEstimator,
+    SwerveDrivePoseEstimator,
+    TwoDeadWheelPoseEstimator,
     DifferentialDriveKinematics,
     DifferentialDriveOdometry,
     DifferentialDriveWheelAccelerations as DWA,
@@ -259,8 +265,8 @@ class Floats(Kind):
     """A list of ``n`` plain floats (one value per dead wheel). Only lists, tuples and
     float64 arrays are accepted there, never other iterables."""
 
-    def __init__(self, n):
-        self.n = n
+    def __init__(self, n, none_ok=False):
+        self.n, self.none_ok = n, none_ok
 
     def valid(self):
         v = [0.25 * (i + 1) for i in range(self.n)]
@@ -644,6 +650,99 @@ API[TwoDeadWheelOdometry] = {
     "toChassisVelocities": S(NUM, NUM, NUM),
     **_POSE_RESETS,
 }
+# ---- pose estimators ----------------------------------------------------------------
+# Each VALID estimator has one odometry sample at t = 0 (so sampleAt and vision
+# measurements have history to work on); its readings are the constructor's, so the
+# registry's update calls are valid.
+
+_STD = Floats(3)
+
+
+def _estimator(make, *update):
+    def build():
+        e = make()
+        e.updateWithTime(0.0, *update)
+        return e
+    return build
+
+
+VALID[SwerveDrivePoseEstimator] = _estimator(
+    lambda: SwerveDrivePoseEstimator(_swerve(), R(GYRO0), [SMP(0.0, R(0.0)) for _ in range(N)],
+                                     Pose2d(1.0, 2.0, R(0.5))),
+    R(GYRO0), [SMP(0.0, R(0.0)) for _ in range(N)])
+VALID[MecanumDrivePoseEstimator] = _estimator(
+    lambda: MecanumDrivePoseEstimator(_mecanum(), R(GYRO0), MWP(0.0, 0.0, 0.0, 0.0),
+                                      Pose2d(1.0, 2.0, R(0.5))),
+    R(GYRO0), MWP(0.0, 0.0, 0.0, 0.0))
+VALID[DifferentialDrivePoseEstimator] = _estimator(
+    lambda: DifferentialDrivePoseEstimator(R(GYRO0), 0.0, 0.0, Pose2d(1.0, 2.0, R(0.5))),
+    R(GYRO0), 0.0, 0.0)
+VALID[TwoDeadWheelPoseEstimator] = _estimator(
+    lambda: TwoDeadWheelPoseEstimator(0.1, -0.2, 0.0, 0.0, R(GYRO0), Pose2d(1.0, 2.0, R(0.5))),
+    0.0, 0.0, R(GYRO0))
+VALID[DeadWheelPoseEstimator] = _estimator(
+    lambda: DeadWheelPoseEstimator(_dead_wheels(), [0.0] * DEAD_WHEELS, R(GYRO0),
+                                   Pose2d(1.0, 2.0, R(0.5))),
+    [0.0] * DEAD_WHEELS, R(GYRO0))
+VALID[MathSharedStore] = MathSharedStore
+ESTIMATORS = {SwerveDrivePoseEstimator, MecanumDrivePoseEstimator,
+              DifferentialDrivePoseEstimator, TwoDeadWheelPoseEstimator, DeadWheelPoseEstimator}
+INIT_ONCE |= ESTIMATORS
+STATEFUL = ODOMETRY | ESTIMATORS   # no value semantics: not copyable, no str of values
+NAMESPACES = {MathSharedStore}     # static methods only; the clock is not deterministic
+
+
+def _estimator_api(init, update_kinds, reset_kinds):
+    return {
+        "__init__": init,
+        "update": S(*update_kinds), "updateWithTime": S(Num(1.0), *update_kinds),
+        "resetPosition": S(*reset_kinds),
+        "getEstimatedPosition": S(), "sampleAt": S(NUM),
+        "setVisionMeasurementStdDevs": [S(_STD), S(Arr((3,), list_ok=True))],
+        "addVisionMeasurement": [S(Obj(Pose2d), NUM),
+                                 S(Obj(Pose2d), NUM, Floats(3, none_ok=True))],
+        **{k: v for k, v in _POSE_RESETS.items() if k != "getPose"},
+    }
+
+
+API[SwerveDrivePoseEstimator] = _estimator_api(
+    [S(Obj(SwerveDriveKinematics), Obj(R), Seq(SMP), Obj(Pose2d)),
+     S(Obj(SwerveDriveKinematics), Obj(R), Seq(SMP), Obj(Pose2d), _STD, _STD)],
+    (Obj(R), Seq(SMP)), (Obj(R), Seq(SMP), Obj(Pose2d)))
+API[MecanumDrivePoseEstimator] = _estimator_api(
+    [S(Obj(MecanumDriveKinematics), Obj(R), Obj(MWP), Obj(Pose2d)),
+     S(Obj(MecanumDriveKinematics), Obj(R), Obj(MWP), Obj(Pose2d), _STD, _STD)],
+    (Obj(R), Obj(MWP)), (Obj(R), Obj(MWP), Obj(Pose2d)))
+API[DifferentialDrivePoseEstimator] = _estimator_api(
+    [S(Obj(R), NUM, NUM, Obj(Pose2d)), S(Obj(R), NUM, NUM, Obj(Pose2d), _STD, _STD)],
+    (Obj(R), NUM, NUM), (Obj(R), NUM, NUM, Obj(Pose2d)))
+API[DifferentialDrivePoseEstimator]["update"] = [S(Obj(R), NUM, NUM), S(Obj(R), Obj(DWP))]
+API[DifferentialDrivePoseEstimator]["updateWithTime"] = [S(Num(1.0), Obj(R), NUM, NUM),
+                                                         S(Num(1.0), Obj(R), Obj(DWP))]
+API[DifferentialDrivePoseEstimator]["resetPosition"] = [S(Obj(R), NUM, NUM, Obj(Pose2d)),
+                                                        S(Obj(R), Obj(DWP), Obj(Pose2d))]
+API[TwoDeadWheelPoseEstimator] = _estimator_api(
+    [S(NUM, NUM, NUM, NUM, Obj(R), Obj(Pose2d)),
+     S(NUM, NUM, NUM, NUM, Obj(R), Obj(Pose2d), _STD, _STD)],
+    (NUM, NUM, Obj(R)), (NUM, NUM, Obj(R), Obj(Pose2d)))
+API[DeadWheelPoseEstimator] = _estimator_api(
+    [S(Obj(DeadWheelKinematics), _DW, Obj(R, none_ok=True), Obj(Pose2d, none_ok=True)),
+     S(Obj(DeadWheelKinematics), _DW, Obj(R, none_ok=True), Obj(Pose2d, none_ok=True),
+       _STD, _STD)],
+    (_DW, Obj(R)), (_DW, Obj(R), Obj(Pose2d)))
+
+
+class ClockSource(Kind):
+    """MathSharedStore's timestamp source: the valid call restores the default clock
+    (None); hostile sources are not generated, as a bad clock would only break the other
+    cases run in the same process (tests/test_estimator.py covers them)."""
+
+    def valid(self):
+        return None
+
+
+API[MathSharedStore] = {"getTimestamp": S(), "setTimestampSource": S(ClockSource())}
+
 # The registry's dead-wheel layout must be the one the factories above describe.
 assert len(_dead_wheels().getWheelPoses()) == DEAD_WHEELS
 
@@ -655,8 +754,8 @@ for _m in ("__init__", "resetPosition", "update"):
 
 
 # Units: static methods only and no instances (like the Java class), so the receiver is the
-# class itself and the instance lifecycle cases do not apply (cases.NAMESPACES).
-NAMESPACES = {Units}
+# class itself and the instance lifecycle cases do not apply.
+NAMESPACES |= {Units}
 VALID[Units] = lambda: Units
 API[Units] = {name: S(NUM) for name in (
     "metersToFeet", "feetToMeters", "metersToInches", "inchesToMeters", "degreesToRadians",

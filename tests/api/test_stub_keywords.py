@@ -59,6 +59,9 @@ SAMPLES = {
     "Sequence[Pose2d]": lambda: _dead_wheel_poses(),
     "DeadWheelKinematics": lambda: DeadWheelKinematics(_dead_wheel_poses()),
     "Sequence[float] | npt.NDArray[np.float64]": lambda: [0.1, 0.2, 0.3],
+    "_ModulePositions": lambda: [SwerveModulePosition(0.1, Rotation2d(0.2)) for _ in range(4)],
+    "_WheelReadings": lambda: [0.1, 0.2, 0.3],
+    "_StdDevs": lambda: (0.1, 0.2, 0.3),
     "Sequence[SwerveModulePosition] | npt.NDArray[np.float64]":
         lambda: [SwerveModulePosition(0.1, Rotation2d(0.2)) for _ in range(4)],
 }
@@ -112,5 +115,22 @@ def test_stub_keywords_are_accepted(cls_name, args):
 
 
 def _state(obj):
-    # Odometry objects have no value repr; their pose is what the arguments set.
+    # Odometry objects and estimators have no value repr; their pose is what the
+    # arguments set (an estimator's gains show in a vision measurement's effect).
+    if hasattr(obj, "getEstimatedPosition"):
+        obj.updateWithTime(0.0, *_UPDATE_ARGS[type(obj).__name__]())
+        obj.addVisionMeasurement(Pose2d(3.0, -1.0, Rotation2d(1.0)), 0.0)
+        return repr(obj.getEstimatedPosition())
     return repr(obj.getPose()) if hasattr(obj, "getPose") else repr(obj)
+
+
+# Arguments of an update that leaves the estimators above where they were built.
+_UPDATE_ARGS = {
+    "SwerveDrivePoseEstimator": lambda: (
+        Rotation2d(0.4), [SwerveModulePosition(0.1, Rotation2d(0.2)) for _ in range(4)]),
+    "MecanumDrivePoseEstimator": lambda: (
+        Rotation2d(0.4), MecanumDriveWheelPositions(0.1, 0.2, 0.3, 0.4)),
+    "DifferentialDrivePoseEstimator": lambda: (Rotation2d(0.4), 0.75, 0.75),
+    "TwoDeadWheelPoseEstimator": lambda: (0.75, 0.75, Rotation2d(0.4)),
+    "DeadWheelPoseEstimator": lambda: ([0.1, 0.2, 0.3], Rotation2d(0.4)),
+}

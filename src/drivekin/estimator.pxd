@@ -1,0 +1,73 @@
+# Pose estimators: odometry fused with vision measurements (WPILib 2027's PoseEstimator).
+cimport cython
+from drivekin._types cimport pose2_t, rot2_t
+from drivekin.geometry cimport Pose2d, Rotation2d
+from drivekin.mecanum cimport MecanumDriveWheelPositions
+from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
+                                MecanumDriveOdometry, SwerveDriveOdometry,
+                                TwoDeadWheelOdometry, _Odometry)
+
+
+cdef struct sample_t:
+    double t                     # s
+    pose2_t p                    # odometry pose at t (field frame, m)
+
+cdef struct record_t:
+    # A vision correction: at time t the odometry said ``odometry``, the corrected pose is
+    # ``vision``; later odometry motion is replayed from there (compensate()).
+    double t
+    pose2_t vision
+    pose2_t odometry
+
+
+cdef class _PoseEstimator:
+    cdef _Odometry odo           # the concrete estimator's odometry (typed there too)
+    cdef double q[3]             # state variances (x, y, θ)
+    cdef double k[3]             # per-axis vision gains
+    cdef pose2_t estimate
+    cdef sample_t* buf           # odometry poses, ascending time: buf[start : start + count]
+    cdef Py_ssize_t start, count, cap
+    cdef record_t* rec           # vision records, ascending time: rec[0 : nrec]
+    cdef Py_ssize_t nrec, rcap
+    cdef bint ready
+
+    cdef int _init(self, _Odometry odo, object stateStdDevs, object visionStdDevs) except -1
+    cdef int _start(self) except -1
+    cdef int _check(self) except -1
+    cdef int _reserve(self) except -1
+    cdef int _after_update(self, double t) except -1
+    cdef void _clear(self) noexcept
+    cdef bint _sample(self, double t, pose2_t* out) noexcept
+    cdef bint _sample_at(self, double t, pose2_t* out) noexcept
+    cdef Py_ssize_t _floor_record(self, double t) noexcept
+    cdef void _clear_keeping_latest(self, bint translation, double x, double y,
+                                    rot2_t r) noexcept
+    cdef int _reset_done(self) except -1
+
+
+@cython.final
+cdef class SwerveDrivePoseEstimator(_PoseEstimator):
+    cdef SwerveDriveOdometry swerve
+    cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object modulePositions)
+
+@cython.final
+cdef class MecanumDrivePoseEstimator(_PoseEstimator):
+    cdef MecanumDriveOdometry mecanum
+    cdef Pose2d _at(self, double t, Rotation2d gyroAngle,
+                    MecanumDriveWheelPositions wheelPositions)
+
+@cython.final
+cdef class DifferentialDrivePoseEstimator(_PoseEstimator):
+    cdef DifferentialDriveOdometry differential
+    cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object leftDistance,
+                    object rightDistance)
+
+@cython.final
+cdef class TwoDeadWheelPoseEstimator(_PoseEstimator):
+    cdef TwoDeadWheelOdometry two
+    cdef Pose2d _at(self, double t, double xWheelPos, double yWheelPos, Rotation2d gyroAngle)
+
+@cython.final
+cdef class DeadWheelPoseEstimator(_PoseEstimator):
+    cdef DeadWheelOdometry dead
+    cdef Pose2d _at(self, double t, object wheelPositions, object gyroAngle)

@@ -1,0 +1,433 @@
+"""Pose estimators: odometry fused with vision measurements (WPILib 2027).
+
+Each estimator owns an odometry object of its drivetrain and keeps 1.5 s of its poses. A
+vision measurement (a field-relative robot pose and the time it was taken) is compared
+with the estimate at that time; the difference, scaled per axis by the steady-state
+Kalman gain k = q / (q + √(q·r)) (q, r: the squared state and vision standard
+deviations), becomes a correction that is replayed on every later odometry pose.
+
+Timestamps are seconds on one monotonic clock. ``update`` reads
+:meth:`MathSharedStore.getTimestamp` (``time.monotonic`` unless replaced with
+:meth:`MathSharedStore.setTimestampSource`, e.g. for simulation or log replay); vision
+timestamps passed alongside must use the same clock, or use ``updateWithTime``. Unlike
+WPILib, timestamps must be finite (ValueError otherwise).
+
+After warm-up, ``update``/``updateWithTime`` and ``addVisionMeasurement`` make no allocator
+calls: the pose history and the vision records live in arrays that grow only when the
+history needs more room, and returned poses come from the Pose2d freelist.
+"""
+
+# Hand-written stub for the compiled module drivekin.estimator (estimator.pyx). Every
+# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
+# they match the runtime ``__doc__`` and that no public name is missing on either side.
+#
+# At runtime the estimators derive from the private base _PoseEstimator; its methods are
+# declared on each public class instead.
+
+from collections.abc import Callable, Sequence
+from typing import final, overload
+
+import numpy as np
+import numpy.typing as npt
+
+from drivekin.deadwheel import DeadWheelKinematics
+from drivekin.differential import DifferentialDriveWheelPositions
+from drivekin.geometry import Pose2d, Rotation2d, Translation2d
+from drivekin.kinematics import SwerveDriveKinematics, SwerveModulePosition
+from drivekin.mecanum import MecanumDriveKinematics, MecanumDriveWheelPositions
+
+_StdDevs = Sequence[float] | npt.NDArray[np.float64]
+_ModulePositions = Sequence[SwerveModulePosition] | npt.NDArray[np.float64]
+_WheelReadings = Sequence[float] | npt.NDArray[np.float64]
+
+@final
+class MathSharedStore:
+    """The clock the estimators' ``update`` methods read (WPILib's MathSharedStore).
+
+    Static methods only; seconds on a monotonic clock.
+    """
+
+    @staticmethod
+    def getTimestamp() -> float:
+        """Return the current time in seconds from the timestamp source
+        (``time.monotonic`` by default)."""
+
+    @staticmethod
+    def setTimestampSource(source: Callable[[], float] | None) -> None:
+        """Make ``source()`` (a callable returning seconds as a float) the clock; None
+        restores ``time.monotonic``. Use it to run estimators on simulated or recorded
+        time."""
+
+@final
+class SwerveDrivePoseEstimator:
+    """SwerveDrivePoseEstimator(kinematics, gyroAngle, modulePositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+
+    Swerve odometry (any N ≥ 2 modules) fused with vision. Module positions as for
+    SwerveDriveOdometry (SwerveModulePosition objects or an (N, 2) float64 array);
+    standard deviations of x (m), y (m) and heading (rad).
+    """
+
+    def __init__(
+        self,
+        kinematics: SwerveDriveKinematics,
+        gyroAngle: Rotation2d,
+        modulePositions: _ModulePositions,
+        initialPose: Pose2d,
+        stateStdDevs: _StdDevs = (0.1, 0.1, 0.1),
+        visionMeasurementStdDevs: _StdDevs = (0.9, 0.9, 0.9),
+    ) -> None: ...
+    def update(self, gyroAngle: Rotation2d, modulePositions: _ModulePositions) -> Pose2d:
+        """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+
+    def updateWithTime(
+        self, currentTime: float, gyroAngle: Rotation2d, modulePositions: _ModulePositions
+    ) -> Pose2d:
+        """Update the odometry with the gyro angle and module positions read at
+        ``currentTime`` (s); return the new estimate (Pose2d, field frame, m)."""
+
+    def resetPosition(
+        self, gyroAngle: Rotation2d, modulePositions: _ModulePositions, pose: Pose2d
+    ) -> None:
+        """Reset the odometry (gyro and module baselines, pose) and forget the history
+        and every vision correction."""
+
+    def getEstimatedPosition(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+
+    def sampleAt(self, timestamp: float) -> Pose2d | None:
+        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
+        history) with the vision corrections known for that time, or None before the
+        first update after construction or a reset."""
+
+    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
+        """Set how much vision is trusted: standard deviations of the measured x (m),
+        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
+        values trust vision less."""
+
+    def addVisionMeasurement(
+        self,
+        visionRobotPose: Pose2d,
+        timestamp: float,
+        visionMeasurementStdDevs: _StdDevs | None = None,
+    ) -> None:
+        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
+        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
+        become the standard deviations for this and later measurements (as
+        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
+        newest odometry sample is ignored, as is any before the first update."""
+
+    def resetPose(self, pose: Pose2d) -> None:
+        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
+        and every vision correction."""
+
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Reset the position, keeping the heading and the latest vision correction of
+        the heading; the history is cleared."""
+
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Reset the heading, keeping the position and the latest vision correction of
+        the position; the history is cleared."""
+
+@final
+class MecanumDrivePoseEstimator:
+    """MecanumDrivePoseEstimator(kinematics, gyroAngle, wheelPositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.45, 0.45, 0.45))
+
+    Mecanum odometry fused with vision; standard deviations of x (m), y (m) and heading
+    (rad).
+    """
+
+    def __init__(
+        self,
+        kinematics: MecanumDriveKinematics,
+        gyroAngle: Rotation2d,
+        wheelPositions: MecanumDriveWheelPositions,
+        initialPose: Pose2d,
+        stateStdDevs: _StdDevs = (0.1, 0.1, 0.1),
+        visionMeasurementStdDevs: _StdDevs = (0.45, 0.45, 0.45),
+    ) -> None: ...
+    def update(self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions) -> Pose2d:
+        """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+
+    def updateWithTime(
+        self, currentTime: float, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions
+    ) -> Pose2d:
+        """Update the odometry with the gyro angle and wheel positions (m) read at
+        ``currentTime`` (s); return the new estimate."""
+
+    def resetPosition(
+        self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions, pose: Pose2d
+    ) -> None:
+        """Reset the odometry and forget the history and every vision correction."""
+
+    def getEstimatedPosition(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+
+    def sampleAt(self, timestamp: float) -> Pose2d | None:
+        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
+        history) with the vision corrections known for that time, or None before the
+        first update after construction or a reset."""
+
+    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
+        """Set how much vision is trusted: standard deviations of the measured x (m),
+        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
+        values trust vision less."""
+
+    def addVisionMeasurement(
+        self,
+        visionRobotPose: Pose2d,
+        timestamp: float,
+        visionMeasurementStdDevs: _StdDevs | None = None,
+    ) -> None:
+        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
+        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
+        become the standard deviations for this and later measurements (as
+        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
+        newest odometry sample is ignored, as is any before the first update."""
+
+    def resetPose(self, pose: Pose2d) -> None:
+        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
+        and every vision correction."""
+
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Reset the position, keeping the heading and the latest vision correction of
+        the heading; the history is cleared."""
+
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Reset the heading, keeping the position and the latest vision correction of
+        the position; the history is cleared."""
+
+@final
+class DifferentialDrivePoseEstimator:
+    """DifferentialDrivePoseEstimator(gyroAngle, leftDistance, rightDistance, initialPose, stateStdDevs=(0.02, 0.02, 0.01), visionMeasurementStdDevs=(0.1, 0.1, 0.1))
+
+    Differential-drive odometry fused with vision (2027: no kinematics argument).
+    Distances in m; ``update``, ``updateWithTime`` and ``resetPosition`` also take one
+    DifferentialDriveWheelPositions instead of the two distances.
+    """
+
+    def __init__(
+        self,
+        gyroAngle: Rotation2d,
+        leftDistance: float,
+        rightDistance: float,
+        initialPose: Pose2d,
+        stateStdDevs: _StdDevs = (0.02, 0.02, 0.01),
+        visionMeasurementStdDevs: _StdDevs = (0.1, 0.1, 0.1),
+    ) -> None: ...
+    @overload
+    def update(self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float) -> Pose2d:
+        """update(gyroAngle, leftDistance, rightDistance) or update(gyroAngle,
+        wheelPositions): updateWithTime at :meth:`MathSharedStore.getTimestamp`."""
+
+    @overload
+    def update(
+        self, gyroAngle: Rotation2d, leftDistance: DifferentialDriveWheelPositions
+    ) -> Pose2d: ...
+
+    @overload
+    def updateWithTime(
+        self, currentTime: float, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float
+    ) -> Pose2d:
+        """Update the odometry with the gyro angle and the wheel distances (m) read at
+        ``currentTime`` (s); return the new estimate."""
+
+    @overload
+    def updateWithTime(
+        self, currentTime: float, gyroAngle: Rotation2d,
+        leftDistance: DifferentialDriveWheelPositions,
+    ) -> Pose2d: ...
+
+    @overload
+    def resetPosition(
+        self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float, pose: Pose2d
+    ) -> None:
+        """resetPosition(gyroAngle, leftDistance, rightDistance, pose) or
+        resetPosition(gyroAngle, wheelPositions, pose): reset the odometry and forget the
+        history and every vision correction."""
+
+    @overload
+    def resetPosition(
+        self, gyroAngle: Rotation2d, leftDistance: DifferentialDriveWheelPositions,
+        rightDistance: Pose2d,
+    ) -> None: ...
+
+    def getEstimatedPosition(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+
+    def sampleAt(self, timestamp: float) -> Pose2d | None:
+        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
+        history) with the vision corrections known for that time, or None before the
+        first update after construction or a reset."""
+
+    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
+        """Set how much vision is trusted: standard deviations of the measured x (m),
+        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
+        values trust vision less."""
+
+    def addVisionMeasurement(
+        self,
+        visionRobotPose: Pose2d,
+        timestamp: float,
+        visionMeasurementStdDevs: _StdDevs | None = None,
+    ) -> None:
+        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
+        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
+        become the standard deviations for this and later measurements (as
+        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
+        newest odometry sample is ignored, as is any before the first update."""
+
+    def resetPose(self, pose: Pose2d) -> None:
+        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
+        and every vision correction."""
+
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Reset the position, keeping the heading and the latest vision correction of
+        the heading; the history is cleared."""
+
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Reset the heading, keeping the position and the latest vision correction of
+        the position; the history is cleared."""
+
+@final
+class TwoDeadWheelPoseEstimator:
+    """TwoDeadWheelPoseEstimator(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+
+    TwoDeadWheelOdometry (a forward wheel at y = xWheelYPos, a left wheel at
+    x = yWheelXPos, m; distances in m; a gyro) fused with vision.
+    """
+
+    def __init__(
+        self,
+        xWheelYPos: float,
+        yWheelXPos: float,
+        xWheelPos: float,
+        yWheelPos: float,
+        gyroAngle: Rotation2d,
+        initialPose: Pose2d,
+        stateStdDevs: _StdDevs = (0.1, 0.1, 0.1),
+        visionMeasurementStdDevs: _StdDevs = (0.9, 0.9, 0.9),
+    ) -> None: ...
+    def update(self, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d) -> Pose2d:
+        """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+
+    def updateWithTime(
+        self, currentTime: float, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d
+    ) -> Pose2d:
+        """Update the odometry with the wheel distances (m) and gyro angle read at
+        ``currentTime`` (s); return the new estimate."""
+
+    def resetPosition(
+        self, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d, pose: Pose2d
+    ) -> None:
+        """Reset the odometry and forget the history and every vision correction."""
+
+    def getEstimatedPosition(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+
+    def sampleAt(self, timestamp: float) -> Pose2d | None:
+        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
+        history) with the vision corrections known for that time, or None before the
+        first update after construction or a reset."""
+
+    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
+        """Set how much vision is trusted: standard deviations of the measured x (m),
+        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
+        values trust vision less."""
+
+    def addVisionMeasurement(
+        self,
+        visionRobotPose: Pose2d,
+        timestamp: float,
+        visionMeasurementStdDevs: _StdDevs | None = None,
+    ) -> None:
+        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
+        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
+        become the standard deviations for this and later measurements (as
+        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
+        newest odometry sample is ignored, as is any before the first update."""
+
+    def resetPose(self, pose: Pose2d) -> None:
+        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
+        and every vision correction."""
+
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Reset the position, keeping the heading and the latest vision correction of
+        the heading; the history is cleared."""
+
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Reset the heading, keeping the position and the latest vision correction of
+        the position; the history is cleared."""
+
+@final
+class DeadWheelPoseEstimator:
+    """DeadWheelPoseEstimator(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d(), stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+
+    DeadWheelOdometry (any dead-wheel layout, with or without a gyro; distances in m)
+    fused with vision.
+    """
+
+    def __init__(
+        self,
+        kinematics: DeadWheelKinematics,
+        wheelPositions: _WheelReadings,
+        gyroAngle: Rotation2d | None = None,
+        initialPose: Pose2d | None = None,
+        stateStdDevs: _StdDevs = (0.1, 0.1, 0.1),
+        visionMeasurementStdDevs: _StdDevs = (0.9, 0.9, 0.9),
+    ) -> None: ...
+    def update(
+        self, wheelPositions: _WheelReadings, gyroAngle: Rotation2d | None = None
+    ) -> Pose2d:
+        """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+
+    def updateWithTime(
+        self,
+        currentTime: float,
+        wheelPositions: _WheelReadings,
+        gyroAngle: Rotation2d | None = None,
+    ) -> Pose2d:
+        """Update the odometry with the wheel distances (m) (and the gyro angle, when it
+        has one) read at ``currentTime`` (s); return the new estimate."""
+
+    def resetPosition(
+        self, wheelPositions: _WheelReadings, gyroAngle: Rotation2d | None, pose: Pose2d
+    ) -> None:
+        """Reset the odometry (``gyroAngle`` None without a gyro) and forget the history
+        and every vision correction."""
+
+    def getEstimatedPosition(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+
+    def sampleAt(self, timestamp: float) -> Pose2d | None:
+        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
+        history) with the vision corrections known for that time, or None before the
+        first update after construction or a reset."""
+
+    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
+        """Set how much vision is trusted: standard deviations of the measured x (m),
+        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
+        values trust vision less."""
+
+    def addVisionMeasurement(
+        self,
+        visionRobotPose: Pose2d,
+        timestamp: float,
+        visionMeasurementStdDevs: _StdDevs | None = None,
+    ) -> None:
+        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
+        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
+        become the standard deviations for this and later measurements (as
+        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
+        newest odometry sample is ignored, as is any before the first update."""
+
+    def resetPose(self, pose: Pose2d) -> None:
+        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
+        and every vision correction."""
+
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Reset the position, keeping the heading and the latest vision correction of
+        the heading; the history is cleared."""
+
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Reset the heading, keeping the position and the latest vision correction of
+        the position; the history is cleared."""

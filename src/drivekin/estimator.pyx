@@ -1,0 +1,663 @@
+"""Pose estimators: odometry fused with vision measurements (WPILib 2027).
+
+Each estimator owns an odometry object of its drivetrain and keeps 1.5 s of its poses. A
+vision measurement (a field-relative robot pose and the time it was taken) is compared
+with the estimate at that time; the difference, scaled per axis by the steady-state
+Kalman gain k = q / (q + √(q·r)) (q, r: the squared state and vision standard
+deviations), becomes a correction that is replayed on every later odometry pose.
+
+Timestamps are seconds on one monotonic clock. ``update`` reads
+:meth:`MathSharedStore.getTimestamp` (``time.monotonic`` unless replaced with
+:meth:`MathSharedStore.setTimestampSource`, e.g. for simulation or log replay); vision
+timestamps passed alongside must use the same clock, or use ``updateWithTime``. Unlike
+WPILib, timestamps must be finite (ValueError otherwise).
+
+After warm-up, ``update``/``updateWithTime`` and ``addVisionMeasurement`` make no allocator
+calls: the pose history and the vision records live in arrays that grow only when the
+history needs more room, and returned poses come from the Pose2d freelist.
+"""
+cimport cython
+from cpython.mem cimport PyMem_Free, PyMem_Malloc, PyMem_Realloc
+from libc.math cimport isfinite, sqrt
+from libc.string cimport memmove
+cimport numpy as cnp
+
+import time
+
+from drivekin._types cimport pose2_t, rot2_t
+from drivekin._numbers cimport read_floats
+from drivekin._kernels cimport (pose, pose_interpolate, pose_relative_to, pose_transform_by,
+                                rot_rad, rot_radians, rot_times, vec)
+from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
+from drivekin.kinematics cimport SwerveDriveKinematics
+from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
+from drivekin.deadwheel cimport DeadWheelKinematics
+from drivekin.differential cimport DifferentialDriveWheelPositions
+from drivekin._wheels cimport _WheelValues
+from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
+                                MecanumDriveOdometry, SwerveDriveOdometry,
+                                TwoDeadWheelOdometry, _Odometry)
+from drivekin._errors import type_name
+
+cnp.import_array()
+
+cdef double HISTORY = 1.5        # s of odometry poses kept (WPILib's kBufferDuration)
+cdef Py_ssize_t INITIAL_SAMPLES = 128    # 1.5 s at 50 Hz is 76 samples
+cdef Py_ssize_t INITIAL_RECORDS = 16
+
+
+# ---------------------------------------------------------------------------------------
+# The clock
+
+cdef object _clock = time.monotonic
+
+
+cdef class MathSharedStore:
+    """The clock the estimators' ``update`` methods read (WPILib's MathSharedStore).
+
+    Static methods only; seconds on a monotonic clock."""
+
+    @staticmethod
+    def getTimestamp():
+        """Return the current time in seconds from the timestamp source
+        (``time.monotonic`` by default)."""
+        return clock_now()
+
+    @staticmethod
+    def setTimestampSource(source):
+        """Make ``source()`` (a callable returning seconds as a float) the clock; None
+        restores ``time.monotonic``. Use it to run estimators on simulated or recorded
+        time."""
+        global _clock
+        if source is None:
+            _clock = time.monotonic
+        elif not callable(source):
+            raise TypeError(f"the timestamp source must be a callable returning seconds or "
+                            f"None, got {type_name(source)}")
+        else:
+            _clock = source
+
+
+cdef double clock_now() except? -1.0:
+    cdef object t = _clock()
+    try:
+        return t
+    except TypeError:
+        raise TypeError(f"the timestamp source returned {type_name(t)}, not seconds as a "
+                        "float") from None
+
+
+cdef inline int finite_time(double t, str what) except -1:
+    if not isfinite(t):
+        raise ValueError(f"{what} must be a finite time in s, got {t!r}")
+    return 0
+
+
+# ---------------------------------------------------------------------------------------
+# Standard deviations and gains
+
+cdef int read_std_devs(object values, str what, double* out) except -1:
+    """Three finite standard deviations into ``out``, which is written only when all
+    are valid."""
+    cdef double v[3]
+    cdef Py_ssize_t i
+    read_floats(values, 3, v, what, "standard deviations (x m, y m, θ rad)")
+    for i in range(3):
+        if not isfinite(v[i]):
+            raise ValueError(f"{what}[{i}] must be finite, got {v[i]!r}")
+    for i in range(3):
+        out[i] = v[i]
+    return 0
+
+
+cdef inline double gain(double q, double r) noexcept nogil:
+    # Steady-state Kalman gain of a directly observed constant, per axis (WPILib's
+    # closed form); no state uncertainty means vision is ignored.
+    if q == 0.0:
+        return 0.0
+    return q / (q + sqrt(q * r))
+
+
+cdef inline pose2_t compensate(const record_t* r, pose2_t p) noexcept nogil:
+    # The corrected pose at r.t plus the odometry's motion since then.
+    return pose_transform_by(r.vision, pose_relative_to(p, r.odometry))
+
+
+# ---------------------------------------------------------------------------------------
+
+cdef class _PoseEstimator:
+    """Everything but the drivetrain: the pose history, the vision records and the four
+    resets shared by every estimator."""
+
+    def __cinit__(self, *args, **kwargs):
+        self.buf = NULL
+        self.rec = NULL
+
+    def __dealloc__(self):
+        PyMem_Free(self.buf)
+        PyMem_Free(self.rec)
+
+    cdef int _init(self, _Odometry odo, object stateStdDevs, object visionStdDevs) except -1:
+        # Called by the concrete constructors after they built the odometry and before
+        # anything is stored; ``ready`` is set last.
+        cdef double sd[3]
+        cdef double vd[3]
+        cdef Py_ssize_t i
+        read_std_devs(stateStdDevs, "stateStdDevs", sd)
+        read_std_devs(visionStdDevs, "visionMeasurementStdDevs", vd)
+        cdef sample_t* buf = <sample_t*>PyMem_Malloc(sizeof(sample_t) * INITIAL_SAMPLES)
+        cdef record_t* rec = <record_t*>PyMem_Malloc(sizeof(record_t) * INITIAL_RECORDS)
+        if buf == NULL or rec == NULL:
+            PyMem_Free(buf)
+            PyMem_Free(rec)
+            raise MemoryError()
+        if self.ready:              # Python code ran while reading: refuse a second init
+            PyMem_Free(buf)
+            PyMem_Free(rec)
+            raise TypeError(f"{type(self).__name__} is already initialised")
+        PyMem_Free(self.buf)
+        PyMem_Free(self.rec)
+        self.buf, self.cap, self.start, self.count = buf, INITIAL_SAMPLES, 0, 0
+        self.rec, self.rcap, self.nrec = rec, INITIAL_RECORDS, 0
+        for i in range(3):
+            self.q[i] = sd[i] * sd[i]
+            self.k[i] = gain(self.q[i], vd[i] * vd[i])
+        self.odo = odo
+        self.estimate = odo.pose
+        self.ready = True
+        return 0
+
+    cdef int _start(self) except -1:
+        if self.ready:
+            raise TypeError(f"{type(self).__name__} is already initialised: __init__ cannot "
+                            "be called again (use resetPosition)")
+        return 0
+
+    cdef int _check(self) except -1:
+        if not self.ready:
+            raise RuntimeError(f"{type(self).__name__}.__init__ has not completed")
+        return 0
+
+    # -- pose history -------------------------------------------------------------------
+
+    cdef int _reserve(self) except -1:
+        """Make room for one more sample at the end (before the odometry moves, so that a
+        failed allocation changes nothing)."""
+        cdef sample_t* grown
+        if self.start + self.count < self.cap:
+            return 0
+        if self.start > 0:
+            memmove(self.buf, self.buf + self.start, sizeof(sample_t) * self.count)
+            self.start = 0
+            return 0
+        grown = <sample_t*>PyMem_Realloc(self.buf, sizeof(sample_t) * 2 * self.cap)
+        if grown == NULL:
+            raise MemoryError()
+        self.buf = grown
+        self.cap *= 2
+        return 0
+
+    cdef int _after_update(self, double t) except -1:
+        """Store the odometry's new pose at time t (room was reserved) and refresh the
+        estimate."""
+        cdef sample_t* b
+        cdef Py_ssize_t lo, hi, mid, n
+        cdef pose2_t p = self.odo.pose
+        # Remove, oldest first, every sample at least HISTORY older than t.
+        while self.count > 0 and t - self.buf[self.start].t >= HISTORY:
+            self.start += 1
+            self.count -= 1
+        b = self.buf + self.start
+        n = self.count
+        if n == 0 or t > b[n - 1].t:
+            b[n].t = t
+            b[n].p = p
+            self.count += 1
+        else:
+            lo, hi = 0, n            # first index with time >= t
+            while lo < hi:
+                mid = (lo + hi) // 2
+                if b[mid].t < t:
+                    lo = mid + 1
+                else:
+                    hi = mid
+            if b[lo].t == t:
+                b[lo].p = p
+            else:
+                memmove(b + lo + 1, b + lo, sizeof(sample_t) * (n - lo))
+                b[lo].t = t
+                b[lo].p = p
+                self.count += 1
+        self.estimate = p if self.nrec == 0 else compensate(self.rec + self.nrec - 1, p)
+        return 0
+
+    cdef void _clear(self) noexcept:
+        self.start = 0
+        self.count = 0
+        self.nrec = 0
+
+    cdef bint _sample(self, double t, pose2_t* out) noexcept:
+        """The odometry pose at time t: clamped to the stored range, interpolated along
+        the arc between neighbours; False when there is none."""
+        cdef sample_t* b = self.buf + self.start
+        cdef Py_ssize_t n = self.count, lo, hi, mid
+        if n == 0:
+            return False
+        if t <= b[0].t:
+            out[0] = b[0].p
+            return True
+        if t >= b[n - 1].t:
+            out[0] = b[n - 1].p
+            return True
+        lo, hi = 0, n - 1            # b[lo].t < t < b[hi].t, or an exact hit
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if b[mid].t <= t:
+                lo = mid
+            else:
+                hi = mid
+        if b[lo].t == t:
+            out[0] = b[lo].p
+        else:
+            out[0] = pose_interpolate(b[lo].p, b[hi].p, (t - b[lo].t) / (b[hi].t - b[lo].t))
+        return True
+
+    cdef Py_ssize_t _floor_record(self, double t) noexcept:
+        """Index of the record with the greatest time <= t, or -1."""
+        cdef Py_ssize_t i = self.nrec - 1
+        while i >= 0 and self.rec[i].t > t:
+            i -= 1
+        return i
+
+    cdef bint _sample_at(self, double t, pose2_t* out) noexcept:
+        cdef sample_t* b = self.buf + self.start
+        cdef Py_ssize_t i
+        cdef pose2_t p
+        if self.count == 0:
+            return False
+        # Clamp first: records stamped after the newest sample are invisible here.
+        if t < b[0].t:
+            t = b[0].t
+        elif t > b[self.count - 1].t:
+            t = b[self.count - 1].t
+        self._sample(t, &p)
+        i = self._floor_record(t)
+        out[0] = p if i < 0 else compensate(self.rec + i, p)
+        return True
+
+    # -- public API -----------------------------------------------------------------------
+
+    def getEstimatedPosition(self):
+        """Return the current pose estimate (field frame, m)."""
+        self._check()
+        return new_pose(self.estimate)
+
+    def sampleAt(self, double timestamp):
+        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
+        history) with the vision corrections known for that time, or None before the
+        first update after construction or a reset."""
+        cdef pose2_t p
+        self._check()
+        finite_time(timestamp, "timestamp")
+        if not self._sample_at(timestamp, &p):
+            return None
+        return new_pose(p)
+
+    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs):
+        """Set how much vision is trusted: standard deviations of the measured x (m),
+        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
+        values trust vision less."""
+        cdef double vd[3]
+        cdef Py_ssize_t i
+        self._check()
+        read_std_devs(visionMeasurementStdDevs, "visionMeasurementStdDevs", vd)
+        for i in range(3):
+            self.k[i] = gain(self.q[i], vd[i] * vd[i])
+
+    def addVisionMeasurement(self, Pose2d visionRobotPose not None, double timestamp,
+                             visionMeasurementStdDevs=None):
+        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
+        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
+        become the standard deviations for this and later measurements (as
+        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
+        newest odometry sample is ignored, as is any before the first update."""
+        cdef sample_t* b
+        cdef pose2_t odometry_sample, vision_sample, delta, scaled
+        cdef record_t* r
+        cdef Py_ssize_t i, keep, lo
+        cdef record_t* grown
+        self._check()
+        finite_time(timestamp, "timestamp")
+        if visionMeasurementStdDevs is not None:
+            self.setVisionMeasurementStdDevs(visionMeasurementStdDevs)
+        if self.count == 0:
+            return
+        b = self.buf + self.start
+        if b[self.count - 1].t - HISTORY > timestamp:
+            return
+        # Room for one more record, before anything changes.
+        if self.nrec == self.rcap:
+            grown = <record_t*>PyMem_Realloc(self.rec, sizeof(record_t) * 2 * self.rcap)
+            if grown == NULL:
+                raise MemoryError()
+            self.rec = grown
+            self.rcap *= 2
+        # Drop the records no stored sample needs: everything before the newest record at
+        # or before the oldest sample.
+        if self.nrec > 0 and b[0].t >= self.rec[0].t:
+            keep = self._floor_record(b[0].t)
+            if keep > 0:
+                memmove(self.rec, self.rec + keep, sizeof(record_t) * (self.nrec - keep))
+                self.nrec -= keep
+        self._sample(timestamp, &odometry_sample)
+        self._sample_at(timestamp, &vision_sample)
+        delta = pose_relative_to(visionRobotPose.p, vision_sample)
+        scaled = pose(vec(self.k[0] * delta.t.x, self.k[1] * delta.t.y),
+                      rot_times(delta.r, self.k[2]))
+        # Store under the unclamped timestamp, replacing an equal one; later records go.
+        lo = 0
+        while lo < self.nrec and self.rec[lo].t < timestamp:
+            lo += 1
+        r = self.rec + lo
+        r.t = timestamp
+        r.vision = pose_transform_by(vision_sample, scaled)
+        r.odometry = odometry_sample
+        self.nrec = lo + 1
+        self.estimate = compensate(r, self.odo.pose)
+
+    def resetPose(self, Pose2d pose not None):
+        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
+        and every vision correction."""
+        self._check()
+        self.odo.resetPose(pose)
+        self._clear()
+        self.estimate = self.odo.pose
+
+    def resetTranslation(self, Translation2d translation not None):
+        """Reset the position, keeping the heading and the latest vision correction of
+        the heading; the history is cleared."""
+        self._check()
+        self.odo.resetTranslation(translation)
+        self._clear_keeping_latest(True, translation.v.x, translation.v.y, self.odo.pose.r)
+
+    def resetRotation(self, Rotation2d rotation not None):
+        """Reset the heading, keeping the position and the latest vision correction of
+        the position; the history is cleared."""
+        self._check()
+        self.odo.resetRotation(rotation)
+        self._clear_keeping_latest(False, 0.0, 0.0, rotation.r)
+
+    cdef void _clear_keeping_latest(self, bint translation, double x, double y,
+                                    rot2_t r) noexcept:
+        cdef record_t latest
+        cdef bint had = self.nrec > 0
+        if had:
+            latest = self.rec[self.nrec - 1]
+        self._clear()
+        if not had:
+            self.estimate = self.odo.pose
+            return
+        if translation:
+            latest.vision.t = vec(x, y)
+            latest.odometry.t = vec(x, y)
+        else:
+            latest.vision.r = r
+            latest.odometry.r = r
+        self.rec[0] = latest
+        self.nrec = 1
+        self.estimate = compensate(self.rec, self.odo.pose)
+
+    cdef int _reset_done(self) except -1:
+        self._clear()
+        self.estimate = self.odo.pose
+        return 0
+
+
+# ---------------------------------------------------------------------------------------
+# Concrete estimators: each builds its odometry, then steps it at C level.
+
+_DEFAULT_STATE = (0.1, 0.1, 0.1)
+
+
+cdef class SwerveDrivePoseEstimator(_PoseEstimator):
+    """SwerveDrivePoseEstimator(kinematics, gyroAngle, modulePositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+
+    Swerve odometry (any N ≥ 2 modules) fused with vision. Module positions as for
+    SwerveDriveOdometry (SwerveModulePosition objects or an (N, 2) float64 array);
+    standard deviations of x (m), y (m) and heading (rad).
+    """
+
+    def __init__(self, SwerveDriveKinematics kinematics not None, Rotation2d gyroAngle not None,
+                 modulePositions, Pose2d initialPose not None,
+                 stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
+        self._start()
+        odo = SwerveDriveOdometry(kinematics, gyroAngle, modulePositions, initialPose)
+        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        self.swerve = odo
+
+    def update(self, Rotation2d gyroAngle not None, modulePositions):
+        """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+        return self._at(clock_now(), gyroAngle, modulePositions)
+
+    def updateWithTime(self, double currentTime, Rotation2d gyroAngle not None,
+                       modulePositions):
+        """Update the odometry with the gyro angle and module positions read at
+        ``currentTime`` (s); return the new estimate (Pose2d, field frame, m)."""
+        return self._at(currentTime, gyroAngle, modulePositions)
+
+    cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object modulePositions):
+        self._check()
+        finite_time(t, "currentTime")
+        self._reserve()
+        self.swerve._step(gyroAngle, modulePositions)
+        self._after_update(t)
+        return new_pose(self.estimate)
+
+    def resetPosition(self, Rotation2d gyroAngle not None, modulePositions,
+                      Pose2d pose not None):
+        """Reset the odometry (gyro and module baselines, pose) and forget the history
+        and every vision correction."""
+        self._check()
+        self.swerve.resetPosition(gyroAngle, modulePositions, pose)
+        self._reset_done()
+
+
+cdef class MecanumDrivePoseEstimator(_PoseEstimator):
+    """MecanumDrivePoseEstimator(kinematics, gyroAngle, wheelPositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.45, 0.45, 0.45))
+
+    Mecanum odometry fused with vision; standard deviations of x (m), y (m) and heading
+    (rad).
+    """
+
+    def __init__(self, MecanumDriveKinematics kinematics not None, Rotation2d gyroAngle not None,
+                 MecanumDriveWheelPositions wheelPositions not None, Pose2d initialPose not None,
+                 stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.45, 0.45, 0.45)):
+        self._start()
+        odo = MecanumDriveOdometry(kinematics, gyroAngle, wheelPositions, initialPose)
+        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        self.mecanum = odo
+
+    def update(self, Rotation2d gyroAngle not None,
+               MecanumDriveWheelPositions wheelPositions not None):
+        """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+        return self._at(clock_now(), gyroAngle, wheelPositions)
+
+    def updateWithTime(self, double currentTime, Rotation2d gyroAngle not None,
+                       MecanumDriveWheelPositions wheelPositions not None):
+        """Update the odometry with the gyro angle and wheel positions (m) read at
+        ``currentTime`` (s); return the new estimate."""
+        return self._at(currentTime, gyroAngle, wheelPositions)
+
+    cdef Pose2d _at(self, double t, Rotation2d gyroAngle,
+                    MecanumDriveWheelPositions wheelPositions):
+        self._check()
+        finite_time(t, "currentTime")
+        self._reserve()
+        self.mecanum._step(gyroAngle, wheelPositions)
+        self._after_update(t)
+        return new_pose(self.estimate)
+
+    def resetPosition(self, Rotation2d gyroAngle not None,
+                      MecanumDriveWheelPositions wheelPositions not None, Pose2d pose not None):
+        """Reset the odometry and forget the history and every vision correction."""
+        self._check()
+        self.mecanum.resetPosition(gyroAngle, wheelPositions, pose)
+        self._reset_done()
+
+
+cdef inline int wheel_pair(object first, object second, double* l, double* r,
+                           str call) except -1:
+    # (left m, right m) or (DifferentialDriveWheelPositions, omitted).
+    if type(first) is DifferentialDriveWheelPositions:
+        if second is not None:
+            raise TypeError(f"{call}: pass either a DifferentialDriveWheelPositions or the "
+                            "left and right distances, not both")
+        l[0] = (<_WheelValues>first).w[0]
+        r[0] = (<_WheelValues>first).w[1]
+        return 0
+    if second is None:
+        raise TypeError(f"{call}: expected the left and right distances (m) or a "
+                        f"DifferentialDriveWheelPositions, got {type_name(first)}")
+    try:
+        l[0] = first
+        r[0] = second
+    except TypeError:
+        raise TypeError(f"{call}: the left and right distances must be numbers (m), got "
+                        f"{type_name(first)} and {type_name(second)}") from None
+    return 0
+
+
+cdef class DifferentialDrivePoseEstimator(_PoseEstimator):
+    """DifferentialDrivePoseEstimator(gyroAngle, leftDistance, rightDistance, initialPose, stateStdDevs=(0.02, 0.02, 0.01), visionMeasurementStdDevs=(0.1, 0.1, 0.1))
+
+    Differential-drive odometry fused with vision (2027: no kinematics argument).
+    Distances in m; ``update``, ``updateWithTime`` and ``resetPosition`` also take one
+    DifferentialDriveWheelPositions instead of the two distances.
+    """
+
+    def __init__(self, Rotation2d gyroAngle not None, double leftDistance,
+                 double rightDistance, Pose2d initialPose not None,
+                 stateStdDevs=(0.02, 0.02, 0.01), visionMeasurementStdDevs=(0.1, 0.1, 0.1)):
+        self._start()
+        odo = DifferentialDriveOdometry(gyroAngle, leftDistance, rightDistance, initialPose)
+        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        self.differential = odo
+
+    def update(self, Rotation2d gyroAngle not None, leftDistance, rightDistance=None):
+        """update(gyroAngle, leftDistance, rightDistance) or update(gyroAngle,
+        wheelPositions): updateWithTime at :meth:`MathSharedStore.getTimestamp`."""
+        return self._at(clock_now(), gyroAngle, leftDistance, rightDistance)
+
+    def updateWithTime(self, double currentTime, Rotation2d gyroAngle not None, leftDistance,
+                       rightDistance=None):
+        """Update the odometry with the gyro angle and the wheel distances (m) read at
+        ``currentTime`` (s); return the new estimate."""
+        return self._at(currentTime, gyroAngle, leftDistance, rightDistance)
+
+    cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object leftDistance,
+                    object rightDistance):
+        cdef double l, r
+        self._check()
+        finite_time(t, "currentTime")
+        wheel_pair(leftDistance, rightDistance, &l, &r, "update")
+        self._reserve()
+        self.differential._step(gyroAngle, l, r)
+        self._after_update(t)
+        return new_pose(self.estimate)
+
+    def resetPosition(self, Rotation2d gyroAngle not None, leftDistance, rightDistance,
+                      pose=None):
+        """resetPosition(gyroAngle, leftDistance, rightDistance, pose) or
+        resetPosition(gyroAngle, wheelPositions, pose): reset the odometry and forget the
+        history and every vision correction."""
+        cdef double l, r
+        self._check()
+        if pose is None:
+            pose, rightDistance = rightDistance, None
+        if type(pose) is not Pose2d:
+            raise TypeError(f"pose must be a Pose2d, got {type_name(pose)}")
+        wheel_pair(leftDistance, rightDistance, &l, &r, "resetPosition")
+        self.differential.resetPosition(gyroAngle, l, r, pose)
+        self._reset_done()
+
+
+cdef class TwoDeadWheelPoseEstimator(_PoseEstimator):
+    """TwoDeadWheelPoseEstimator(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+
+    TwoDeadWheelOdometry (a forward wheel at y = xWheelYPos, a left wheel at
+    x = yWheelXPos, m; distances in m; a gyro) fused with vision.
+    """
+
+    def __init__(self, double xWheelYPos, double yWheelXPos, double xWheelPos,
+                 double yWheelPos, Rotation2d gyroAngle not None, Pose2d initialPose not None,
+                 stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
+        self._start()
+        odo = TwoDeadWheelOdometry(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle,
+                                   initialPose)
+        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        self.two = odo
+
+    def update(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle not None):
+        """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+        return self._at(clock_now(), xWheelPos, yWheelPos, gyroAngle)
+
+    def updateWithTime(self, double currentTime, double xWheelPos, double yWheelPos,
+                       Rotation2d gyroAngle not None):
+        """Update the odometry with the wheel distances (m) and gyro angle read at
+        ``currentTime`` (s); return the new estimate."""
+        return self._at(currentTime, xWheelPos, yWheelPos, gyroAngle)
+
+    cdef Pose2d _at(self, double t, double xWheelPos, double yWheelPos, Rotation2d gyroAngle):
+        self._check()
+        finite_time(t, "currentTime")
+        self._reserve()
+        self.two._step(xWheelPos, yWheelPos, gyroAngle)
+        self._after_update(t)
+        return new_pose(self.estimate)
+
+    def resetPosition(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle not None,
+                      Pose2d pose not None):
+        """Reset the odometry and forget the history and every vision correction."""
+        self._check()
+        self.two.resetPosition(xWheelPos, yWheelPos, gyroAngle, pose)
+        self._reset_done()
+
+
+cdef class DeadWheelPoseEstimator(_PoseEstimator):
+    """DeadWheelPoseEstimator(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d(), stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+
+    DeadWheelOdometry (any dead-wheel layout, with or without a gyro; distances in m)
+    fused with vision.
+    """
+
+    def __init__(self, DeadWheelKinematics kinematics not None, wheelPositions,
+                 gyroAngle=None, initialPose=None, stateStdDevs=_DEFAULT_STATE,
+                 visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
+        self._start()
+        odo = DeadWheelOdometry(kinematics, wheelPositions, gyroAngle, initialPose)
+        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        self.dead = odo
+
+    def update(self, wheelPositions, gyroAngle=None):
+        """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+        return self._at(clock_now(), wheelPositions, gyroAngle)
+
+    def updateWithTime(self, double currentTime, wheelPositions, gyroAngle=None):
+        """Update the odometry with the wheel distances (m) (and the gyro angle, when it
+        has one) read at ``currentTime`` (s); return the new estimate."""
+        return self._at(currentTime, wheelPositions, gyroAngle)
+
+    cdef Pose2d _at(self, double t, object wheelPositions, object gyroAngle):
+        self._check()
+        finite_time(t, "currentTime")
+        self._reserve()
+        self.dead._step(wheelPositions, gyroAngle)
+        self._after_update(t)
+        return new_pose(self.estimate)
+
+    def resetPosition(self, wheelPositions, gyroAngle, Pose2d pose not None):
+        """Reset the odometry (``gyroAngle`` None without a gyro) and forget the history
+        and every vision correction."""
+        self._check()
+        self.dead.resetPosition(wheelPositions, gyroAngle, pose)
+        self._reset_done()

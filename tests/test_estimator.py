@@ -1,0 +1,212 @@
+"""Pose estimators against the worked sequences of
+/work/shared/reference/followers-and-estimators.md §4 (gains, sampleAt, the timestamp
+cases of addVisionMeasurement, the four resets) and the MathSharedStore clock.
+
+The sequences drive a DifferentialDrivePoseEstimator with equal wheel distances (pure
+forward motion, gyro fixed), so the odometry pose is known exactly; the estimator
+machinery is shared by every drivetrain's class.
+"""
+import math
+
+import numpy as np
+import pytest
+
+from drivekin import (
+    DifferentialDrivePoseEstimator,
+    DifferentialDriveWheelPositions,
+    MathSharedStore,
+    Pose2d,
+    Rotation2d,
+    Translation2d,
+)
+from wpilib_port import EPS, assert_close
+
+R = Rotation2d
+
+
+def assert_pose(expected, pose, tol=EPS):
+    x, y, theta = expected
+    assert_close(x, pose.getX(), tol)
+    assert_close(y, pose.getY(), tol)
+    r = pose.getRotation()
+    assert math.hypot(r.getCos() - math.cos(theta), r.getSin() - math.sin(theta)) <= tol, (
+        f"expected heading {math.degrees(theta)!r} deg, got {r.getDegrees()!r} deg")
+
+
+def estimator(state=(1.0, 1.0, 1.0), vision=(1.0, 1.0, 1.0), pose=Pose2d()):
+    return DifferentialDrivePoseEstimator(R(), 0.0, 0.0, pose, state, vision)
+
+
+def drive_to(e, t, x):
+    """Odometry sample at time t with the robot driven to x m (heading 0)."""
+    return e.updateWithTime(t, R(), x, x)
+
+
+@pytest.mark.parametrize("state, vision, k", [
+    (0.1, 0.9, 0.1), (1, 1, 0.5), (0.1, 0.45, 1 / 5.5), (0.02, 0.1, 1 / 6), (0.01, 0.1, 1 / 11),
+    (0.2, 0.4, 1 / 3), (0.0, 5.0, 0.0), (0.3, 0.0, 1.0),
+])
+def test_gain(state, vision, k):
+    # One sample at the origin; a vision pose 1 m ahead moves the estimate by k m.
+    e = estimator((state, state, state), (vision, vision, vision))
+    drive_to(e, 0.0, 0.0)
+    e.addVisionMeasurement(Pose2d(1.0, 0.0, R()), 0.0)
+    assert_close(k, e.getEstimatedPosition().getX(), 1e-15)
+
+
+def test_estimate_exists_before_the_first_update_but_sample_does_not():
+    e = estimator(pose=Pose2d(1, 2, R(0.3)))
+    assert e.getEstimatedPosition() == Pose2d(1, 2, R(0.3))
+    assert e.sampleAt(0.0) is None
+    e.addVisionMeasurement(Pose2d(5, 5, R()), 0.0)         # no history: ignored
+    assert e.getEstimatedPosition() == Pose2d(1, 2, R(0.3))
+
+
+def test_sample_at_and_a_past_measurement():
+    e = estimator()
+    for i in range(51):
+        t = 1.0 + 0.02 * i
+        drive_to(e, t, t)
+    assert_pose((1.02, 0, 0), e.sampleAt(1.02))
+    assert_pose((1.01, 0, 0), e.sampleAt(1.01))
+    assert_pose((1.0, 0, 0), e.sampleAt(0.5))
+    assert_pose((2.0, 0, 0), e.sampleAt(2.5))
+    e.addVisionMeasurement(Pose2d(2, 0, R(1.0)), 2.2)      # future: invisible to sampleAt
+    assert_pose((1.02, 0, 0), e.sampleAt(1.02))
+    assert_pose((2.0, 0, 0), e.sampleAt(2.5))
+    e.addVisionMeasurement(Pose2d(1, 0.2, R()), 0.9)       # before the oldest: at 1.0
+    assert_pose((1.02, 0.1, 0), e.sampleAt(1.02))
+    assert_pose((1.01, 0.1, 0), e.sampleAt(1.01))
+    assert_pose((1.0, 0.1, 0), e.sampleAt(1.0))
+    assert_pose((2.0, 0.1, 0), e.sampleAt(2.5))
+
+
+def test_resets_keep_or_drop_corrections():
+    e = estimator()
+    e.resetPosition(R(), 0.0, 0.0, Pose2d(1, 0, R()))
+    assert_pose((2, 0, 0), e.updateWithTime(1.0, R(), 1.0, 1.0))
+    e.addVisionMeasurement(Pose2d(3, 0, R()), 1.0)
+    assert_pose((2.5, 0, 0), e.getEstimatedPosition())
+    e.resetRotation(R.fromDegrees(90))
+    assert_pose((2.5, 0, math.pi / 2), e.getEstimatedPosition())
+    assert e.sampleAt(1.0) is None                          # history cleared
+    assert_pose((2.5, 1, math.pi / 2), e.updateWithTime(2.0, R(), 2.0, 2.0))
+    e.addVisionMeasurement(Pose2d(2.5, 1, R.fromDegrees(180)), 2.0)
+    assert_pose((2.5, 1, math.radians(135)), e.getEstimatedPosition())
+    e.resetTranslation(Translation2d(-1, -1))
+    assert_pose((-1, -1, math.radians(135)), e.getEstimatedPosition())
+    e.resetPose(Pose2d())
+    assert_pose((0, 0, 0), e.getEstimatedPosition())
+
+
+def test_correction_in_the_sampled_pose_frame():
+    e = estimator((0.1, 0.2, 0.0), (0.1, 0.4, 1.0), Pose2d(1, 1, R.fromDegrees(90)))
+    drive_to(e, 0.0, 0.0)
+    e.addVisionMeasurement(Pose2d(0.5, 3, R(math.pi / 2 + 0.3)), 0.0)
+    assert_pose((5 / 6, 2, math.pi / 2), e.getEstimatedPosition(), 1e-12)
+
+
+@pytest.mark.parametrize("ts, used", [(2.5, True), (2.4999, False), (2.0, False),
+                                      (1.25, False)])
+def test_stale_measurements(ts, used):
+    e = estimator()
+    for i in range(17):
+        drive_to(e, 0.25 * i, 0.25 * i)
+    # History 1.5 s: 4.0 − 2.5 = 1.5 is dropped, so the oldest kept sample is 2.75.
+    e.addVisionMeasurement(Pose2d(2.75, 1, R()), ts)
+    assert_close(0.5 if used else 0.0, e.getEstimatedPosition().getY())
+    if used:
+        assert_pose((2.75, 0.5, 0), e.sampleAt(0.0))
+        assert_pose((4.0, 0.5, 0), e.sampleAt(4.0))
+
+
+def test_future_measurement_then_an_earlier_one_deletes_it():
+    e = estimator()
+    drive_to(e, 0.0, 0.0)
+    drive_to(e, 1.0, 1.0)
+    e.addVisionMeasurement(Pose2d(1, 2, R()), 5.0)
+    assert_pose((1, 1, 0), e.getEstimatedPosition())
+    assert_pose((1, 0, 0), e.sampleAt(1.0))
+    assert_pose((1.25, 1, 0), drive_to(e, 1.25, 1.25))
+    e.addVisionMeasurement(Pose2d(0.5, 0, R()), 0.5)
+    assert_pose((1.25, 0, 0), e.getEstimatedPosition())
+    assert_pose((1.5, 0, 0), drive_to(e, 1.5, 1.5))
+
+
+def test_repeated_measurements_at_one_time_all_count():
+    e = DifferentialDrivePoseEstimator(R(), 0.0, 0.0, Pose2d())   # default std devs
+    drive_to(e, 0.0, 0.0)
+    targets = [Pose2d(0, 0, R()), Pose2d(3, 1, R.fromDegrees(90)),
+               Pose2d(2, 4, R.fromDegrees(180))]
+    for _ in range(1000):
+        for p in targets:
+            e.addVisionMeasurement(p, 0.0)
+    est = e.getEstimatedPosition()
+    for p in targets:
+        d = est.getTranslation().getDistance(p.getTranslation())
+        a = abs(est.getRotation().minus(p.getRotation()).getDegrees())
+        assert d > 0.08 or a > 0.08
+
+
+def test_ignored_measurement_leaves_the_estimate_bit_for_bit():
+    e = DifferentialDrivePoseEstimator(R(), 0.0, 0.0, Pose2d())
+    t = 0.0
+    while t < 4.0:
+        e.updateWithTime(t, R(0.1 * t), t, 1.1 * t)
+        t += 0.02
+    before = e.getEstimatedPosition()
+    e.addVisionMeasurement(Pose2d(10, 10, R(0.1)), 1.0, (0.1, 0.1, 0.1))
+    after = e.getEstimatedPosition()
+    assert (after.getX(), after.getY(), after.getRotation().getCos()) == \
+        (before.getX(), before.getY(), before.getRotation().getCos())
+
+
+def test_three_argument_form_keeps_the_std_devs_even_when_ignored():
+    e = estimator()
+    e.addVisionMeasurement(Pose2d(1, 0, R()), 0.0, [1.0, 1.0, 1.0])   # ignored (no history)
+    drive_to(e, 0.0, 0.0)
+    e.addVisionMeasurement(Pose2d(1, 0, R()), 0.0)
+    assert_close(0.5, e.getEstimatedPosition().getX())
+    e2 = estimator()
+    e2.addVisionMeasurement(Pose2d(1, 0, R()), 0.0, np.array([0.0, 0.0, 0.0]))
+    drive_to(e2, 0.0, 0.0)
+    e2.addVisionMeasurement(Pose2d(1, 0, R()), 0.0)
+    assert_close(1.0, e2.getEstimatedPosition().getX())
+
+
+def test_wheel_positions_form_and_update_clock():
+    e = estimator()
+    e.update(R(), DifferentialDriveWheelPositions(0.5, 0.5))
+    assert_pose((0.5, 0, 0), e.getEstimatedPosition())
+    e.resetPosition(R(), DifferentialDriveWheelPositions(0.0, 0.0), Pose2d())
+    assert_pose((0, 0, 0), e.getEstimatedPosition())
+    times = iter([10.0, 10.5])
+    MathSharedStore.setTimestampSource(lambda: next(times))
+    try:
+        assert MathSharedStore.getTimestamp() == 10.0
+        e.update(R(), 1.0, 1.0)                      # stamped 10.5
+        assert_pose((1.0, 0, 0), e.sampleAt(10.5))
+    finally:
+        MathSharedStore.setTimestampSource(None)
+    t0 = MathSharedStore.getTimestamp()
+    assert MathSharedStore.getTimestamp() >= t0
+
+
+@pytest.mark.parametrize("call, exc, needle", [
+    (lambda e: e.updateWithTime(math.nan, R(), 0.0, 0.0), ValueError, "finite time"),
+    (lambda e: e.addVisionMeasurement(Pose2d(), math.inf), ValueError, "finite time"),
+    (lambda e: e.sampleAt(math.nan), ValueError, "finite time"),
+    (lambda e: e.setVisionMeasurementStdDevs([1.0, 2.0]), ValueError, "must hold 3"),
+    (lambda e: e.setVisionMeasurementStdDevs([1.0, math.nan, 2.0]), ValueError, "finite"),
+    (lambda e: e.setVisionMeasurementStdDevs("abc"), TypeError, "list or tuple of 3"),
+    (lambda e: e.update(R(), 1.0), TypeError, "left and right distances"),
+    (lambda e: MathSharedStore.setTimestampSource(3.0), TypeError, "callable"),
+])
+def test_bad_input(call, exc, needle):
+    e = estimator()
+    drive_to(e, 0.0, 0.0)
+    before = e.getEstimatedPosition()
+    with pytest.raises(exc) as info:
+        call(e)
+    assert needle in str(info.value)
+    assert e.getEstimatedPosition() == before
