@@ -41,8 +41,8 @@ from drivekin._errors import type_name
 cnp.import_array()
 
 cdef double HISTORY = 1.5        # s of odometry poses kept (WPILib's kBufferDuration)
-cdef Py_ssize_t INITIAL_SAMPLES = 128    # 1.5 s at 50 Hz is 76 samples
-cdef Py_ssize_t INITIAL_RECORDS = 16
+cdef Py_ssize_t INITIAL_SAMPLES = 128   # 1.5 s of updates at 85 Hz (50 Hz: 76 samples)
+cdef Py_ssize_t INITIAL_RECORDS = 128  # 1.5 s of vision at 85 Hz
 
 
 # ---------------------------------------------------------------------------------------
