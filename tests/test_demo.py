@@ -125,6 +125,25 @@ def test_deadwheel_mode_reports_both_odometries_against_the_truth():
     assert "dead-wheel error" in text.stdout and "drive-encoder error" in text.stdout
 
 
+def test_vision_mode_reports_odometry_and_estimator_against_the_truth():
+    r = run_demo("--vision", "--seconds", "30", "--json")
+    assert r.returncode == 0, r.stderr
+    a = json.loads(r.stdout)
+    assert a["odometry"] == "SwerveDrivePoseEstimator" and a["vision"] is True
+    odo, est = a["odometry_error_m"], a["estimator_error_m"]
+    # Worn wheels make the odometry drift by tens of cm over the script; the camera keeps
+    # the estimator near the truth. Loose physical bounds, not measured results.
+    assert odo["max"] > 0.2
+    assert est["max"] < 0.5 * odo["max"] and est["mean"] < 0.5 * odo["mean"]
+    allocations = dict(a["allocations"])
+    assert allocations.pop("net_blocks") <= 0
+    assert allocations == {"allocator_calls": 0, "traced_peak_bytes": 0, "traced_net_bytes": 0}
+    text = run_demo("--vision", "--seconds", "1")
+    assert "estimator error" in text.stdout and "odometry-only error" in text.stdout
+    refused = run_demo("--vision", "--drivetrain", "mecanum", "--seconds", "1")
+    assert refused.returncode == 2 and "--vision" in refused.stderr
+
+
 def test_default_drivetrain_is_swerve():
     result = run_demo("--seconds", "0.1", "--json")
     assert result.returncode == 0, result.stderr

@@ -10,7 +10,7 @@ import json
 import math
 import sys
 
-from drivekin.demo import DRIVETRAINS, DT, header, run, table
+from drivekin.demo import DRIVETRAINS, DT, VISION_DRIVETRAINS, header, run, table
 
 
 # Option ranges. The upper bounds keep a run's memory and time sane (--seconds sizes the
@@ -82,6 +82,11 @@ def parse_args(argv=None):
     parser.add_argument("--drivetrain", choices=list(DRIVETRAINS), default="swerve",
                         help="drivetrain to simulate, with its kinematics and odometry classes "
                              "(default: swerve)")
+    parser.add_argument("--vision", action="store_true",
+                        help="swerve only: wheels that wear (odometry drifts) and a simulated "
+                             "camera (AprilTag poses every 40 ms, 60 ms latency, noise) fed to "
+                             "SwerveDrivePoseEstimator; reports odometry-only and estimator "
+                             "error against the simulated truth")
     out = parser.add_mutually_exclusive_group()
     out.add_argument("--quiet", action="store_true",
                      help="print only the results table, without the header")
@@ -92,6 +97,10 @@ def parse_args(argv=None):
 
 def main(argv=None) -> int:
     args = parse_args(argv)
+    if args.vision and args.drivetrain not in VISION_DRIVETRAINS:
+        print(f"python -m drivekin: error: --vision is simulated for "
+              f"{', '.join(VISION_DRIVETRAINS)} only, not {args.drivetrain}", file=sys.stderr)
+        return 2
     steps = round(args.seconds / DT)
     result = run(args)
     if args.json:

@@ -55,6 +55,10 @@ by its drive encoders and by three dead wheels (Road Runner's standard layout, e
 ticks and noise), reporting both odometries' errors against the simulated truth (see
 :class:`DeadWheelDrive`).
 
+``--vision`` (swerve) wears the wheels so that the odometry drifts and adds a simulated
+camera whose delayed, noisy AprilTag poses go to a SwerveDrivePoseEstimator; both
+estimates are compared with the truth (see :class:`VisionSwerveDrive`).
+
 Only the standard library and drivekin are used. Drivetrains plug in through
 :data:`DRIVETRAINS`: a :class:`Drivetrain` subclass with ``pose``, ``distance``,
 ``describe()``, ``step(command)`` and optionally ``results()``.
@@ -90,6 +94,7 @@ from drivekin import (
     Rotation2d,
     SwerveDriveKinematics,
     SwerveDriveOdometry,
+    SwerveDrivePoseEstimator,
     SwerveModulePosition,
     SwerveModuleVelocity,
     Translation2d,
@@ -198,6 +203,23 @@ class JoystickScript:
 # ---------------------------------------------------------------------------------------
 # Drivetrains
 
+def _normal(uniform) -> float:
+    """A standard normal deviate from ``uniform`` (a bound ``random.Random.random``: bound
+    once, since binding a method per call would allocate). Box–Muller, one pair per
+    deviate (the second normal is discarded)."""
+    return math.sqrt(-2.0 * math.log(1.0 - uniform())) * _cos(2.0 * math.pi * uniform())
+
+
+def localization_rows(truth: dict, errors) -> list:
+    """Report rows: the true pose, then (label, {final, max} in m, what) per estimate."""
+    return [("localization", "", ""),
+            ("  true pose", f"x {truth['x_m']:.3f} m, y {truth['y_m']:.3f} m",
+             f"heading {truth['heading_deg']:.2f}°")] + [
+        (f"  {label}", f"{e['final'] * 100:.1f} cm",
+         f"final; max {e['max'] * 100:.1f} cm"
+         + (f", mean {e['mean'] * 100:.1f} cm" if "mean" in e else "") + f" ({what})")
+        for label, e, what in errors]
+
 class Drivetrain:
     """Shared state of the simulated drivetrains: the simulated gyro, the odometry pose and
     the path length. Subclasses set ``name``, ``ODOMETRY`` (the odometry class), ``INPUT``
@@ -233,6 +255,11 @@ class Drivetrain:
     def results(self) -> dict:
         """Drivetrain-specific results for the report (JSON-ready); none by default."""
         return {}
+
+    @classmethod
+    def report_rows(cls, r: dict) -> list:
+        """Extra rows (label, value, note) of the text report for a :func:`run` result."""
+        return []
 
     def _gyro_step(self) -> Rotation2d:
         """Advance the simulated gyro by the measured rotation rate; return the reading."""
@@ -539,10 +566,7 @@ class DeadWheelDrive(MecanumDrive):
 
     def _reading(self, i: int, rolled: float) -> float:
         """Wheel i's encoder after rolling ``rolled`` m more: noise, then whole ticks."""
-        u = self._uniform
-        # Box–Muller with one uniform pair per reading (the second normal is discarded).
-        x = self._rolled[i] + rolled + self.NOISE * math.sqrt(
-            -2.0 * math.log(1.0 - u())) * _cos(2.0 * math.pi * u())
+        x = self._rolled[i] + rolled + self.NOISE * _normal(self._uniform)
         self._rolled[i] = x
         return x - math.fmod(x, self.TICK)
 
@@ -579,11 +603,15 @@ class DeadWheelDrive(MecanumDrive):
 
     def results(self) -> dict:
         e = self._errors
-        truth = self.truth
-        return {"true_pose": {"x_m": truth.x, "y_m": truth.y,
-                              "heading_deg": truth.getRotation().getDegrees()},
+        return {"true_pose": _pose_dict(self.truth),
                 "drive_encoder_error_m": {"final": e[0], "max": e[1]},
                 "dead_wheel_error_m": {"final": e[2], "max": e[3]}}
+
+    @classmethod
+    def report_rows(cls, r: dict) -> list:
+        return localization_rows(r["true_pose"], (
+            ("drive-encoder error", r["drive_encoder_error_m"], "MecanumDriveOdometry"),
+            ("dead-wheel error", r["dead_wheel_error_m"], "DeadWheelOdometry")))
 
 
 
@@ -775,6 +803,12 @@ class DiffSwerveDrive(Drivetrain):
             "min_drive_factor": self.min_factor, "max_position_error_m": self.max_error,
             "max_pod_angle_error_rad": self.max_angle_error}}
 
+    @classmethod
+    def report_rows(cls, r: dict) -> list:
+        return [("differential swerve", "", "")] + [
+            (label, fmt.format(r["diffswerve"][key]), note)
+            for key, label, fmt, note in cls.DETAILS]
+
     def _angle_error(self, pod) -> None:
         e = abs(pod.position.angle.minus(pod.truth.angle).getRadians())
         if e > self.max_angle_error:
@@ -814,8 +848,124 @@ class DiffSwerveDrive(Drivetrain):
 
 
 
+_swerve_step = SwerveDrive.step
+
+
+class VisionSwerveDrive(SwerveDrive):
+    """The swerve robot of :class:`SwerveDrive` whose odometry drifts (its wheels are worn:
+    the robot moves ``EFFICIENCY`` of what the encoders claim), localized twice against
+    a simulated truth: by SwerveDriveOdometry alone and by SwerveDrivePoseEstimator fed
+    with simulated AprilTag poses (``--vision``).
+
+    The camera sees the true pose every ``VISION_EVERY`` steps, with ``LATENCY`` s of
+    delay and Gaussian noise (``NOISE_XY`` m, ``NOISE_THETA`` rad, seeded); the
+    measurement is added with its capture timestamp. Time is the simulation's (steps ×
+    20 ms), passed with ``updateWithTime``."""
+
+    name = "swerve"
+    ODOMETRY = SwerveDrivePoseEstimator
+    CHAIN = SwerveDrive.CHAIN[:2] + (
+        "cosineScaleInPlace, wheel lag → SwerveDriveOdometry.update (odometry only) and",
+        "SwerveDrivePoseEstimator.updateWithTime + addVisionMeasurement (camera)")
+    GYRO = ("true heading: the robot's true rotation rate integrated over each step", "")
+    EFFICIENCY = 0.95                   # true / encoder-claimed translation (worn wheels)
+    VISION_EVERY = 2                    # steps between camera frames (25 Hz)
+    LATENCY = 0.06                      # s from capture to addVisionMeasurement (3 steps)
+    NOISE_XY = 0.03                     # m, 1 σ
+    NOISE_THETA = 0.02                  # rad, 1 σ
+    SEED = 4915
+
+    __slots__ = ("estimator", "truth", "_past", "_uniform", "_step_index", "_t", "_errors",
+                 "_vision_std")
+
+    def __init__(self, max_speed: float) -> None:
+        super().__init__(max_speed)
+        self.estimator = SwerveDrivePoseEstimator(
+            self.kinematics, self.gyro, self.positions, Pose2d(),
+            (0.1, 0.1, 0.1), (0.5, 0.5, 0.5))
+        self.truth = Pose2d()
+        lag = round(self.LATENCY / DT)
+        self._past = [Pose2d()] * (lag + 1)      # true poses of the last lag + 1 steps
+        self._uniform = random.Random(self.SEED).random
+        self._step_index = 0
+        self._t = 0.0
+        # final, max and summed error of the odometry-only and the estimated pose, m
+        self._errors = array("d", [0.0] * 6)
+
+    def describe(self) -> str:
+        return (super().describe() + f";\n           worn wheels: the robot moves "
+                f"{self.EFFICIENCY:g} of what the encoders claim; camera every "
+                f"{self.VISION_EVERY * DT * 1000:.0f} ms,\n           {self.LATENCY * 1000:.0f} ms "
+                f"latency, noise σ = {self.NOISE_XY * 100:g} cm, "
+                f"{math.degrees(self.NOISE_THETA):.1f}°")
+
+    def step(self, command: ChassisVelocities) -> None:
+        """Run one control period for a field-relative ``command`` (overwritten)."""
+        # Odometry only; self.measured = the encoders' claim. (super() would allocate.)
+        _swerve_step(self, command)
+        m = self.measured
+        e = self.EFFICIENCY
+        # The truth: the claimed motion shrunk by the wheels' wear (the gyro is exact).
+        self.truth = self.truth.exp(Twist2d(m.vx * DT * e, m.vy * DT * e, m.omega * DT))
+        t = self._t + DT
+        self._t = t
+        estimate = self.estimator.updateWithTime(t, self.gyro, self.positions)
+        past = self._past
+        i = self._step_index
+        lag = len(past) - 1
+        past[i % (lag + 1)] = self.truth
+        if i >= lag and i % self.VISION_EVERY == 0:
+            seen = past[(i - lag) % (lag + 1)]
+            u = self._uniform
+            self.estimator.addVisionMeasurement(
+                Pose2d(seen.x + self.NOISE_XY * _normal(u), seen.y + self.NOISE_XY * _normal(u),
+                       seen.getRotation().plus(_from_radians(self.NOISE_THETA * _normal(u)))),
+                t - lag * DT)
+            estimate = self.estimator.getEstimatedPosition()
+        self._step_index = i + 1 if i < 200 else i + 1 - self.VISION_EVERY * (lag + 1)
+        truth = self.truth
+        err = self._errors
+        pose = self.pose
+        x = _hypot(pose.x - truth.x, pose.y - truth.y)
+        err[0] = x
+        err[4] += x
+        if x > err[1]:
+            err[1] = x
+        x = _hypot(estimate.x - truth.x, estimate.y - truth.y)
+        err[2] = x
+        err[5] += x
+        if x > err[3]:
+            err[3] = x
+
+    def results(self) -> dict:
+        e = self._errors
+        n = max(1, round(self._t / DT))
+        return {"vision": True, "true_pose": _pose_dict(self.truth),
+                "estimated_pose": _pose_dict(self.estimator.getEstimatedPosition()),
+                "odometry_error_m": {"final": e[0], "max": e[1], "mean": e[4] / n},
+                "estimator_error_m": {"final": e[2], "max": e[3], "mean": e[5] / n}}
+
+    @classmethod
+    def report_rows(cls, r: dict) -> list:
+        return localization_rows(r["true_pose"], (
+            ("odometry-only error", r["odometry_error_m"], "SwerveDriveOdometry"),
+            ("estimator error", r["estimator_error_m"], "SwerveDrivePoseEstimator + vision")))
+
+
 DRIVETRAINS = {cls.name: cls for cls in (SwerveDrive, MecanumDrive, DifferentialDrive,
                                          DeadWheelDrive, DiffSwerveDrive)}
+
+
+VISION_DRIVETRAINS = {"swerve": VisionSwerveDrive}
+
+
+def drivetrain_class(name: str, vision: bool = False) -> type:
+    """The simulated drivetrain for ``--drivetrain name`` (with ``--vision``)."""
+    if vision:
+        if name not in VISION_DRIVETRAINS:
+            raise ValueError(f"--vision is simulated for {', '.join(VISION_DRIVETRAINS)} only")
+        return VISION_DRIVETRAINS[name]
+    return DRIVETRAINS[name]
 
 
 # ---------------------------------------------------------------------------------------
@@ -826,9 +976,10 @@ class Simulation:
 
     __slots__ = ("script", "drive", "command")
 
-    def __init__(self, drivetrain: str, max_speed: float, max_omega: float) -> None:
+    def __init__(self, drivetrain: str, max_speed: float, max_omega: float,
+                 vision: bool = False) -> None:
         self.script = JoystickScript(max_speed, max_omega)
-        self.drive = DRIVETRAINS[drivetrain](max_speed)
+        self.drive = drivetrain_class(drivetrain, vision)(max_speed)
         self.command = ChassisVelocities()
 
     def step(self) -> None:
@@ -846,8 +997,8 @@ def prepared_simulation(args) -> Simulation:
     (caches, specialised bytecode) and is freed by reference counting, which refills the
     freelists the measured loop draws from."""
     gc.collect()
-    sim = Simulation(args.drivetrain, args.max_speed, args.max_omega)
-    warm = Simulation(args.drivetrain, args.max_speed, args.max_omega)
+    sim = Simulation(args.drivetrain, args.max_speed, args.max_omega, args.vision)
+    warm = Simulation(args.drivetrain, args.max_speed, args.max_omega, args.vision)
     step = warm.step
     for _ in itertools.repeat(None, round(JoystickScript.CYCLE / DT)):
         step()
@@ -921,15 +1072,14 @@ def _percentile(sorted_samples, p: float) -> int:
     return sorted_samples[max(0, min(n - 1, math.ceil(p / 100.0 * n) - 1))]
 
 
-def _pose_dict(drive) -> dict:
-    pose = drive.pose
+def _pose_dict(pose) -> dict:
     return {"x_m": pose.x, "y_m": pose.y, "heading_deg": pose.getRotation().getDegrees()}
 
 
 def run(args) -> dict:
     """Run both passes and return the results as a JSON-ready dict.
 
-    ``args`` needs ``drivetrain`` (a key of :data:`DRIVETRAINS`), ``seconds``,
+    ``args`` needs ``drivetrain`` (a key of :data:`DRIVETRAINS`), ``vision``, ``seconds``,
     ``max_speed`` and ``max_omega``; the command line validates them."""
     steps = round(args.seconds / DT)
     sim1, samples, wall, gc_growth, collections = timing_pass(args, steps)
@@ -937,10 +1087,10 @@ def run(args) -> dict:
     ordered = sorted(samples)
     mean = sum(samples) / steps
     p50, p99, worst = _percentile(ordered, 50), _percentile(ordered, 99), ordered[-1]
-    pose1, pose2 = _pose_dict(sim1.drive), _pose_dict(alloc["sim"].drive)
+    pose1, pose2 = _pose_dict(sim1.drive.pose), _pose_dict(alloc["sim"].drive.pose)
     return {
         "drivetrain": args.drivetrain,
-        "odometry": DRIVETRAINS[args.drivetrain].ODOMETRY.__name__,
+        "odometry": drivetrain_class(args.drivetrain, args.vision).ODOMETRY.__name__,
         "robot_seconds": steps * DT,
         "steps": steps,
         "dt_s": DT,
@@ -971,7 +1121,7 @@ def run(args) -> dict:
 
 def header(args, steps: int) -> str:
     """The text report's header: robot, script, step chain and run length."""
-    drive = DRIVETRAINS[args.drivetrain](args.max_speed)
+    drive = drivetrain_class(args.drivetrain, args.vision)(args.max_speed)
     segments = " · ".join(f"{name} {d:g} s" for name, d in JoystickScript.SEGMENTS)
     return "\n".join([
         f"drivekin {drivekin.__version__} — simulated 50 Hz {drive.name} drive control loop, "
@@ -1019,21 +1169,7 @@ def table(r: dict) -> str:
         ("  distance travelled", f"{r['distance_m']:.2f} m", "odometry path length"),
         ("  passes agree", "yes" if r["passes_agree"] else "NO", "pass 1 pose == pass 2 pose"),
     ]
-    if "dead_wheel_error_m" in r:
-        t, de, dw = r["true_pose"], r["drive_encoder_error_m"], r["dead_wheel_error_m"]
-        rows += [
-            ("localization", "", ""),
-            ("  true pose", f"x {t['x_m']:.3f} m, y {t['y_m']:.3f} m",
-             f"heading {t['heading_deg']:.2f}°"),
-            ("  drive-encoder error", f"{de['final'] * 100:.1f} cm",
-             f"final; max {de['max'] * 100:.1f} cm (MecanumDriveOdometry)"),
-            ("  dead-wheel error", f"{dw['final'] * 100:.1f} cm",
-             f"final; max {dw['max'] * 100:.1f} cm (DeadWheelOdometry)"),
-        ]
-    if "diffswerve" in r:
-        rows.append(("differential swerve", "", ""))
-        rows += [(label, fmt.format(r["diffswerve"][key]), note)
-                 for key, label, fmt, note in DiffSwerveDrive.DETAILS]
+    rows += drivetrain_class(r["drivetrain"], r.get("vision", False)).report_rows(r)
     w0 = max(len(a) for a, _, _ in rows)
     w1 = max(len(b) for _, b, _ in rows)
     return "\n".join(f"{a:<{w0}}  {b:>{w1}}  {c}".rstrip() if b else a for a, b, c in rows)

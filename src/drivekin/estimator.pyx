@@ -16,7 +16,6 @@ After warm-up, ``update``/``updateWithTime`` and ``addVisionMeasurement`` make n
 calls: the pose history and the vision records live in arrays that grow only when the
 history needs more room, and returned poses come from the Pose2d freelist.
 """
-cimport cython
 from cpython.mem cimport PyMem_Free, PyMem_Malloc, PyMem_Realloc
 from libc.math cimport isfinite, sqrt
 from libc.string cimport memmove
@@ -27,7 +26,7 @@ import time
 from drivekin._types cimport pose2_t, rot2_t
 from drivekin._numbers cimport read_floats
 from drivekin._kernels cimport (pose, pose_interpolate, pose_relative_to, pose_transform_by,
-                                rot_rad, rot_radians, rot_times, vec)
+                                rot_times, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.kinematics cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
@@ -42,8 +41,8 @@ from drivekin._errors import type_name
 cnp.import_array()
 
 cdef double HISTORY = 1.5        # s of odometry poses kept (WPILib's kBufferDuration)
-cdef Py_ssize_t INITIAL_SAMPLES = 128    # 1.5 s at 50 Hz is 76 samples
-cdef Py_ssize_t INITIAL_RECORDS = 16
+cdef Py_ssize_t INITIAL_SAMPLES = 128   # 1.5 s of updates at 85 Hz (50 Hz: 76 samples)
+cdef Py_ssize_t INITIAL_RECORDS = 128  # 1.5 s of vision at 85 Hz
 
 
 # ---------------------------------------------------------------------------------------
