@@ -1,4 +1,4 @@
-"""End-to-end tests of the ``python -m drivekin`` demo (src/drivekin/demo.py, command line in
+"""End-to-end tests of the ``python -m drivekin`` demo (src/drivekin/demo/, command line in
 src/drivekin/__main__.py).
 
 Each test runs the demo in a subprocess with the interpreter running the tests, so the

@@ -1,81 +1,12 @@
-"""The ``python -m drivekin`` demo: a simulated 50 Hz drivetrain control loop on the
-allocation-free path (the command line itself is in ``drivekin/__main__.py``).
-
-The demo drives a swerve, mecanum or differential robot (``--drivetrain``) through a
-scripted joystick sequence for a few minutes of robot time and reports how long each
-20 ms control step took and whether the loop allocated memory. One step is exactly what a
-robot program does every 20 ms; for the default four-module swerve robot::
-
-    joystick script  -> ChassisVelocities (field-relative, one mutable object)
-    toRobotRelativeInto(gyro, cv)              field-relative -> robot-relative
-    cv.discretizeInto(0.02, cv)                remove the translate-while-turning drift
-    kin.toSwerveModuleVelocitiesInto(cv, targets)        inverse kinematics, in place
-    SwerveDriveKinematics.desaturateWheelVelocitiesInPlace(targets, max_speed)
-    module response model                      optimize(InPlace), rate-limited steering,
-                                               cosineScale(InPlace), lagged wheel, encoders
-    kin.toChassisVelocitiesInto(states, cv2)   simulated gyro: heading += omega * dt
-    pose = odometry.update(gyro, positions)    SwerveDriveOdometry; Pose2d from a freelist
-
-Mecanum: the same first two lines, then ``toWheelVelocitiesInto`` → ``desaturateInPlace``
-on a MecanumDriveWheelVelocities → first-order lag per wheel → wheel distances in one
-mutable MecanumDriveWheelPositions → ``MecanumDriveOdometry.update(gyro, positions)``.
-Differential (arcade drive): the forward and rotation sticks as robot-relative vx and
-omega, the sideways stick unused → ``toWheelVelocitiesInto`` → ``desaturateInPlace`` →
-lag per side → ``DifferentialDriveOdometry.update(gyro, left, right)``. In all three the
-simulated gyro is the true heading: the wheel model's forward kinematics
-(``toChassisVelocitiesInto`` of the measured wheel velocities) integrated over each step.
-Differential swerve (``--drivetrain diffswerve``, see :class:`DiffSwerveDrive`): the swerve
-chain up to inverse kinematics, then per pod a steering rate towards the optimized target,
-``desaturateModuleVelocitiesInPlace`` (one factor for all wheels, at a motor limit equal to
-``--max-speed`` of pure driving), ``toMotorVelocitiesInto`` → ``desaturateMotorVelocitiesInPlace``,
-lagged motors driving a simulated differential, and ``toModulePositionInto`` from the
-integrated motor positions as the odometry input; a second odometry fed with the
-simulated pods' own positions gives the truth the report compares with.
-
-Measurement, in two passes over identical fresh simulations (so the poses must agree):
-
-1. *Timing pass*, tracemalloc off: ``time.perf_counter_ns()`` around every step; the loop
-   runs flat out (no sleeping), the 20 ms period is only the budget the latencies are
-   compared with. The two clock reads (~0.1 µs) are included in each sample.
-2. *Allocation pass*, tracemalloc on (it slows every allocation down, so it must not
-   distort the timings): traced bytes are read once before the loop, the peak is reset,
-   and after the loop the peak and current traced bytes are compared with the start;
-   ``sys.getallocatedblocks()`` before and after gives the net change in live blocks.
-   Around the loop, ``drivekin._alloccount.AllocationCounter`` hooks CPython's RAW, MEM
-   and OBJ allocator domains and counts every malloc/calloc/realloc call: 0 calls means
-   the steady-state loop is served entirely by freelists (floats, drivekin value
-   objects) and preallocated objects. The tracemalloc figures are a second opinion.
-
-Before each pass: ``gc.collect()``, then the measured simulation is built, then a
-throw-away simulation runs one full script cycle as warm-up (caches, specialised
-bytecode) and is freed, refilling the freelists (see :func:`prepared_simulation`).
-
-``--drivetrain deadwheel`` runs the mecanum robot with wheel slip and localizes it twice,
-by its drive encoders and by three dead wheels (Road Runner's standard layout, encoder
-ticks and noise), reporting both odometries' errors against the simulated truth (see
-:class:`DeadWheelDrive`).
-
-``--vision`` (swerve) wears the wheels so that the odometry drifts and adds a simulated
-camera whose delayed, noisy AprilTag poses go to a SwerveDrivePoseEstimator; both
-estimates are compared with the truth (see :class:`VisionSwerveDrive`).
-
-Only the standard library and drivekin are used. Drivetrains plug in through
-:data:`DRIVETRAINS`: a :class:`Drivetrain` subclass with ``pose``, ``distance``,
-``describe()``, ``step(command)`` and optionally ``results()``.
-"""
+"""The simulated drivetrains of the demo: each turns a command into wheel motion, a
+simulated gyro and its drivekin odometry (or estimator) update, in one 20 ms step."""
 from __future__ import annotations
 
-import gc
-import itertools
 import math
 import random
-import sys
-import time
-import tracemalloc
 from array import array
+from typing import Any
 
-import drivekin
-from drivekin._alloccount import AllocationCounter
 from drivekin import (
     ChassisVelocities,
     DeadWheelKinematics,
@@ -100,9 +31,7 @@ from drivekin import (
     Translation2d,
     Twist2d,
 )
-
-DT = 0.02                   # control period, s (50 Hz)
-BUDGET_NS = 20_000_000      # the same period in ns, for the budget columns
+from drivekin.demo.script import DT
 
 _cos = math.cos
 _hypot = math.hypot
@@ -115,93 +44,9 @@ _desaturate_in_place = SwerveDriveKinematics.desaturateWheelVelocitiesInPlace
 # values are fine: they come from freelists.
 
 
-# ---------------------------------------------------------------------------------------
-# Driver input
+def _pose_dict(pose) -> dict:
+    return {"x_m": pose.x, "y_m": pose.y, "heading_deg": pose.getRotation().getDegrees()}
 
-class JoystickScript:
-    """A deterministic driver: field-relative stick values, repeated every 30 s.
-
-    Segments (stick values in [-1, 1]; translation scaled by ``max_speed`` m/s, rotation
-    by ``max_omega`` rad/s):
-
-    ========  ====  ====================================================================
-    forward    3 s  +x at 0.5
-    strafe     3 s  +y (left) at 0.5
-    spin       3 s  rotate counter-clockwise at 0.5, no translation
-    figure-8  16 s  one lemniscate-like loop (x ~ sin ωt, y ~ sin 2ωt, returns to its
-                    start) while rotating at 0.35
-    return     3 s  -x and -y at 0.5, back towards the start
-    stop       2 s  sticks released
-    ========  ====  ====================================================================
-    """
-
-    SEGMENTS = (
-        ("forward", 3.0),
-        ("strafe", 3.0),
-        ("spin", 3.0),
-        ("figure-8", 16.0),
-        ("return", 3.0),
-        ("stop", 2.0),
-    )
-    CYCLE = sum(d for _, d in SEGMENTS)
-
-    __slots__ = ("_max_speed", "_max_omega", "_writers", "_durations", "_count", "_index",
-                 "_t", "_fig8_w")
-
-    def __init__(self, max_speed: float, max_omega: float) -> None:
-        self._max_speed = float(max_speed)
-        self._max_omega = float(max_omega)
-        # Plain functions, not bound methods: bound methods stored on self would form a
-        # reference cycle, leaving discarded simulations to the cyclic GC.
-        cls = type(self)
-        writers = {
-            "forward": cls._forward, "strafe": cls._strafe, "spin": cls._spin,
-            "figure-8": cls._figure8, "return": cls._return, "stop": cls._stop,
-        }
-        self._writers = tuple(writers[name] for name, _ in self.SEGMENTS)
-        self._durations = tuple(d for _, d in self.SEGMENTS)
-        self._count = len(self.SEGMENTS)
-        self._fig8_w = 2.0 * math.pi / dict(self.SEGMENTS)["figure-8"]
-        self._index = 0          # current segment (small int: no allocation)
-        self._t = 0.0            # time inside the segment, s
-
-    def write(self, cv: ChassisVelocities) -> None:
-        """Write this step's field-relative command (m/s, rad/s) into ``cv`` and advance
-        the script by one period."""
-        t = self._t
-        if t >= self._durations[self._index] - 1e-9:
-            self._index = (self._index + 1) % self._count
-            t = 0.0
-        self._writers[self._index](self, t, cv)
-        self._t = t + DT
-
-    def _set(self, cv, jx, jy, jr):
-        cv.vx = jx * self._max_speed
-        cv.vy = jy * self._max_speed
-        cv.omega = jr * self._max_omega
-
-    def _forward(self, t, cv):
-        self._set(cv, 0.5, 0.0, 0.0)
-
-    def _strafe(self, t, cv):
-        self._set(cv, 0.0, 0.5, 0.0)
-
-    def _spin(self, t, cv):
-        self._set(cv, 0.0, 0.0, 0.5)
-
-    def _figure8(self, t, cv):
-        w = self._fig8_w
-        self._set(cv, 0.3 * _cos(w * t), 0.3 * _cos(2.0 * w * t), 0.35)
-
-    def _return(self, t, cv):
-        self._set(cv, -0.5, -0.5, 0.0)
-
-    def _stop(self, t, cv):
-        self._set(cv, 0.0, 0.0, 0.0)
-
-
-# ---------------------------------------------------------------------------------------
-# Drivetrains
 
 def _normal(uniform) -> float:
     """A standard normal deviate from ``uniform`` (a bound ``random.Random.random``: bound
@@ -233,14 +78,15 @@ class Drivetrain:
     distances; the odometry trusts it for the heading."""
 
     name = ""
-    ODOMETRY = None
+    ODOMETRY: type = object
     INPUT = ""
-    CHAIN = ()
-    GYRO = ("true heading integrated from the simulated",
-            "wheels (toChassisVelocitiesInto of the measured wheel velocities)")
+    CHAIN: tuple[str, ...] = ()
+    GYRO: tuple[str, str] = ("true heading integrated from the simulated",
+                             "wheels (toChassisVelocitiesInto of the measured wheel velocities)")
 
     __slots__ = ("max_speed", "measured", "gyro", "odometry", "pose", "distance",
                  "_gyro_rad", "_x", "_y")
+    odometry: Any                       # the subclass's odometry (or estimator) object
 
     def __init__(self, max_speed: float) -> None:
         self.max_speed = float(max_speed)
@@ -251,6 +97,14 @@ class Drivetrain:
         self._x = 0.0
         self._y = 0.0
         # Subclasses create ``self.odometry`` and then set ``self.pose`` from it.
+
+    def describe(self) -> str:
+        """One line (or a few) on the simulated robot, for the report's header."""
+        raise NotImplementedError
+
+    def step(self, command: ChassisVelocities) -> None:
+        """Run one 20 ms control period for the driver's ``command``."""
+        raise NotImplementedError
 
     def results(self) -> dict:
         """Drivetrain-specific results for the report (JSON-ready); none by default."""
@@ -335,9 +189,9 @@ class SwerveDrive(Drivetrain):
     the simulated gyro and SwerveDriveOdometry, all writing into preallocated objects."""
 
     name = "swerve"
-    ODOMETRY = SwerveDriveOdometry
+    ODOMETRY: type = SwerveDriveOdometry
     INPUT = "field-relative joystick"
-    CHAIN = ("toRobotRelativeInto → discretizeInto → toSwerveModuleVelocitiesInto →",
+    CHAIN: tuple[str, ...] = ("toRobotRelativeInto → discretizeInto → toSwerveModuleVelocitiesInto →",
              "desaturateWheelVelocitiesInPlace → module model: optimizeInPlace, steering limit,",
              "cosineScaleInPlace, wheel lag → SwerveDriveOdometry.update(gyro, positions)")
     HALF_TRACK = 0.3        # m, module offset from the robot centre in x and y
@@ -387,9 +241,9 @@ class MecanumDrive(Drivetrain):
     and MecanumDriveOdometry."""
 
     name = "mecanum"
-    ODOMETRY = MecanumDriveOdometry
+    ODOMETRY: type = MecanumDriveOdometry
     INPUT = "field-relative joystick"
-    CHAIN = ("toRobotRelativeInto → discretizeInto → toWheelVelocitiesInto → desaturateInPlace",
+    CHAIN: tuple[str, ...] = ("toRobotRelativeInto → discretizeInto → toWheelVelocitiesInto → desaturateInPlace",
              "→ wheel lag → MecanumDriveWheelPositions (in place) → "
              "MecanumDriveOdometry.update")
     HALF_LENGTH = 0.3       # m, wheel offset from the robot centre in x
@@ -959,7 +813,7 @@ DRIVETRAINS = {cls.name: cls for cls in (SwerveDrive, MecanumDrive, Differential
 VISION_DRIVETRAINS = {"swerve": VisionSwerveDrive}
 
 
-def drivetrain_class(name: str, vision: bool = False) -> type:
+def drivetrain_class(name: str, vision: bool = False) -> type[Drivetrain]:
     """The simulated drivetrain for ``--drivetrain name`` (with ``--vision``)."""
     if vision:
         if name not in VISION_DRIVETRAINS:
@@ -968,208 +822,3 @@ def drivetrain_class(name: str, vision: bool = False) -> type:
     return DRIVETRAINS[name]
 
 
-# ---------------------------------------------------------------------------------------
-# Simulation and measurement
-
-class Simulation:
-    """Driver script + drivetrain; :meth:`step` is one 20 ms control period."""
-
-    __slots__ = ("script", "drive", "command")
-
-    def __init__(self, drivetrain: str, max_speed: float, max_omega: float,
-                 vision: bool = False) -> None:
-        self.script = JoystickScript(max_speed, max_omega)
-        self.drive = drivetrain_class(drivetrain, vision)(max_speed)
-        self.command = ChassisVelocities()
-
-    def step(self) -> None:
-        self.script.write(self.command)
-        self.drive.step(self.command)
-
-
-def prepared_simulation(args) -> Simulation:
-    """Return a fresh simulation (robot at the origin, script at t = 0) with the process
-    warmed up for it.
-
-    Order matters: ``gc.collect()`` first, so pending garbage is not collected inside the
-    measured loop (a full collection also empties CPython's float/tuple freelists); then
-    the measured simulation is built; then a throw-away simulation runs one script cycle
-    (caches, specialised bytecode) and is freed by reference counting, which refills the
-    freelists the measured loop draws from."""
-    gc.collect()
-    sim = Simulation(args.drivetrain, args.max_speed, args.max_omega, args.vision)
-    warm = Simulation(args.drivetrain, args.max_speed, args.max_omega, args.vision)
-    step = warm.step
-    for _ in itertools.repeat(None, round(JoystickScript.CYCLE / DT)):
-        step()
-    del warm, step
-    return sim
-
-
-def timing_pass(args, steps: int):
-    """Run ``steps`` steps on a fresh simulation, timing each one; tracemalloc is off."""
-    sim = prepared_simulation(args)
-    samples = array("q", bytes(8 * steps))
-    step = sim.step
-    clock = time.perf_counter_ns
-    gcc = array("q", [0] * 6)               # gc.get_count(): start, end (as in pass 2)
-    col0 = sum(s["collections"] for s in gc.get_stats())
-    gcc[0], gcc[1], gcc[2] = gc.get_count()
-    wall0 = clock()
-    for i in range(steps):
-        t0 = clock()
-        step()
-        samples[i] = clock() - t0
-    wall = clock() - wall0
-    gcc[3], gcc[4], gcc[5] = gc.get_count()
-    col1 = sum(s["collections"] for s in gc.get_stats())
-    growth = (gcc[3] - gcc[0], gcc[4] - gcc[1], gcc[5] - gcc[2])
-    return sim, samples, wall, growth, col1 - col0
-
-
-def allocation_pass(args, steps: int):
-    """Run ``steps`` steps on a fresh simulation under tracemalloc (no timing)."""
-    sim = prepared_simulation(args)
-    step = sim.step
-    loop = itertools.repeat(None, steps)    # created before the measurement starts
-    # Readings are stored into preallocated arrays, so the tuples and ints the calls
-    # return are freed at once and count neither as live blocks nor towards the peak.
-    mem = array("q", [0, 0, 0])             # traced bytes: start, end, peak
-    blk = array("q", [0, 0])                # sys.getallocatedblocks(): start, end
-    gcc = array("q", [0] * 6)               # gc.get_count(): start, end
-    counter = AllocationCounter()
-    # Bound once here: looking the methods up inside the measured region would allocate.
-    count_on, count_off = counter.__enter__, counter.__exit__
-    already = tracemalloc.is_tracing()
-    if not already:
-        tracemalloc.start()
-    gcc[0], gcc[1], gcc[2] = gc.get_count()
-    blk[0] = sys.getallocatedblocks()
-    mem[0] = tracemalloc.get_traced_memory()[0]
-    tracemalloc.reset_peak()                # peak := current == mem[0] (temporaries freed)
-    count_on()                              # hooks the allocators on top of tracemalloc's
-    for _ in loop:
-        step()
-    count_off(None, None, None)
-    mem[1], mem[2] = tracemalloc.get_traced_memory()
-    blk[1] = sys.getallocatedblocks()
-    gcc[3], gcc[4], gcc[5] = gc.get_count()
-    if not already:
-        tracemalloc.stop()
-    return {
-        "sim": sim,
-        "allocator_calls": counter.calls,
-        "peak_bytes": mem[2] - mem[0],
-        "net_bytes": mem[1] - mem[0],
-        "net_blocks": blk[1] - blk[0],
-        "gc_growth": (gcc[3] - gcc[0], gcc[4] - gcc[1], gcc[5] - gcc[2]),
-    }
-
-
-def _percentile(sorted_samples, p: float) -> int:
-    """Nearest-rank percentile of an ascending sequence."""
-    n = len(sorted_samples)
-    return sorted_samples[max(0, min(n - 1, math.ceil(p / 100.0 * n) - 1))]
-
-
-def _pose_dict(pose) -> dict:
-    return {"x_m": pose.x, "y_m": pose.y, "heading_deg": pose.getRotation().getDegrees()}
-
-
-def run(args) -> dict:
-    """Run both passes and return the results as a JSON-ready dict.
-
-    ``args`` needs ``drivetrain`` (a key of :data:`DRIVETRAINS`), ``vision``, ``seconds``,
-    ``max_speed`` and ``max_omega``; the command line validates them."""
-    steps = round(args.seconds / DT)
-    sim1, samples, wall, gc_growth, collections = timing_pass(args, steps)
-    alloc = allocation_pass(args, steps)
-    ordered = sorted(samples)
-    mean = sum(samples) / steps
-    p50, p99, worst = _percentile(ordered, 50), _percentile(ordered, 99), ordered[-1]
-    pose1, pose2 = _pose_dict(sim1.drive.pose), _pose_dict(alloc["sim"].drive.pose)
-    return {
-        "drivetrain": args.drivetrain,
-        "odometry": drivetrain_class(args.drivetrain, args.vision).ODOMETRY.__name__,
-        "robot_seconds": steps * DT,
-        "steps": steps,
-        "dt_s": DT,
-        "max_speed_mps": args.max_speed,
-        "max_omega_radps": args.max_omega,
-        "latency_us": {"p50": p50 / 1e3, "p99": p99 / 1e3, "max": worst / 1e3,
-                       "mean": mean / 1e3},
-        "budget_pct": {"p99": 100.0 * p99 / BUDGET_NS, "mean": 100.0 * mean / BUDGET_NS},
-        "loop_wall_s": wall / 1e9,
-        "realtime_factor": steps * DT / (wall / 1e9),
-        "allocations": {"allocator_calls": alloc["allocator_calls"],
-                        "traced_peak_bytes": alloc["peak_bytes"],
-                        "traced_net_bytes": alloc["net_bytes"],
-                        "net_blocks": alloc["net_blocks"]},
-        "gc": {"count_growth_timing_pass": list(gc_growth),
-               "count_growth_allocation_pass": list(alloc["gc_growth"]),
-               "collections_timing_pass": collections},
-        "final_pose": pose1,
-        "distance_m": sim1.drive.distance,
-        "passes_agree": (pose1 == pose2 and sim1.drive.distance == alloc["sim"].drive.distance
-                         and sim1.drive.results() == alloc["sim"].drive.results()),
-        **sim1.drive.results(),
-    }
-
-
-# ---------------------------------------------------------------------------------------
-# Output
-
-def header(args, steps: int) -> str:
-    """The text report's header: robot, script, step chain and run length."""
-    drive = drivetrain_class(args.drivetrain, args.vision)(args.max_speed)
-    segments = " · ".join(f"{name} {d:g} s" for name, d in JoystickScript.SEGMENTS)
-    return "\n".join([
-        f"drivekin {drivekin.__version__} — simulated 50 Hz {drive.name} drive control loop, "
-        "allocation-free path",
-        f"  robot    {drive.describe()}",
-        f"  odometry {drive.ODOMETRY.__name__}, gyro = {drive.GYRO[0]}",
-        f"           {drive.GYRO[1]}",
-        f"  limits   wheel speed {args.max_speed:g} m/s, joystick rotation "
-        f"{args.max_omega:.2f} rad/s",
-        f"  script   {drive.INPUT}, repeats every {JoystickScript.CYCLE:g} s:",
-        f"           {segments}",
-        *(f"  {'step' if i == 0 else '':<8} {line}" for i, line in enumerate(drive.CHAIN)),
-        f"  run      {steps * DT:g} s robot time = {steps} steps, flat out (no sleeping);",
-        "           pass 1 times each step (tracemalloc off), pass 2 counts allocations",
-        "           (tracemalloc on); one warm-up script cycle before each pass",
-        "",
-    ])
-
-
-def table(r: dict) -> str:
-    """The text report's results table for a :func:`run` result."""
-    lat, bud, al, g, pose = (r["latency_us"], r["budget_pct"], r["allocations"], r["gc"],
-                             r["final_pose"])
-    growth = ", ".join(f"{v:+d}" for v in g["count_growth_timing_pass"])
-    growth2 = ", ".join(f"{v:+d}" for v in g["count_growth_allocation_pass"])
-    rows = [
-        ("latency per step", "", ""),
-        ("  p50", f"{lat['p50']:.2f} µs", f"{100 * lat['p50'] * 1e3 / BUDGET_NS:.3f} % of 20 ms"),
-        ("  p99", f"{lat['p99']:.2f} µs", f"{bud['p99']:.3f} % of 20 ms"),
-        ("  max", f"{lat['max']:.2f} µs", f"{100 * lat['max'] * 1e3 / BUDGET_NS:.3f} % of 20 ms"),
-        ("  mean", f"{lat['mean']:.2f} µs", f"{bud['mean']:.3f} % of 20 ms"),
-        ("  whole loop", f"{r['loop_wall_s'] * 1e3:.1f} ms",
-         f"{r['realtime_factor']:,.0f}× real time"),
-        ("allocations (pass 2)", "", ""),
-        ("  allocator calls", f"{al['allocator_calls']}",
-         f"PyMem/PyObject malloc+calloc+realloc in {r['steps']} steps"),
-        ("  traced peak - start", f"{al['traced_peak_bytes']} B", "tracemalloc"),
-        ("  traced end - start", f"{al['traced_net_bytes']} B", ""),
-        ("  live blocks end - start", f"{al['net_blocks']}", "sys.getallocatedblocks()"),
-        ("  gc.get_count() growth", f"{growth2}", f"gen 0, 1, 2 (pass 1: {growth})"),
-        ("  gc collections", f"{g['collections_timing_pass']}", "during pass 1"),
-        ("result", "", ""),
-        ("  final pose", f"x {pose['x_m']:.3f} m, y {pose['y_m']:.3f} m",
-         f"heading {pose['heading_deg']:.2f}°"),
-        ("  distance travelled", f"{r['distance_m']:.2f} m", "odometry path length"),
-        ("  passes agree", "yes" if r["passes_agree"] else "NO", "pass 1 pose == pass 2 pose"),
-    ]
-    rows += drivetrain_class(r["drivetrain"], r.get("vision", False)).report_rows(r)
-    w0 = max(len(a) for a, _, _ in rows)
-    w1 = max(len(b) for _, b, _ in rows)
-    return "\n".join(f"{a:<{w0}}  {b:>{w1}}  {c}".rstrip() if b else a for a, b, c in rows)
