@@ -730,3 +730,100 @@ register(Operation(
                                         out=dk.k.ChassisVelocities()),
                     value="[out.vx, out.vy, out.omega]", note="out: ChassisVelocities"),
     baseline="mecanum.fk"))
+
+
+# ---------------------------------------------------------------------------------------
+# Pose estimators (issue 8 §2): drivekin's SwerveDrivePoseEstimator against robotpy's
+# SwerveDrive4PoseEstimator. Every estimator is first driven for 1.5 s at 50 Hz (76
+# updates, the whole history: module distances and gyro advancing as in the odometry
+# inputs, one step of `dt` each) with a vision measurement 50 ms old after every third
+# update, so the timed calls work on a full history and a realistic set of records.
+# updateWithTime reads its time from an itertools.count (a C iterator, the same few ns on
+# both sides), so time advances by dt every call and the history slides; its readings are
+# the last fill step's, so after the first timed call the odometry twist is zero.
+
+_EST_DT = 0.02
+_EST_STEPS = 76                             # 1.5 s at 50 Hz, t = dt .. 76 dt
+_EST_LATENCY = 0.05                         # s, vision measurement age
+_EST_VISION_TS = _EST_STEPS * _EST_DT - 0.553   # inside the window, between two samples
+
+
+def _est_fill(est, g, k, positions):
+    """Drive ``est`` for _EST_STEPS updates; return the last (gyro, positions)."""
+    from _common import INPUTS as inp
+
+    vision = g.Pose2d(inp.pose[0] + 0.1, inp.pose[1] - 0.05, g.Rotation2d(inp.pose[2] + 0.02))
+    for i in range(1, _EST_STEPS + 1):
+        t = i * _EST_DT
+        gyro = g.Rotation2d(inp.robot_angle + inp.omega * t)
+        pos = tuple(k.SwerveModulePosition(p.distance * i, p.angle) for p in positions)
+        est.updateWithTime(t, gyro, pos)
+        if i % 3 == 0:
+            est.addVisionMeasurement(vision, t - _EST_LATENCY)
+    return gyro, pos
+
+
+def _rp_estimator(rp):
+    from wpimath.estimator import SwerveDrive4PoseEstimator
+
+    est = SwerveDrive4PoseEstimator(rp.kin, rp.rot, rp.spos0, rp.pose, (0.1, 0.1, 0.1),
+                                    (0.9, 0.9, 0.9))
+    gyro, pos = _est_fill(est, rp.g, rp.k, rp.spos1)
+    return dict(est=est, gyro=gyro, pos=pos)
+
+
+def _dk_estimator(dk):
+    from drivekin import SwerveDrivePoseEstimator
+
+    est = SwerveDrivePoseEstimator(dk.kin, dk.rot, dk.spos0, dk.pose, (0.1, 0.1, 0.1),
+                                   (0.9, 0.9, 0.9))
+    gyro, pos = _est_fill(est, dk.g, dk.k, dk.spos1)
+    return dict(est=est, gyro=gyro, pos=pos)
+
+
+def _clock():
+    import itertools
+
+    return itertools.count((_EST_STEPS + 1) * _EST_DT, _EST_DT).__next__
+
+
+def _vision(g):
+    return g.Pose2d(1.12, 1.93, g.Rotation2d(0.55))
+
+
+_EST_NOTE = ("same call as the façade: the estimator has one form (the returned Pose2d "
+             "comes from a freelist)")
+
+
+def _estimator_op(key, title, stmt, extra, value, targets, note):
+    def rp_setup(rp, dk):
+        return dict(_rp_estimator(rp), **extra(rp.g))
+
+    def dk_setup(rp, dk):
+        return dict(_dk_estimator(dk), **extra(dk.g))
+
+    return register(Operation(
+        key=key, title=title, suite="estimator",
+        robotpy=Case(stmt, rp_setup, value=f"rp_pose({value})",
+                     note=f"SwerveDrive4PoseEstimator; {note}"),
+        facade=Case(stmt, dk_setup, value=f"dk_pose({value})", note=note),
+        alloc_free=Case(stmt, dk_setup, value=f"dk_pose({value})", note=_EST_NOTE),
+        targets=targets))
+
+
+_estimator_op(
+    "estimator.update", "SwerveDrivePoseEstimator.updateWithTime (4 modules)",
+    "est.updateWithTime(clk(), gyro, pos)", lambda g: dict(clk=_clock()),
+    "est.getEstimatedPosition()", (0.10, 0.10),
+    "full 1.5 s history with vision records; time advances 20 ms a call")
+_estimator_op(
+    "estimator.vision", "SwerveDrivePoseEstimator.addVisionMeasurement (full 1.5 s buffer)",
+    "est.addVisionMeasurement(vision, ts)",
+    lambda g: dict(vision=_vision(g), ts=_EST_VISION_TS),
+    "est.getEstimatedPosition()", (0.25, 0.25),
+    "measurement 0.553 s old, between two samples, after 16 records")
+_estimator_op(
+    "estimator.sample", "SwerveDrivePoseEstimator.sampleAt (full 1.5 s buffer)",
+    "est.sampleAt(ts)", lambda g: dict(ts=_EST_VISION_TS),
+    "est.sampleAt(ts)", (0.15, 0.15),
+    "between two samples, with vision records before it")

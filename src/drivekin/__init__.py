@@ -25,6 +25,7 @@ from drivekin.estimator import (
     TwoDeadWheelPoseEstimator,
 )
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
+from drivekin.interpolation import TimeInterpolatableBuffer
 from drivekin.kinematics import (
     ChassisAccelerations,
     ChassisVelocities,
@@ -76,6 +77,7 @@ __all__ = [
     "SwerveModuleAcceleration",
     "SwerveModulePosition",
     "SwerveModuleVelocity",
+    "TimeInterpolatableBuffer",
     "Transform2d",
     "Translation2d",
     "Twist2d",

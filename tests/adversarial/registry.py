@@ -51,6 +51,7 @@ from drivekin import (
     SwerveModuleAcceleration as SMA,
     SwerveModulePosition as SMP,
     SwerveModuleVelocity as SMV,
+    TimeInterpolatableBuffer as TIB,
     Transform2d,
     Translation2d as T,
     Twist2d,
@@ -742,6 +743,37 @@ class ClockSource(Kind):
 
 
 API[MathSharedStore] = {"getTimestamp": S(), "setTimestampSource": S(ClockSource())}
+
+# ---- TimeInterpolatableBuffer ----------------------------------------------------
+# The registry's buffer is a double buffer (so samples are floats, and a hostile sample
+# is a hostile number) holding three samples inside its history.
+
+def _double_buffer():
+    b = TIB.createDoubleBuffer(1.5)
+    for t, v in ((0.0, 1.0), (0.25, -2.0), (1.0, 4.0)):
+        b.addSample(t, v)
+    return b
+
+
+class Interpolator(Kind):
+    """An interpolation function f(start, end, t): the valid one is the double buffer's
+    own lerp (module-level, so buffers built with it pickle). Hostile callables are not
+    generated: any callable is accepted, and what it computes is the caller's."""
+
+    def valid(self):
+        return drivekin.interpolation._lerp
+
+
+VALID[TIB] = _double_buffer
+INIT_ONCE |= {TIB}
+STATEFUL |= {TIB}
+API[TIB] = {
+    "__init__": S(Interpolator(), Num(1.5)),
+    "createBuffer": [S(Num(1.5)), S(Interpolator(), Num(1.5))],
+    "createDoubleBuffer": S(Num(1.5)),
+    "addSample": S(Num(0.5), NUM), "getSample": S(Num(0.5)),
+    "clear": S(), "getInternalBuffer": S(), "__reduce__": S(),
+}
 
 # The registry's dead-wheel layout must be the one the factories above describe.
 assert len(_dead_wheels().getWheelPoses()) == DEAD_WHEELS
