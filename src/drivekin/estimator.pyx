@@ -202,6 +202,10 @@ cdef class _PoseEstimator:
         cdef sample_t* b
         cdef Py_ssize_t lo, hi, mid, n
         cdef pose2_t p = self.odo.pose
+        # A call re-entered while the odometry read its inputs (a module-position
+        # sequence's Python protocol) may have taken the slot reserved for this one.
+        if self.start + self.count == self.cap:
+            self._reserve()
         # Remove, oldest first, every sample at least HISTORY older than t.
         while self.count > 0 and t - self.buf[self.start].t >= HISTORY:
             self.start += 1
@@ -324,6 +328,7 @@ cdef class _PoseEstimator:
         cdef pose2_t odometry_sample, vision_sample, delta, scaled
         cdef record_t* r
         cdef Py_ssize_t i, keep, lo
+        cdef double clamped
         cdef record_t* grown
         self._check()
         finite_time(timestamp, "timestamp")
@@ -349,7 +354,11 @@ cdef class _PoseEstimator:
                 memmove(self.rec, self.rec + keep, sizeof(record_t) * (self.nrec - keep))
                 self.nrec -= keep
         self._sample(timestamp, &odometry_sample)
-        self._sample_at(timestamp, &vision_sample)
+        # sampleAt(timestamp) is that same (clamped) odometry pose under the record in
+        # force at the clamped time: no second interpolation.
+        clamped = min(max(timestamp, b[0].t), b[self.count - 1].t)
+        i = self._floor_record(clamped)
+        vision_sample = odometry_sample if i < 0 else compensate(self.rec + i, odometry_sample)
         delta = pose_relative_to(visionRobotPose.p, vision_sample)
         scaled = pose(vec(self.k[0] * delta.t.x, self.k[1] * delta.t.y),
                       rot_times(delta.r, self.k[2]))
