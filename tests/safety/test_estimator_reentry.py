@@ -1,11 +1,11 @@
 """A module-position sequence whose Python protocol re-enters the pose estimator.
 
-``SwerveDrivePoseEstimator._at`` reserves one history slot, then lets the odometry read
-the positions (``PySequence_Fast`` on a non-list sequence runs its ``__getitem__``); a
-nested ``updateWithTime`` from there takes that slot, and the outer call then writes one
-sample past the end of the C array (``_after_update`` appends at ``buf[cap]``): heap
-corruption, ``double free or corruption`` on exit. Run in a subprocess with the debug
-allocator, which checks the block's trailing pad bytes when it is freed.
+An earlier ``SwerveDrivePoseEstimator._at`` reserved one history slot, then let the
+odometry read the positions (``PySequence_Fast`` on a non-list sequence runs its
+``__getitem__``); a nested ``updateWithTime`` from there took that slot, and the outer
+call then wrote one sample past the end of the C array: heap corruption, ``double free or
+corruption`` on exit. ``_after_update`` now checks for room again. Run in a subprocess with
+the debug allocator, which checks the block's trailing pad bytes when it is freed.
 """
 from __future__ import annotations
 
