@@ -454,9 +454,11 @@ cdef class SwerveDrivePoseEstimator(_PoseEstimator):
         return self._at(currentTime, gyroAngle, modulePositions)
 
     cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object modulePositions):
-        self._check()
+        if not self.ready:
+            self._check()
         finite_time(t, "currentTime")
-        self._reserve()
+        if self.start + self.count == self.cap:
+            self._reserve()
         self.swerve._step(gyroAngle, modulePositions)
         self._after_update(t)
         return new_pose(self.estimate)
@@ -498,9 +500,11 @@ cdef class MecanumDrivePoseEstimator(_PoseEstimator):
 
     cdef Pose2d _at(self, double t, Rotation2d gyroAngle,
                     MecanumDriveWheelPositions wheelPositions):
-        self._check()
+        if not self.ready:
+            self._check()
         finite_time(t, "currentTime")
-        self._reserve()
+        if self.start + self.count == self.cap:
+            self._reserve()
         self.mecanum._step(gyroAngle, wheelPositions)
         self._after_update(t)
         return new_pose(self.estimate)
@@ -565,10 +569,12 @@ cdef class DifferentialDrivePoseEstimator(_PoseEstimator):
     cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object leftDistance,
                     object rightDistance):
         cdef double l, r
-        self._check()
+        if not self.ready:
+            self._check()
         finite_time(t, "currentTime")
         wheel_pair(leftDistance, rightDistance, &l, &r, "update")
-        self._reserve()
+        if self.start + self.count == self.cap:
+            self._reserve()
         self.differential._step(gyroAngle, l, r)
         self._after_update(t)
         return new_pose(self.estimate)
@@ -616,9 +622,11 @@ cdef class TwoDeadWheelPoseEstimator(_PoseEstimator):
         return self._at(currentTime, xWheelPos, yWheelPos, gyroAngle)
 
     cdef Pose2d _at(self, double t, double xWheelPos, double yWheelPos, Rotation2d gyroAngle):
-        self._check()
+        if not self.ready:
+            self._check()
         finite_time(t, "currentTime")
-        self._reserve()
+        if self.start + self.count == self.cap:
+            self._reserve()
         self.two._step(xWheelPos, yWheelPos, gyroAngle)
         self._after_update(t)
         return new_pose(self.estimate)
@@ -656,9 +664,11 @@ cdef class DeadWheelPoseEstimator(_PoseEstimator):
         return self._at(currentTime, wheelPositions, gyroAngle)
 
     cdef Pose2d _at(self, double t, object wheelPositions, object gyroAngle):
-        self._check()
+        if not self.ready:
+            self._check()
         finite_time(t, "currentTime")
-        self._reserve()
+        if self.start + self.count == self.cap:
+            self._reserve()
         self.dead._step(wheelPositions, gyroAngle)
         self._after_update(t)
         return new_pose(self.estimate)
