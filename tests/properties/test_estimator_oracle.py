@@ -233,7 +233,8 @@ class Run:
 
     def update(self):
         data = self.data
-        if len(self.samples) >= 2 and data.draw(st.integers(0, 9)) == 0:
+        repeat = len(self.samples) >= 2 and data.draw(st.integers(0, 9)) == 0
+        if repeat:
             event("repeated update time")
             t = self.t  # a repeated time: both replace the newest sample (§8.4 needs ≥ 2)
         else:
@@ -246,7 +247,10 @@ class Run:
             while any(t - s == HISTORY for s in self.samples):
                 event("steered off the exact 1.5 s boundary (§8.2)")
                 t += 1e-6
-        self.gyro += data.draw(GYRO_STEP)
+        if not repeat:
+            # A replaced sample keeps its heading, so the step from the sample before it
+            # stays 0 or ≥ 1 mrad (two steps could add up to the cancelling range of §8).
+            self.gyro += data.draw(GYRO_STEP)
         self.wheels = self.drive.move(data, self.wheels)
         got, exp = self.drive.update(self.e, self.we, t, self.gyro, self.wheels)
         self.samples = [s for s in self.samples if not t - s >= HISTORY and s != t] + [t]
