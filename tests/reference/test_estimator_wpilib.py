@@ -274,9 +274,13 @@ class SwerveKit:
 
     @classmethod
     def make(cls, pose, state, vision):
-        return SwerveDrivePoseEstimator(swerve_kinematics() if pose != Pose2d.kZero
-                                        else cls.kinematics(),
-                                        Rotation2d.kZero, zeros4(), pose, state, vision)
+        return SwerveDrivePoseEstimator(cls.kinematics(), Rotation2d.kZero, zeros4(), pose,
+                                        state, vision)
+
+    @staticmethod
+    def make_simultaneous(pose):
+        return SwerveDrivePoseEstimator(swerve_kinematics(), Rotation2d.kZero, zeros4(), pose,
+                                        (0.1, 0.1, 0.1), (0.9, 0.9, 0.9))
 
     @staticmethod
     def wheels(d):
@@ -294,7 +298,6 @@ class SwerveKit:
     def reset_position(cls, e, gyro, d, pose):
         e.resetPosition(gyro, cls.wheels(d), pose)
 
-    simultaneous_std = ((0.1, 0.1, 0.1), (0.9, 0.9, 0.9))
 
 
 class MecanumKit:
@@ -302,14 +305,18 @@ class MecanumKit:
 
     @staticmethod
     def make(pose, state, vision):
-        if pose != Pose2d.kZero:  # testSimultaneousVisionMeasurements' layout
-            kinematics = MecanumDriveKinematics(Translation2d(1, 1), Translation2d(1, -1),
-                                                Translation2d(-1, -1), Translation2d(-1, 1))
-        else:
-            kinematics = MecanumDriveKinematics(Translation2d(1, 1), Translation2d(-1, 1),
-                                                Translation2d(1, -1), Translation2d(-1, -1))
+        kinematics = MecanumDriveKinematics(Translation2d(1, 1), Translation2d(-1, 1),
+                                            Translation2d(1, -1), Translation2d(-1, -1))
         return MecanumDrivePoseEstimator(kinematics, Rotation2d.kZero,
                                          MecanumDriveWheelPositions(), pose, state, vision)
+
+    @staticmethod
+    def make_simultaneous(pose):
+        kinematics = MecanumDriveKinematics(Translation2d(1, 1), Translation2d(1, -1),
+                                            Translation2d(-1, -1), Translation2d(-1, 1))
+        return MecanumDrivePoseEstimator(kinematics, Rotation2d.kZero,
+                                         MecanumDriveWheelPositions(), pose,
+                                         (0.1, 0.1, 0.1), (0.45, 0.45, 0.1))
 
     @staticmethod
     def update_with_time(e, t, gyro, d):
@@ -323,7 +330,6 @@ class MecanumKit:
     def reset_position(e, gyro, d, pose):
         e.resetPosition(gyro, MecanumDriveWheelPositions(d, d, d, d), pose)
 
-    simultaneous_std = ((0.1, 0.1, 0.1), (0.45, 0.45, 0.1))
 
 
 class DifferentialKit:
@@ -332,6 +338,10 @@ class DifferentialKit:
     @staticmethod
     def make(pose, state, vision):
         return DifferentialDrivePoseEstimator(Rotation2d.kZero, 0.0, 0.0, pose, state, vision)
+
+    @classmethod
+    def make_simultaneous(cls, pose):
+        return cls.make(pose, (0.02, 0.02, 0.01), (0.1, 0.1, 0.1))
 
     @staticmethod
     def update_with_time(e, t, gyro, d):
@@ -345,7 +355,6 @@ class DifferentialKit:
     def reset_position(e, gyro, d, pose):
         e.resetPosition(gyro, d, d, pose)
 
-    simultaneous_std = ((0.02, 0.02, 0.01), (0.1, 0.1, 0.1))
 
 
 class TwoDeadWheelKit:
@@ -355,11 +364,14 @@ class TwoDeadWheelKit:
     name = "twodeadwheel"
 
     @staticmethod
-    def make(pose, state=None, vision=None):
-        if state is None:  # testSimultaneousVisionMeasurements: the default std devs
-            return TwoDeadWheelPoseEstimator(1.0, 1.0, 0.0, 0.0, Rotation2d.kZero, pose)
+    def make(pose, state, vision):
         return TwoDeadWheelPoseEstimator(1.0, 1.0, 0.0, 0.0, Rotation2d.kZero, pose,
                                          state, vision)
+
+    @staticmethod
+    def make_simultaneous(pose):
+        # Upstream's test uses the default std devs and the origin.
+        return TwoDeadWheelPoseEstimator(1.0, 1.0, 0.0, 0.0, Rotation2d.kZero, Pose2d.kZero)
 
     @staticmethod
     def update_with_time(e, t, gyro, d):
@@ -373,8 +385,6 @@ class TwoDeadWheelKit:
     def reset_position(e, gyro, d, pose):
         e.resetPosition(d, 0.0, gyro, pose)
 
-    simultaneous_std = (None, None)
-
 
 @pytest.fixture(params=[SwerveKit, MecanumKit, DifferentialKit, TwoDeadWheelKit],
                 ids=lambda k: k.name)
@@ -385,11 +395,7 @@ def kit(request):
 def test_simultaneous_vision_measurements(kit):
     # All measurements stamped at the same time must each count: were only one applied,
     # 1000 rounds would converge onto it.
-    state, vision = kit.simultaneous_std
-    if kit is TwoDeadWheelKit:
-        e = kit.make(Pose2d.kZero)
-    else:
-        e = kit.make(Pose2d(1, 2, Rotation2d.kCW_Pi_2), state, vision)
+    e = kit.make_simultaneous(Pose2d(1, 2, Rotation2d.kCW_Pi_2))
     kit.update_with_time(e, 0.0, Rotation2d.kZero, 0.0)
     measurements = [Pose2d(0, 0, Rotation2d.kZero), Pose2d(3, 1, Rotation2d.kCCW_Pi_2),
                     Pose2d(2, 4, Rotation2d.kPi)]
