@@ -20,7 +20,7 @@ from drivekin import (
     TwoDeadWheelOdometry,
     Twist2d,
 )
-from wpilib_port import EPS, assert_close
+from wpilib_port import EPS, assert_close, assert_pose
 
 IN = 0.0254
 SIX = 5e-7     # tolerance for values printed to six decimals
@@ -54,13 +54,6 @@ def assert_vec(expected, v, tol=EPS):
     for e, g in zip(expected, got):
         assert_close(e, g, tol)
 
-
-def assert_pose(expected, pose, tol=EPS):
-    x, y, theta = expected
-    assert_close(x, pose.getX(), tol)
-    assert_close(y, pose.getY(), tol)
-    r = pose.getRotation()
-    assert math.hypot(r.getCos() - math.cos(theta), r.getSin() - math.sin(theta)) <= tol
 
 
 # ---- §1.1 the general solve ------------------------------------------------------------

@@ -19,18 +19,10 @@ from drivekin import (
     Rotation2d,
     Translation2d,
 )
-from wpilib_port import EPS, assert_close
+from wpilib_port import assert_close, assert_pose
 
 R = Rotation2d
 
-
-def assert_pose(expected, pose, tol=EPS):
-    x, y, theta = expected
-    assert_close(x, pose.getX(), tol)
-    assert_close(y, pose.getY(), tol)
-    r = pose.getRotation()
-    assert math.hypot(r.getCos() - math.cos(theta), r.getSin() - math.sin(theta)) <= tol, (
-        f"expected heading {math.degrees(theta)!r} deg, got {r.getDegrees()!r} deg")
 
 
 def estimator(state=(1.0, 1.0, 1.0), vision=(1.0, 1.0, 1.0), pose=Pose2d()):

@@ -26,3 +26,13 @@ def assert_close(expected, actual, tol=EPS):
     """JUnit assertEquals(expected, actual, delta): |expected - actual| <= delta."""
     assert math.isclose(actual, expected, rel_tol=0.0, abs_tol=tol), (
         f"expected {expected!r}, got {actual!r} (|diff| = {abs(actual - expected)!r} > {tol!r})")
+
+
+def assert_pose(expected, pose, tol=EPS):
+    """expected = (x m, y m, heading rad); heading compared on the unit circle."""
+    x, y, theta = expected
+    assert_close(x, pose.getX(), tol)
+    assert_close(y, pose.getY(), tol)
+    r = pose.getRotation()
+    assert math.hypot(r.getCos() - math.cos(theta), r.getSin() - math.sin(theta)) <= tol, (
+        f"expected heading {math.degrees(theta)!r} deg, got {r.getDegrees()!r} deg")

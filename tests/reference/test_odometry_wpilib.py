@@ -38,17 +38,8 @@ from drivekin import (
     SwerveModulePosition,
     Translation2d,
 )
-from wpilib_port import BL, BR, EPS, FL, FR, assert_close
+from wpilib_port import BL, BR, EPS, FL, FR, assert_close, assert_pose
 
-
-def assert_pose(expected, pose, tol=EPS):
-    """expected = (x, y, heading in radians); heading compared on the circle."""
-    x, y, theta = expected
-    assert_close(x, pose.getX(), tol)
-    assert_close(y, pose.getY(), tol)
-    r = pose.getRotation()
-    assert math.hypot(r.getCos() - math.cos(theta), r.getSin() - math.sin(theta)) <= tol, (
-        f"expected heading {math.degrees(theta)!r} deg, got {r.getDegrees()!r} deg")
 
 
 def step(start, dx, dy, dtheta):

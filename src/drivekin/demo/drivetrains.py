@@ -55,6 +55,13 @@ def _normal(uniform) -> float:
     return math.sqrt(-2.0 * math.log(1.0 - uniform())) * _cos(2.0 * math.pi * uniform())
 
 
+def _track(errors, i: int, x: float) -> None:
+    """errors[i] := x (the latest position error, m); errors[i + 1] := the largest so far."""
+    errors[i] = x
+    if x > errors[i + 1]:
+        errors[i + 1] = x
+
+
 def localization_rows(truth: dict, errors) -> list:
     """Report rows: the true pose, then (label, {final, max} in m, what) per estimate."""
     return [("localization", "", ""),
@@ -446,14 +453,8 @@ class DeadWheelDrive(MecanumDrive):
         truth = self.truth
         err = self._errors
         wheel = self.wheel_pose
-        x = _hypot(wheel.x - truth.x, wheel.y - truth.y)
-        err[0] = x
-        if x > err[1]:
-            err[1] = x
-        x = _hypot(pose.x - truth.x, pose.y - truth.y)
-        err[2] = x
-        if x > err[3]:
-            err[3] = x
+        _track(err, 0, _hypot(wheel.x - truth.x, wheel.y - truth.y))
+        _track(err, 2, _hypot(pose.x - truth.x, pose.y - truth.y))
 
     def results(self) -> dict:
         e = self._errors
@@ -780,16 +781,10 @@ class VisionSwerveDrive(SwerveDrive):
         truth = self.truth
         err = self._errors
         pose = self.pose
-        x = _hypot(pose.x - truth.x, pose.y - truth.y)
-        err[0] = x
-        err[4] += x
-        if x > err[1]:
-            err[1] = x
-        x = _hypot(estimate.x - truth.x, estimate.y - truth.y)
-        err[2] = x
-        err[5] += x
-        if x > err[3]:
-            err[3] = x
+        _track(err, 0, _hypot(pose.x - truth.x, pose.y - truth.y))
+        _track(err, 2, _hypot(estimate.x - truth.x, estimate.y - truth.y))
+        err[4] += err[0]
+        err[5] += err[2]
 
     def results(self) -> dict:
         e = self._errors
