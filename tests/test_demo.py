@@ -138,8 +138,11 @@ def test_vision_mode_reports_odometry_and_estimator_against_the_truth():
     allocations = dict(a["allocations"])
     assert allocations.pop("net_blocks") <= 0
     assert allocations == {"allocator_calls": 0, "traced_peak_bytes": 0, "traced_net_bytes": 0}
+    lat = a["estimator_latency_us"]
+    assert 0.0 < lat["p50"] <= lat["p99"] <= lat["max"] and lat["mean"] > 0.0
     text = run_demo("--vision", "--seconds", "1")
     assert "estimator error" in text.stdout and "odometry-only error" in text.stdout
+    assert "estimator per step" in text.stdout
     refused = run_demo("--vision", "--drivetrain", "mecanum", "--seconds", "1")
     assert refused.returncode == 2 and "--vision" in refused.stderr
 

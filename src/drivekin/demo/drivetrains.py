@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 import random
+import time
 from array import array
 from typing import Any
 
@@ -35,6 +36,7 @@ from drivekin.demo.script import DT
 
 _cos = math.cos
 _hypot = math.hypot
+_clock_ns = time.perf_counter_ns
 _from_radians = Rotation2d.fromRadians
 _desaturate_in_place = SwerveDriveKinematics.desaturateWheelVelocitiesInPlace
 
@@ -121,6 +123,14 @@ class Drivetrain:
     def report_rows(cls, r: dict) -> list:
         """Extra rows (label, value, note) of the text report for a :func:`run` result."""
         return []
+
+    def start_timing(self, steps: int) -> None:
+        """Called before the timing pass (never before the allocation pass): drivetrains
+        that time a part of their step allocate their sample array here."""
+
+    def timing_results(self) -> dict:
+        """Results of the timing pass only (JSON-ready); none by default."""
+        return {}
 
     def _gyro_step(self) -> Rotation2d:
         """Advance the simulated gyro by the measured rotation rate; return the reading."""
@@ -731,7 +741,7 @@ class VisionSwerveDrive(SwerveDrive):
     SEED = 4915
 
     __slots__ = ("estimator", "truth", "_past", "_uniform", "_step_index", "_t", "_errors",
-                 "_vision_std")
+                 "_est_ns", "_est_count")
 
     def __init__(self, max_speed: float) -> None:
         super().__init__(max_speed)
@@ -746,6 +756,8 @@ class VisionSwerveDrive(SwerveDrive):
         self._t = 0.0
         # final, max and summed error of the odometry-only and the estimated pose, m
         self._errors = array("d", [0.0] * 6)
+        self._est_ns: array | None = None       # estimator time per step (timing pass)
+        self._est_count = 0
 
     def describe(self) -> str:
         return (super().describe() + f";\n           worn wheels: the robot moves "
@@ -764,19 +776,28 @@ class VisionSwerveDrive(SwerveDrive):
         self.truth = self.truth.exp(Twist2d(m.vx * DT * e, m.vy * DT * e, m.omega * DT))
         t = self._t + DT
         self._t = t
-        estimate = self.estimator.updateWithTime(t, self.gyro, self.positions)
         past = self._past
         i = self._step_index
         lag = len(past) - 1
         past[i % (lag + 1)] = self.truth
+        frame = None                    # this step's camera measurement, if any
         if i >= lag and i % self.VISION_EVERY == 0:
             seen = past[(i - lag) % (lag + 1)]
             u = self._uniform
-            self.estimator.addVisionMeasurement(
-                Pose2d(seen.x + self.NOISE_XY * _normal(u), seen.y + self.NOISE_XY * _normal(u),
-                       seen.getRotation().plus(_from_radians(self.NOISE_THETA * _normal(u)))),
-                t - lag * DT)
+            frame = Pose2d(seen.x + self.NOISE_XY * _normal(u),
+                           seen.y + self.NOISE_XY * _normal(u),
+                           seen.getRotation().plus(_from_radians(self.NOISE_THETA * _normal(u))))
+        ns = self._est_ns
+        if ns is not None:
+            t0 = _clock_ns()
+        estimate = self.estimator.updateWithTime(t, self.gyro, self.positions)
+        if frame is not None:
+            self.estimator.addVisionMeasurement(frame, t - lag * DT)
             estimate = self.estimator.getEstimatedPosition()
+        if ns is not None:
+            # Only in the timing pass, where the ints this makes are not counted.
+            ns[self._est_count] = _clock_ns() - t0
+            self._est_count += 1
         self._step_index = i + 1 if i < 200 else i + 1 - self.VISION_EVERY * (lag + 1)
         truth = self.truth
         err = self._errors
@@ -794,11 +815,30 @@ class VisionSwerveDrive(SwerveDrive):
                 "odometry_error_m": {"final": e[0], "max": e[1], "mean": e[4] / n},
                 "estimator_error_m": {"final": e[2], "max": e[3], "mean": e[5] / n}}
 
+    def start_timing(self, steps: int) -> None:
+        self._est_ns = array("q", bytes(8 * steps))
+        self._est_count = 0
+
+    def timing_results(self) -> dict:
+        if self._est_ns is None or self._est_count == 0:
+            return {}
+        ordered = sorted(self._est_ns[:self._est_count])
+        n = len(ordered)
+        return {"estimator_latency_us": {
+            "p50": ordered[(n - 1) // 2] / 1e3, "p99": ordered[min(n - 1, (99 * n) // 100)] / 1e3,
+            "max": ordered[-1] / 1e3, "mean": sum(ordered) / n / 1e3}}
+
     @classmethod
     def report_rows(cls, r: dict) -> list:
-        return localization_rows(r["true_pose"], (
+        rows = localization_rows(r["true_pose"], (
             ("odometry-only error", r["odometry_error_m"], "SwerveDriveOdometry"),
             ("estimator error", r["estimator_error_m"], "SwerveDrivePoseEstimator + vision")))
+        lat = r.get("estimator_latency_us")
+        if lat:
+            rows.append(("  estimator per step", f"{lat['p50']:.2f} µs",
+                         f"p50; p99 {lat['p99']:.2f} µs, max {lat['max']:.2f} µs "
+                         "(updateWithTime + addVisionMeasurement, pass 1)"))
+        return rows
 
 
 DRIVETRAINS = {cls.name: cls for cls in (SwerveDrive, MecanumDrive, DifferentialDrive,

@@ -55,6 +55,7 @@ def timing_pass(args, steps: int):
     """Run ``steps`` steps on a fresh simulation, timing each one; tracemalloc is off."""
     sim = prepared_simulation(args)
     samples = array("q", bytes(8 * steps))
+    sim.drive.start_timing(steps)           # drivetrains that time a part of their step
     step = sim.step
     clock = time.perf_counter_ns
     gcc = array("q", [0] * 6)               # gc.get_count(): start, end (as in pass 2)
@@ -154,6 +155,7 @@ def run(args) -> dict:
         "passes_agree": (pose1 == pose2 and sim1.drive.distance == alloc["sim"].drive.distance
                          and sim1.drive.results() == alloc["sim"].drive.results()),
         **sim1.drive.results(),
+        **sim1.drive.timing_results(),
     }
 
 
