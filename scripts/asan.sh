@@ -18,11 +18,16 @@ done
 
 runtime=$(gcc -print-file-name=libasan.so)
 [ -f "$runtime" ] || { echo "gcc has no ASan runtime (libasan.so)" >&2; exit 1; }
+cxxruntime=$(gcc -print-file-name=libstdc++.so.6)
+[ -f "$cxxruntime" ] || { echo "gcc has no libstdc++.so.6" >&2; exit 1; }
 mkdir "$work/asan-reports"
 # PYTHONMALLOC=malloc: every Python object gets its own malloc block, so ASan sees
 #   overflows and use-after-free of objects (pymalloc would hide them inside its arenas).
 # LD_PRELOAD: python itself is not instrumented; the ASan runtime must be loaded first
-#   to intercept malloc/free from the start.
+#   to intercept malloc/free from the start. libstdc++ is preloaded after it so that
+#   ASan's __cxa_throw interceptor finds the real function: otherwise the first C++
+#   exception thrown inside robotpy-wpimath (e.g. the IndexError that ends iterating a
+#   wpimath Translation2d) aborts with "CHECK failed: ... real___cxa_throw".
 # ASAN_OPTIONS:
 #   detect_leaks=0            CPython does not free everything at exit, so LeakSanitizer
 #                             would fail every process; scripts/leakcheck.py covers leaks.
@@ -38,7 +43,7 @@ mkdir "$work/asan-reports"
 run_env=(
     PYTHONPATH="$work/src${PYTHONPATH:+:$PYTHONPATH}"
     PYTHONMALLOC=malloc
-    LD_PRELOAD="$runtime"
+    LD_PRELOAD="$runtime $cxxruntime"
     ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:allocator_may_return_null=1:log_path=$work/asan-reports/asan"
     DRIVEKIN_ASAN=1
 )
