@@ -1,0 +1,648 @@
+"""Log replay: recompute a robot's odometry from a WPILib DataLog and compare it with the
+pose the robot logged (``python -m drivekin replay``; command line in ``__main__.py``).
+
+Steps, for one ``.wpilog`` file (read with :mod:`drivekin.datalog`):
+
+1. **Find the entries.** Wheel or module positions, by type unless named
+   (``positions=``): ``struct:SwerveModulePosition[]`` (swerve, M modules),
+   ``struct:MecanumDriveWheelPositions`` (mecanum), ``struct:DifferentialDriveWheelPositions``
+   (differential); dead wheels are a ``double[]`` entry that must be named, with their
+   poses. The gyro: a ``struct:Rotation2d`` entry (or a named ``double`` entry with its
+   units). The logged pose, if any: a ``struct:Pose2d`` entry. When several entries of
+   a type exist, the one whose name contains "gyro" (for the gyro) or "odometry" (for
+   the pose) is taken if exactly one does; otherwise the replay stops and lists them.
+   Entries under ``/drivekin/`` (an earlier replay's output) are never picked.
+2. **Geometry.** Module (or mecanum wheel) offsets from the options, else from a
+   ``struct:SwerveDriveKinematics__M`` / ``struct:MecanumDriveKinematics`` entry in the
+   log. Dead wheels: their poses (x, y, rolling direction). ``wheelScale`` multiplies every
+   wheel distance (a corrected wheel radius: true radius / the radius the robot used).
+3. **Alignment** (the rule a robot's odometry loop follows): the odometry is updated once
+   per wheel-position sample, with the **latest gyro sample at or before** that sample's
+   timestamp (``gyroAlign="latest"``); ``"interpolate"`` instead interpolates the
+   (unwrapped) gyro linearly between its samples, holding the last one after the end.
+   Wheel samples before the first gyro sample are skipped. Gaps need no special
+   handling: the update after a gap integrates the whole distance change at the module
+   angles of that sample, as the robot would.
+4. **Replay**: :func:`replayPoses`, one ``update`` per sample. The start pose is the
+   logged pose at the first replayed sample (interpolated; the origin without a logged
+   pose, or with ``start="origin"``).
+5. **Compare**: the replayed path is interpolated (x, y linear; heading unwrapped, linear)
+   at the timestamps of the logged poses inside the replayed time span; the position
+   error (m) and the wrapped heading error (rad) give final, max and RMS values.
+
+:func:`replayLog` does 1–5 and returns a :class:`ReplayResult`; :func:`writeReplayLog`
+writes the original entries plus ``/drivekin/ReplayPose`` (``struct:Pose2d``) and, with a
+logged pose, ``/drivekin/ReplayError`` (``double``, m) into a new ``.wpilog``;
+:func:`plotReplay` draws both paths into a PNG (matplotlib, ``pip install
+"drivekin[plot]"``, imported only there, with the headless Agg backend).
+"""
+from __future__ import annotations
+
+import math
+import os
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from drivekin import datalog
+from drivekin.datalog import DataLogError, LogData
+from drivekin.deadwheel import DeadWheelKinematics
+from drivekin.geometry import Pose2d, Rotation2d, Translation2d
+from drivekin.kinematics import SwerveDriveKinematics
+from drivekin.mecanum import MecanumDriveKinematics, MecanumDriveWheelPositions
+from drivekin.odometry import (
+    DeadWheelOdometry,
+    DifferentialDriveOdometry,
+    MecanumDriveOdometry,
+    SwerveDriveOdometry,
+)
+
+__all__ = ["DriftStats", "ReplayConfig", "ReplayResult", "plotReplay", "replayLog",
+           "replayPoses", "report", "writeReplayLog"]
+
+DRIVETRAINS = ("swerve", "mecanum", "differential", "deadwheel")
+REPLAY_PREFIX = "/drivekin/"
+POSE_ENTRY = "/drivekin/ReplayPose"
+ERROR_ENTRY = "/drivekin/ReplayError"
+
+_POSITION_TYPES = {
+    "struct:SwerveModulePosition[]": "swerve",
+    "struct:MecanumDriveWheelPositions": "mecanum",
+    "struct:DifferentialDriveWheelPositions": "differential",
+}
+_ODOMETRY = {"swerve": "SwerveDriveOdometry", "mecanum": "MecanumDriveOdometry",
+             "differential": "DifferentialDriveOdometry", "deadwheel": "DeadWheelOdometry"}
+
+
+@dataclass
+class ReplayConfig:
+    """What to replay and how (every field optional; see the module docstring)."""
+
+    drivetrain: str = "auto"                      # or one of DRIVETRAINS
+    positions: str | None = None                  # entry names; None: found by type
+    gyro: str | None = None
+    pose: str | None = None
+    truth: str | None = None                      # a second pose to compare with
+    gyroUnits: str | None = None                  # "rad" or "deg", for a double gyro
+    modules: list[tuple[float, float]] | None = None      # swerve / mecanum offsets, m
+    deadWheels: list[tuple[float, float, float]] | None = None  # x m, y m, direction deg
+    trackwidth: float | None = None               # differential, with heading="wheels"
+    heading: str = "gyro"                         # or "wheels" (differential only)
+    wheelScale: float = 1.0
+    gyroAlign: str = "latest"                     # or "interpolate"
+    start: str = "logged"                         # or "origin"
+    ragged: str = "error"                         # or "drop"
+    allowTruncated: bool = False
+
+
+@dataclass
+class DriftStats:
+    """Replayed pose minus a reference pose, at ``count`` reference timestamps: position
+    error (m) and heading error (rad, wrapped to [-π, π]) at the end, worst and RMS."""
+
+    count: int
+    finalPosition: float
+    maxPosition: float
+    rmsPosition: float
+    finalHeading: float
+    maxHeading: float
+    rmsHeading: float
+    t: np.ndarray = field(repr=False)             # reference timestamps used, µs
+    error: np.ndarray = field(repr=False)         # position error at each, m
+
+    def asdict(self) -> dict[str, float]:
+        return {"count": self.count, "final_position_m": self.finalPosition,
+                "max_position_m": self.maxPosition, "rms_position_m": self.rmsPosition,
+                "final_heading_deg": math.degrees(self.finalHeading),
+                "max_heading_deg": math.degrees(self.maxHeading),
+                "rms_heading_deg": math.degrees(self.rmsHeading)}
+
+
+@dataclass
+class ReplayResult:
+    """Everything one replay found and computed (times in µs, poses (N, 3) [x, y, θ])."""
+
+    source: str
+    drivetrain: str
+    odometry: str
+    entries: dict[str, str]                       # role -> entry name
+    geometry: str
+    t: np.ndarray                                 # replayed sample timestamps
+    poses: np.ndarray                             # replayed poses
+    skipped: int                                  # wheel samples before the first gyro
+    maxWheelGap: float                            # s
+    maxGyroAge: float                             # s (latest rule; 0 when interpolating)
+    rates: dict[str, float]                       # role -> median sample rate, Hz
+    alignment: str                                # how gyro and wheel samples were paired
+    logged: tuple[np.ndarray, np.ndarray] | None = None
+    truth: tuple[np.ndarray, np.ndarray] | None = None
+    vsLogged: DriftStats | None = None
+    vsTruth: DriftStats | None = None
+    truncated: str | None = None
+    log: LogData | None = field(default=None, repr=False)
+
+    @property
+    def pathLength(self) -> float:
+        d = np.diff(self.poses[:, :2], axis=0)
+        return float(np.hypot(d[:, 0], d[:, 1]).sum())
+
+    @property
+    def duration(self) -> float:
+        return float(self.t[-1] - self.t[0]) / 1e6 if len(self.t) else 0.0
+
+    def asdict(self) -> dict[str, Any]:
+        last = self.poses[-1]
+        return {
+            "source": self.source, "drivetrain": self.drivetrain, "odometry": self.odometry,
+            "entries": dict(self.entries), "geometry": self.geometry,
+            "samples": len(self.t), "skipped_before_gyro": self.skipped,
+            "duration_s": self.duration, "path_length_m": self.pathLength,
+            "max_wheel_gap_s": self.maxWheelGap, "max_gyro_age_s": self.maxGyroAge,
+            "rates_hz": dict(self.rates), "alignment": self.alignment,
+            "final_pose": {"x_m": float(last[0]), "y_m": float(last[1]),
+                           "heading_deg": math.degrees(float(last[2]))},
+            "vs_logged": self.vsLogged.asdict() if self.vsLogged else None,
+            "vs_truth": self.vsTruth.asdict() if self.vsTruth else None,
+            "truncated": self.truncated,
+        }
+
+
+# ---------------------------------------------------------------------------------------
+# The per-sample odometry replay (the batch kernel of issue 9 §1 replaces this loop)
+
+def replayPoses(odometry: Any, gyro: np.ndarray, positions: np.ndarray) -> np.ndarray:
+    """Call ``odometry.update`` once per sample and return the (N, 3) poses
+    ``[x m, y m, θ rad]`` (θ wrapped), leaving ``odometry`` at the last sample.
+
+    ``gyro``: float64 (N,) gyro angles in rad. ``positions``: float64 (N, M, 2)
+    ``[distance m, angle rad]`` for SwerveDriveOdometry, (N, 4) ``[fl, fr, rl, rr]`` for
+    MecanumDriveOdometry, (N, 2) ``[left, right]`` for DifferentialDriveOdometry,
+    (N, k) wheel distances for DeadWheelOdometry (with a gyro)."""
+    n = len(gyro)
+    out = np.empty((n, 3))
+    angles = gyro.tolist()
+    rot = Rotation2d.fromRadians
+    update = odometry.update
+    if isinstance(odometry, SwerveDriveOdometry):
+        rows = np.ascontiguousarray(positions, dtype=np.float64)
+        for i in range(n):
+            p = update(rot(angles[i]), rows[i])
+            out[i] = (p.x, p.y, p.getRotation().getRadians())
+    elif isinstance(odometry, MecanumDriveOdometry):
+        wheels = positions.tolist()
+        for i in range(n):
+            p = update(rot(angles[i]), MecanumDriveWheelPositions(*wheels[i]))
+            out[i] = (p.x, p.y, p.getRotation().getRadians())
+    elif isinstance(odometry, DifferentialDriveOdometry):
+        sides = positions.tolist()
+        for i in range(n):
+            p = update(rot(angles[i]), sides[i][0], sides[i][1])
+            out[i] = (p.x, p.y, p.getRotation().getRadians())
+    elif isinstance(odometry, DeadWheelOdometry):
+        rows = np.ascontiguousarray(positions, dtype=np.float64)
+        for i in range(n):
+            p = update(rows[i], rot(angles[i]))
+            out[i] = (p.x, p.y, p.getRotation().getRadians())
+    else:
+        raise TypeError(f"replayPoses() takes a drivekin odometry object, got "
+                        f"{type(odometry).__name__}")
+    return out
+
+
+# ---------------------------------------------------------------------------------------
+# Finding entries
+
+def _pick(log: LogData, role: str, types: tuple[str, ...], prefer: str | None,
+          exclude: set[str]) -> str | None:
+    cands = [e.name for e in log.entries.values()
+             if e.type in types and not e.name.startswith(REPLAY_PREFIX)
+             and e.name not in exclude and e.count > 0]
+    if len(cands) <= 1:
+        return cands[0] if cands else None
+    if prefer:
+        liked = [c for c in cands if prefer in c.lower()]
+        if len(liked) == 1:
+            return liked[0]
+    option = {"gyro": "--gyro", "pose": "--pose", "positions": "--positions",
+              "kinematics": "--module"}[role]
+    raise DataLogError(f"several {role} entries ({' or '.join(types)}): "
+                       f"{', '.join(cands)}; name one with {option}")
+
+
+def _named(log: LogData, name: str, option: str) -> datalog.EntryInfo:
+    info = log.entries.get(name)
+    if info is None:
+        raise DataLogError(f"{option} {name!r}: no such entry")
+    return info
+
+
+def _unwrap(theta: np.ndarray) -> np.ndarray:
+    return np.unwrap(theta) if len(theta) else theta
+
+
+def _interp_poses(t_src: np.ndarray, poses: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Poses at times ``t``: x, y and the unwrapped heading interpolated linearly
+    (clamped to the first/last pose outside ``t_src``)."""
+    ts = t_src.astype(np.float64)
+    tq = t.astype(np.float64)
+    th = _unwrap(poses[:, 2])
+    return np.stack([np.interp(tq, ts, poses[:, 0]), np.interp(tq, ts, poses[:, 1]),
+                     np.interp(tq, ts, th)], axis=1)
+
+
+def _wrap(a: np.ndarray) -> np.ndarray:
+    return np.arctan2(np.sin(a), np.cos(a))
+
+
+def _drift(t_rep: np.ndarray, rep: np.ndarray, t_ref: np.ndarray,
+           ref: np.ndarray) -> DriftStats | None:
+    inside = (t_ref >= t_rep[0]) & (t_ref <= t_rep[-1])
+    if not inside.any():
+        return None
+    tr, pr = t_ref[inside], ref[inside]
+    at = _interp_poses(t_rep, rep, tr)
+    pos = np.hypot(at[:, 0] - pr[:, 0], at[:, 1] - pr[:, 1])
+    head = np.abs(_wrap(at[:, 2] - pr[:, 2]))
+    return DriftStats(len(tr), float(pos[-1]), float(pos.max()),
+                      float(np.sqrt(np.mean(pos ** 2))), float(head[-1]),
+                      float(head.max()), float(np.sqrt(np.mean(head ** 2))), tr, pos)
+
+
+def _rate(t: np.ndarray) -> float:
+    d = np.diff(t)
+    d = d[d > 0]
+    return float(1e6 / np.median(d)) if len(d) else 0.0
+
+
+# ---------------------------------------------------------------------------------------
+# Replay
+
+def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig) -> tuple[Any, str]:
+    """The kinematics object (or None) and a description of the geometry used."""
+    if kind == "swerve":
+        mods = cfg.modules
+        src = "from the options"
+        if mods is None:
+            name = _pick(log, "kinematics", (f"struct:SwerveDriveKinematics__{width}",),
+                         "kinematics", set())
+            if name is None:
+                raise DataLogError(f"no module offsets: give --module X,Y for each of the "
+                                   f"{width} modules (in the order of the log's array)")
+            v = log.values(name)[1][-1]
+            mods = [(float(v[2 * j]), float(v[2 * j + 1])) for j in range(width)]
+            src = f"from {name}"
+        if len(mods) != width:
+            raise DataLogError(f"{len(mods)} module offsets given, the log's module array "
+                               f"has {width} modules")
+        kin = SwerveDriveKinematics([Translation2d(x, y) for x, y in mods])
+        text = ", ".join(f"({x:g}, {y:g})" for x, y in mods)
+        return kin, f"{width} modules at {text} m ({src})"
+    if kind == "mecanum":
+        mods = cfg.modules
+        src = "from the options"
+        if mods is None:
+            name = _pick(log, "kinematics", ("struct:MecanumDriveKinematics",), "kinematics",
+                         set())
+            if name is None:
+                raise DataLogError("no wheel offsets: give --module X,Y for the four "
+                                   "wheels (front-left, front-right, rear-left, rear-right)")
+            v = log.values(name)[1][-1]
+            mods = [(float(v[2 * j]), float(v[2 * j + 1])) for j in range(4)]
+            src = f"from {name}"
+        if len(mods) != 4:
+            raise DataLogError(f"mecanum needs 4 wheel offsets, got {len(mods)}")
+        kin = MecanumDriveKinematics(*[Translation2d(x, y) for x, y in mods])
+        text = ", ".join(f"({x:g}, {y:g})" for x, y in mods)
+        return kin, f"wheels at {text} m ({src})"
+    if kind == "deadwheel":
+        wheels = cfg.deadWheels
+        if not wheels:
+            raise DataLogError("dead wheels need their poses: --dead-wheel X,Y,DEG for "
+                               "each wheel, in the order of the positions array")
+        if len(wheels) != width:
+            raise DataLogError(f"{len(wheels)} dead wheels given, the positions entry has "
+                               f"{width} values per sample")
+        kin = DeadWheelKinematics([Pose2d(x, y, Rotation2d.fromDegrees(d))
+                                   for x, y, d in wheels])
+        text = ", ".join(f"({x:g}, {y:g}, {d:g}°)" for x, y, d in wheels)
+        return kin, f"{width} dead wheels at {text}"
+    if cfg.heading == "wheels":
+        return None, f"trackwidth {cfg.trackwidth:g} m (heading from the wheels)"
+    return None, "no geometry needed (heading from the gyro)"
+
+
+def replayLog(log: LogData | str | os.PathLike[str],
+              config: ReplayConfig | None = None) -> ReplayResult:
+    """Replay the odometry of one log (a path or a :class:`~drivekin.datalog.LogData`);
+    see the module docstring. DataLogError for logs that cannot be replayed."""
+    cfg = config or ReplayConfig()
+    if not isinstance(log, LogData):
+        log = datalog.read(log, allowTruncated=cfg.allowTruncated)
+    entries: dict[str, str] = {}
+
+    # 1. positions and drivetrain
+    want = cfg.drivetrain
+    if cfg.positions is not None:
+        info = _named(log, cfg.positions, "--positions")
+        kind = _POSITION_TYPES.get(info.type)
+        if kind is None and info.type == "double[]":
+            kind = "deadwheel" if want == "auto" else want
+            if kind not in ("deadwheel", "differential"):
+                raise DataLogError(f"--positions {info.name!r} is double[]: that is read "
+                                   f"as dead wheels or differential [left, right], not "
+                                   f"{kind}")
+        if kind is None:
+            raise DataLogError(f"--positions {info.name!r} has type {info.type}; expected "
+                               f"one of {', '.join(_POSITION_TYPES)} or double[]")
+        if want not in ("auto", kind):
+            raise DataLogError(f"--positions {info.name!r} ({info.type}) holds {kind} "
+                               f"positions, not {want}")
+        pos_name = info.name
+    else:
+        if want == "deadwheel":
+            raise DataLogError("dead-wheel positions are a double[] entry: name it with "
+                               "--positions")
+        types = tuple(t for t, k in _POSITION_TYPES.items() if want in ("auto", k))
+        found = _pick(log, "positions", types, None, set())
+        if found is None:
+            raise DataLogError(f"no wheel or module position entry ({', '.join(types)}); "
+                               f"name one with --positions")
+        pos_name = found
+        kind = _POSITION_TYPES[log.entries[pos_name].type]
+    entries["positions"] = pos_name
+    tw, P = log.values(pos_name, ragged=cfg.ragged)
+    if len(tw) == 0:
+        raise DataLogError(f"entry {pos_name!r} has no samples")
+    if kind == "differential" and P.ndim == 2 and P.shape[1] != 2:
+        raise DataLogError(f"differential positions must be [left, right], {pos_name!r} "
+                           f"has {P.shape[1]} values per sample")
+    width = P.shape[1] if P.ndim >= 2 else 1
+    if kind == "swerve" and width < 2:
+        raise DataLogError(f"{pos_name!r} has {width} module(s) per sample; a swerve drive "
+                           f"has at least 2")
+    if not np.isfinite(P).all():
+        bad = int(np.argmax(~np.isfinite(P.reshape(len(P), -1)).all(axis=1)))
+        raise DataLogError(f"{pos_name!r} holds a NaN or infinite value (sample {bad} at "
+                           f"{tw[bad] / 1e6:.3f} s)")
+    P = P.copy()
+    if cfg.wheelScale != 1.0:
+        if kind == "swerve":
+            P[:, :, 0] *= cfg.wheelScale
+        else:
+            P *= cfg.wheelScale
+
+    # 2. gyro
+    if cfg.heading == "wheels":
+        if kind != "differential":
+            raise DataLogError("heading from the wheels is supported for differential "
+                               "drives only")
+        if not cfg.trackwidth:
+            raise DataLogError("heading from the wheels needs --trackwidth")
+        tg = tw
+        G = (P[:, 1] - P[:, 0]) / cfg.trackwidth
+        entries["gyro"] = "(wheels)"
+    else:
+        if cfg.gyro is not None:
+            ginfo = _named(log, cfg.gyro, "--gyro")
+            gname = ginfo.name
+        else:
+            found = _pick(log, "gyro", ("struct:Rotation2d",), "gyro", set())
+            if found is None:
+                raise DataLogError("no gyro entry (struct:Rotation2d); name one with "
+                                   "--gyro (a double entry also needs --gyro-units)")
+            gname = found
+            ginfo = log.entries[gname]
+        if ginfo.type == "struct:Rotation2d":
+            scale = 1.0 if cfg.gyroUnits in (None, "rad") else math.pi / 180.0
+        elif ginfo.type in ("double", "float"):
+            if cfg.gyroUnits is None:
+                raise DataLogError(f"gyro entry {gname!r} is a plain {ginfo.type}: give its "
+                                   f"units with --gyro-units deg or rad")
+            scale = 1.0 if cfg.gyroUnits == "rad" else math.pi / 180.0
+        else:
+            raise DataLogError(f"--gyro {gname!r} has type {ginfo.type}; expected "
+                               f"struct:Rotation2d or double")
+        entries["gyro"] = gname
+        tg, G = log.values(gname)
+        if len(tg) == 0:
+            raise DataLogError(f"gyro entry {gname!r} has no samples")
+        if not np.isfinite(G).all():
+            raise DataLogError(f"gyro entry {gname!r} holds a NaN or infinite value")
+        G = _unwrap(G * scale)
+
+    # 3. alignment
+    idx = np.searchsorted(tg, tw, side="right") - 1
+    valid = idx >= 0
+    skipped = int((~valid).sum())
+    if skipped == len(tw):
+        raise DataLogError(f"every wheel sample of {pos_name!r} comes before the first "
+                           f"gyro sample ({tg[0] / 1e6:.3f} s)")
+    tw, P, idx = tw[valid], P[valid], idx[valid]
+    if cfg.heading == "wheels":
+        gyro = G[idx]
+        max_age = 0.0
+        alignment = "heading from the wheels: (right - left) / trackwidth"
+    elif cfg.gyroAlign == "interpolate":
+        gyro = np.interp(tw.astype(np.float64), tg.astype(np.float64), G)
+        max_age = 0.0
+        alignment = "gyro interpolated (unwrapped, linear) at each wheel sample"
+    else:
+        gyro = G[idx]
+        max_age = float((tw - tg[idx]).max()) / 1e6
+        alignment = (f"latest gyro sample at or before each wheel sample (max age "
+                     f"{max_age * 1e3:.1f} ms)")
+    max_gap = float(np.diff(tw).max()) / 1e6 if len(tw) > 1 else 0.0
+
+    # logged pose and truth
+    logged = truth = None
+    if cfg.truth is not None:
+        tinfo = _named(log, cfg.truth, "--truth")
+        if tinfo.type != "struct:Pose2d":
+            raise DataLogError(f"--truth {tinfo.name!r} has type {tinfo.type}, expected "
+                               f"struct:Pose2d")
+        truth = log.values(tinfo.name)
+        entries["truth"] = tinfo.name
+    if cfg.pose is not None:
+        pinfo = _named(log, cfg.pose, "--pose")
+        if pinfo.type != "struct:Pose2d":
+            raise DataLogError(f"--pose {pinfo.name!r} has type {pinfo.type}, expected "
+                               f"struct:Pose2d")
+        pose_name: str | None = pinfo.name
+    else:
+        pose_name = _pick(log, "pose", ("struct:Pose2d",), "odometry",
+                          {cfg.truth} if cfg.truth else set())
+    if pose_name is not None:
+        logged = log.values(pose_name)
+        if len(logged[0]) == 0:
+            logged = None
+        else:
+            entries["pose"] = pose_name
+
+    # 4. replay
+    kin, geometry = _geometry(log, kind, width, cfg)
+    if cfg.wheelScale != 1.0:
+        geometry += f"; wheel distances × {cfg.wheelScale:g}"
+    start = Pose2d()
+    if cfg.start == "logged" and logged is not None:
+        x, y, th = _interp_poses(logged[0], logged[1], tw[:1])[0]
+        start = Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th)))
+    g0 = Rotation2d.fromRadians(float(gyro[0]))
+    if kind == "swerve":
+        odo: Any = SwerveDriveOdometry(kin, g0, np.ascontiguousarray(P[0]), start)
+    elif kind == "mecanum":
+        odo = MecanumDriveOdometry(kin, g0, MecanumDriveWheelPositions(*P[0].tolist()),
+                                   start)
+    elif kind == "differential":
+        odo = DifferentialDriveOdometry(g0, float(P[0, 0]), float(P[0, 1]), start)
+    else:
+        odo = DeadWheelOdometry(kin, np.ascontiguousarray(P[0]), g0, start)
+    poses = replayPoses(odo, gyro, P)
+
+    rates = {"positions": _rate(tw)}
+    if entries["gyro"] != "(wheels)":
+        rates["gyro"] = _rate(tg)
+    result = ReplayResult(log.source, kind, _ODOMETRY[kind], entries, geometry, tw, poses,
+                          skipped, max_gap, max_age, rates, alignment, logged, truth,
+                          truncated=log.truncated, log=log)
+    # 5. compare
+    if logged is not None:
+        rates["pose"] = _rate(logged[0])
+        result.vsLogged = _drift(tw, poses, logged[0], logged[1])
+    if truth is not None and len(truth[0]):
+        result.vsTruth = _drift(tw, poses, truth[0], truth[1])
+    return result
+
+
+# ---------------------------------------------------------------------------------------
+# Outputs
+
+def writeReplayLog(result: ReplayResult, path: str | os.PathLike[str]) -> None:
+    """Write ``result``'s source log (every entry except earlier ``/drivekin/`` ones) plus
+    ``/drivekin/ReplayPose`` and, with a logged pose, ``/drivekin/ReplayError`` to
+    ``path``."""
+    if result.log is None:
+        raise ValueError("the result holds no log to copy (replayed from a LogData?)")
+    if os.path.exists(result.source) and os.path.exists(path) and \
+            os.path.samefile(result.source, path):
+        raise ValueError(f"refusing to overwrite the input log {result.source}")
+    skip = [n for n in result.log.entries if n.startswith(REPLAY_PREFIX)]
+    with datalog.Writer(path) as w:
+        w.copyFrom(result.log, exclude=skip)
+        w.appendSeries(POSE_ENTRY, "struct:Pose2d", result.t, result.poses,
+                       metadata='{"source":"drivekin replay"}')
+        if result.vsLogged is not None:
+            w.appendSeries(ERROR_ENTRY, "double", result.vsLogged.t, result.vsLogged.error,
+                           metadata='{"unit":"m","against":"' + result.entries["pose"] + '"}')
+
+
+def _matplotlib() -> Any:
+    try:
+        import matplotlib
+    except ImportError as e:
+        raise ImportError('matplotlib is needed to draw the plot: pip install '
+                          '"drivekin[plot]"') from e
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def plotReplay(result: ReplayResult, path: str | os.PathLike[str]) -> None:
+    """Draw the replayed path, the logged one (and the truth) and the position errors
+    over time into a PNG at ``path`` (matplotlib, Agg backend)."""
+    plt = _matplotlib()
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 5.2),
+                                  gridspec_kw={"width_ratios": [1.15, 1]})
+    try:
+        if result.truth is not None:
+            ax.plot(result.truth[1][:, 0], result.truth[1][:, 1], color="0.55", lw=3.0,
+                    alpha=0.6, label=f"truth ({result.entries['truth']})")
+        if result.logged is not None:
+            ax.plot(result.logged[1][:, 0], result.logged[1][:, 1], color="tab:red",
+                    lw=1.4, ls="--", label=f"logged ({result.entries['pose']})")
+        ax.plot(result.poses[:, 0], result.poses[:, 1], color="tab:blue", lw=1.2,
+                label="replayed (drivekin)")
+        ax.plot(result.poses[:1, 0], result.poses[:1, 1], "o", color="k", ms=5,
+                label="start")
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)")
+        ax.grid(True, alpha=0.3)
+        ax.legend(loc="best", fontsize=8)
+        ax.set_title(f"{os.path.basename(result.source)}: {result.drivetrain}, "
+                     f"{len(result.t)} samples", fontsize=10)
+        t0 = result.t[0]
+        drew = False
+        for stats, label, color in ((result.vsLogged, "replayed − logged", "tab:red"),
+                                    (result.vsTruth, "replayed − truth", "0.4")):
+            if stats is not None:
+                ax2.plot((stats.t - t0) / 1e6, stats.error * 100.0, color=color,
+                         label=f"{label}: final {stats.finalPosition * 100:.1f} cm, "
+                               f"max {stats.maxPosition * 100:.1f} cm")
+                drew = True
+        ax2.set_xlabel("time since the first replayed sample (s)")
+        ax2.set_ylabel("position error (cm)")
+        ax2.grid(True, alpha=0.3)
+        if drew:
+            ax2.legend(loc="upper left", fontsize=8)
+        else:
+            ax2.text(0.5, 0.5, "no logged pose to compare with", ha="center",
+                     transform=ax2.transAxes)
+        ax2.set_title(result.geometry if len(result.geometry) < 70
+                      else result.geometry[:67] + "...", fontsize=9)
+        fig.tight_layout()
+        fig.savefig(os.fspath(path), dpi=100, format="png")
+    finally:
+        plt.close(fig)
+
+
+def _cm(x: float) -> str:
+    if x < 1e-4:
+        return f"{x:.1e} m"
+    return f"{x * 100:.2f} cm" if x < 10.0 else f"{x:.2f} m"
+
+
+def _deg(a: float) -> str:
+    d = math.degrees(a)
+    return f"{d:.1e}°" if d < 1e-3 else f"{d:.3f}°"
+
+
+def _drift_line(s: DriftStats) -> str:
+    return (f"position final {_cm(s.finalPosition)}, max {_cm(s.maxPosition)}, RMS "
+            f"{_cm(s.rmsPosition)}; heading final {_deg(s.finalHeading)}, max "
+            f"{_deg(s.maxHeading)}, RMS {_deg(s.rmsHeading)} ({s.count} poses)")
+
+
+def report(result: ReplayResult, outputs: tuple[str, ...] = ()) -> str:
+    """The text report of one replay (what ``python -m drivekin replay`` prints)."""
+    r = result
+    e = r.entries
+
+    def entry(role: str) -> str:
+        rate = r.rates.get(role)
+        return f"{e[role]}" + (f" ({rate:.0f} Hz)" if rate else "")
+
+    align = r.alignment
+    last = r.poses[-1]
+    rows = [
+        f"{r.source}: {r.drivetrain} ({r.odometry})",
+        f"  positions  {entry('positions')}",
+        f"  gyro       {entry('gyro') if 'gyro' in r.rates else e['gyro']}",
+        f"  pose       {entry('pose') if 'pose' in e else '(none logged: nothing to compare with)'}",
+        f"  geometry   {r.geometry}",
+        f"  alignment  {align}; largest wheel-sample gap {r.maxWheelGap * 1e3:.1f} ms"
+        + (f"; {r.skipped} wheel samples before the first gyro sample skipped"
+           if r.skipped else ""),
+        f"  replayed   {len(r.t)} samples over {r.duration:.2f} s, path {r.pathLength:.2f} m, "
+        f"final pose x {last[0]:.3f} m, y {last[1]:.3f} m, heading "
+        f"{math.degrees(last[2]):.2f}°",
+    ]
+    if r.vsLogged is not None:
+        rows.append(f"  vs logged  {_drift_line(r.vsLogged)}")
+    if r.vsTruth is not None:
+        rows.append(f"  vs truth   {_drift_line(r.vsTruth)} [{e['truth']}]")
+    if r.truncated:
+        rows.append(f"  warning    {r.truncated}; the complete records were used")
+    if outputs:
+        rows.append(f"  wrote      {', '.join(outputs)}")
+    return "\n".join(rows)
