@@ -262,6 +262,9 @@ def replay_parser() -> argparse.ArgumentParser:
     p.add_argument("--start", choices=("logged", "origin"), default="logged",
                    help="start pose: the logged pose at the first sample (default) or the "
                         "origin")
+    p.add_argument("--compare", choices=("hold", "interpolate"), default="hold",
+                   help="replayed pose at a logged pose's timestamp: the latest one at or "
+                        "before it, as the robot's getPose() (default), or interpolated")
     p.add_argument("--ragged", choices=("error", "drop"), default="error",
                    help="arrays that change length between records: stop (default) or drop "
                         "the records of other lengths")
@@ -299,6 +302,7 @@ def replay_main(argv) -> int:
         pose=args.pose, truth=args.truth, gyroUnits=args.gyro_units, modules=args.module,
         deadWheels=args.dead_wheel, trackwidth=args.trackwidth, heading=args.heading,
         wheelScale=args.wheel_scale, gyroAlign=args.gyro_align, start=args.start,
+        compare=args.compare,
         ragged=args.ragged, allowTruncated=args.allow_truncated)
     failed = 0
     results = []

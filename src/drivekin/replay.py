@@ -26,9 +26,17 @@ Steps, for one ``.wpilog`` file (read with :mod:`drivekin.datalog`):
 4. **Replay**: :func:`replayPoses`, one ``update`` per sample. The start pose is the
    logged pose at the first replayed sample (interpolated; the origin without a logged
    pose, or with ``start="origin"``).
-5. **Compare**: the replayed path is interpolated (x, y linear; heading unwrapped, linear)
-   at the timestamps of the logged poses inside the replayed time span; the position
-   error (m) and the wrapped heading error (rad) give final, max and RMS values.
+5. **Compare** at the timestamps of the logged poses inside the replayed time span. The
+   replayed pose there is, by default (``compare="hold"``), the one after the latest
+   wheel sample at or before it: what the robot's own ``getPose()`` returned when it
+   logged, so across a gap in the wheel samples the pose stays put, as the robot's did.
+   ``compare="interpolate"`` interpolates the replayed path instead (x, y linear; heading
+   unwrapped, linear), better for a reference sampled off the wheel-sample clock. The
+   position error (m) and the wrapped heading error (rad) give final, max and RMS values.
+   Reference poses that fall inside a gap in the wheel samples (an interval longer than
+   ``GAP_PERIODS`` = 3 median sample periods) are not compared — there is no replayed
+   pose for that time — and are counted instead; the drift a gap causes shows in every
+   pose after it.
 
 :func:`replayLog` does 1–5 and returns a :class:`ReplayResult`; :func:`writeReplayLog`
 writes the original entries plus ``/drivekin/ReplayPose`` (``struct:Pose2d``) and, with a
@@ -63,6 +71,7 @@ __all__ = ["DriftStats", "ReplayConfig", "ReplayResult", "plotReplay", "replayLo
 
 DRIVETRAINS = ("swerve", "mecanum", "differential", "deadwheel")
 REPLAY_PREFIX = "/drivekin/"
+GAP_PERIODS = 3.0       # a wheel-sample interval this many median periods long is a gap
 POSE_ENTRY = "/drivekin/ReplayPose"
 ERROR_ENTRY = "/drivekin/ReplayError"
 
@@ -92,6 +101,7 @@ class ReplayConfig:
     wheelScale: float = 1.0
     gyroAlign: str = "latest"                     # or "interpolate"
     start: str = "logged"                         # or "origin"
+    compare: str = "hold"                         # or "interpolate"
     ragged: str = "error"                         # or "drop"
     allowTruncated: bool = False
 
@@ -110,13 +120,15 @@ class DriftStats:
     rmsHeading: float
     t: np.ndarray = field(repr=False)             # reference timestamps used, µs
     error: np.ndarray = field(repr=False)         # position error at each, m
+    inGaps: int = 0                               # reference poses inside wheel gaps
 
     def asdict(self) -> dict[str, float]:
         return {"count": self.count, "final_position_m": self.finalPosition,
                 "max_position_m": self.maxPosition, "rms_position_m": self.rmsPosition,
                 "final_heading_deg": math.degrees(self.finalHeading),
                 "max_heading_deg": math.degrees(self.maxHeading),
-                "rms_heading_deg": math.degrees(self.rmsHeading)}
+                "rms_heading_deg": math.degrees(self.rmsHeading),
+                "skipped_in_gaps": self.inGaps}
 
 
 @dataclass
@@ -255,18 +267,31 @@ def _wrap(a: np.ndarray) -> np.ndarray:
     return np.arctan2(np.sin(a), np.cos(a))
 
 
-def _drift(t_rep: np.ndarray, rep: np.ndarray, t_ref: np.ndarray,
-           ref: np.ndarray) -> DriftStats | None:
+def _drift(t_rep: np.ndarray, rep: np.ndarray, t_ref: np.ndarray, ref: np.ndarray,
+           compare: str) -> DriftStats | None:
     inside = (t_ref >= t_rep[0]) & (t_ref <= t_rep[-1])
-    if not inside.any():
+    k = np.searchsorted(t_rep, t_ref, side="right") - 1
+    dt = np.diff(t_rep)
+    if len(dt):
+        period = float(np.median(dt))
+        kk = np.clip(k, 0, len(dt) - 1)
+        in_gap = inside & (k < len(dt)) & (dt[kk] > GAP_PERIODS * period) & (t_ref > t_rep[kk])
+    else:
+        in_gap = np.zeros(len(t_ref), dtype=bool)
+    use = inside & ~in_gap
+    if not use.any():
         return None
-    tr, pr = t_ref[inside], ref[inside]
-    at = _interp_poses(t_rep, rep, tr)
+    tr, pr = t_ref[use], ref[use]
+    if compare == "interpolate":
+        at = _interp_poses(t_rep, rep, tr)
+    else:
+        at = rep[k[use]]
     pos = np.hypot(at[:, 0] - pr[:, 0], at[:, 1] - pr[:, 1])
     head = np.abs(_wrap(at[:, 2] - pr[:, 2]))
     return DriftStats(len(tr), float(pos[-1]), float(pos.max()),
                       float(np.sqrt(np.mean(pos ** 2))), float(head[-1]),
-                      float(head.max()), float(np.sqrt(np.mean(head ** 2))), tr, pos)
+                      float(head.max()), float(np.sqrt(np.mean(head ** 2))), tr, pos,
+                      int(in_gap.sum()))
 
 
 def _rate(t: np.ndarray) -> float:
@@ -452,6 +477,8 @@ def replayLog(log: LogData | str | os.PathLike[str],
         max_age = float((tw - tg[idx]).max()) / 1e6
         alignment = (f"latest gyro sample at or before each wheel sample (max age "
                      f"{max_age * 1e3:.1f} ms)")
+    alignment += ("; compared at the reference times: latest replayed pose" if
+                  cfg.compare == "hold" else "; compared with the replay interpolated")
     max_gap = float(np.diff(tw).max()) / 1e6 if len(tw) > 1 else 0.0
 
     # logged pose and truth
@@ -508,9 +535,9 @@ def replayLog(log: LogData | str | os.PathLike[str],
     # 5. compare
     if logged is not None:
         rates["pose"] = _rate(logged[0])
-        result.vsLogged = _drift(tw, poses, logged[0], logged[1])
+        result.vsLogged = _drift(tw, poses, logged[0], logged[1], cfg.compare)
     if truth is not None and len(truth[0]):
-        result.vsTruth = _drift(tw, poses, truth[0], truth[1])
+        result.vsTruth = _drift(tw, poses, truth[0], truth[1], cfg.compare)
     return result
 
 
@@ -610,7 +637,9 @@ def _deg(a: float) -> str:
 def _drift_line(s: DriftStats) -> str:
     return (f"position final {_cm(s.finalPosition)}, max {_cm(s.maxPosition)}, RMS "
             f"{_cm(s.rmsPosition)}; heading final {_deg(s.finalHeading)}, max "
-            f"{_deg(s.maxHeading)}, RMS {_deg(s.rmsHeading)} ({s.count} poses)")
+            f"{_deg(s.maxHeading)}, RMS {_deg(s.rmsHeading)} ({s.count} poses"
+            + (f"; {s.inGaps} inside wheel-sample gaps not compared" if s.inGaps else "")
+            + ")")
 
 
 def report(result: ReplayResult, outputs: tuple[str, ...] = ()) -> str:
