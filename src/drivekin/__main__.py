@@ -285,9 +285,26 @@ def _progress(text: str) -> None:
     print(text, file=sys.stderr, flush=True)
 
 
+def _join_negative_points(argv):
+    """``--module -0.3,0.3``: argparse takes a value starting with '-' for an option, so
+    the value is attached (``--module=-0.3,0.3``) before parsing."""
+    out = []
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        if a in ("--module", "--dead-wheel") and i + 1 < len(argv) \
+                and argv[i + 1].startswith("-") and "," in argv[i + 1]:
+            out.append(f"{a}={argv[i + 1]}")
+            i += 2
+            continue
+        out.append(a)
+        i += 1
+    return out
+
+
 def replay_main(argv) -> int:
     parser = replay_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_join_negative_points(list(argv)))
     if args.out_dir is not None and not os.path.isdir(args.out_dir):
         parser.error(f"argument --out-dir: {args.out_dir!r} is not a folder")
     if args.heading == "wheels" and args.trackwidth is None:

@@ -195,7 +195,7 @@ def replayPoses(odometry: Any, gyro: np.ndarray, positions: np.ndarray) -> np.nd
     out = np.empty((n, 3))
     angles = gyro.tolist()
     rot = Rotation2d.fromRadians
-    update = odometry.update
+    update = getattr(odometry, "update", None)
     if isinstance(odometry, SwerveDriveOdometry):
         rows = np.ascontiguousarray(positions, dtype=np.float64)
         for i in range(n):
