@@ -98,7 +98,7 @@ def test_reads_2026_names_with_the_logs_schema(robotpy_file):
     log = datalog.read(robotpy_file)
     assert log.schemas["SwerveModuleState"] == "double speed;Rotation2d angle"
     info = log.entries["/States"]
-    assert info.type == "struct:SwerveModuleState[]" and info.count == 5
+    assert info.type == "struct:SwerveModuleState[]" and info.records == 5
     assert info.columns == ("speed", "angle.value")
     _, states = log.values("/States")
     assert states.shape == (5, 2, 2)
@@ -124,9 +124,9 @@ def test_reads_plain_entries(robotpy_file):
 def test_entries_list_names_types_and_counts(robotpy_file):
     infos = {e.name: e for e in datalog.listEntries(robotpy_file)}
     assert infos["/Modules"].type == "struct:SwerveModulePosition[]"
-    assert infos["/Msg"].type == "string" and infos["/Msg"].count == 5
+    assert infos["/Msg"].type == "string" and infos["/Msg"].records == 5
     assert infos["/.schema/struct:Pose2d"].type == "structschema"
-    assert all(infos[n].count == 5 for n in ("/Pose", "/Gyro", "/Volts", "/Enabled"))
+    assert all(infos[n].records == 5 for n in ("/Pose", "/Gyro", "/Volts", "/Enabled"))
 
 
 def test_non_numeric_and_missing_entries_are_clear_errors(robotpy_file):
@@ -199,7 +199,7 @@ def test_truncated_file_is_refused_unless_allowed(robotpy_file, tmp_path):
     assert log.truncated and "truncated" in log.truncated
     full = datalog.read(robotpy_file)
     # Exactly the last record (a string "m5") is lost.
-    assert log.entries["/Msg"].count == full.entries["/Msg"].count - 1
+    assert log.entries["/Msg"].records == full.entries["/Msg"].records - 1
     assert log.values("/Pose")[1].tolist() == full.values("/Pose")[1].tolist()
 
 
@@ -398,7 +398,7 @@ def test_writer_does_not_hang_past_robotpys_buffer(tmp_path):
         with datalog.Writer({str(path)!r}) as w:
             w.appendSeries("/m", "struct:SwerveModulePosition[]",
                            np.arange(1, n + 1) * 4000, np.ones((n, 4, 2)))
-        print(datalog.read({str(path)!r}).entries["/m"].count)
+        print(datalog.read({str(path)!r}).entries["/m"].records)
     """)
     assert r.returncode == 0, r.stderr[-1000:]
     assert r.stdout.strip() == "40000"

@@ -129,7 +129,7 @@ def test_cli_prints_drift_and_writes_log_and_plot(match, tmp_path, capsys):
     # Every original entry is copied through, record for record; the replay is added.
     orig, new = datalog.read(path), datalog.read(replayed)
     for name, e in orig.entries.items():
-        assert new.entries[name].type == e.type and new.entries[name].count == e.count
+        assert new.entries[name].type == e.type and new.entries[name].records == e.records
         t0, r0 = orig.records(name)
         t1, r1 = new.records(name)
         assert t0.tolist() == t1.tolist() and [bytes(b) for b in r0] == [bytes(b) for b in r1]

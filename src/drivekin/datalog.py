@@ -9,7 +9,7 @@ Reading::
     from drivekin import datalog
     log = datalog.read("match.wpilog")
     for info in log.entries.values():      # name, type, metadata, record count
-        print(info.name, info.type, info.count)
+        print(info.name, info.type, info.records)
     t, poses = log.values("/RealOutputs/Odometry/Robot")   # struct:Pose2d
     # t: int64 (N,) microseconds; poses: float64 (N, 3) [x m, y m, θ rad]
 
@@ -111,14 +111,14 @@ class DataLogError(ValueError):
 
 class EntryInfo(NamedTuple):
     """One entry of a log: its ``name``, ``type`` string (``"double"``,
-    ``"struct:Pose2d"``, ...), ``metadata``, the number of data records ``count``, and
+    ``"struct:Pose2d"``, ...), ``metadata``, the number of data records ``records``, and
     for decodable numeric entries the ``columns`` of one element (``("x", "y", "value")``
     style paths for structs, ``()`` for plain numbers and other types)."""
 
     name: str
     type: str
     metadata: str
-    count: int
+    records: int
     columns: tuple[str, ...]
 
 
@@ -367,7 +367,7 @@ class LogData:
         shape: tuple[int, ...] = (n, m) if is_array else (n,)
         if columns and len(columns) > 1:
             shape += (k,)
-        values = flat.astype(out_dtype).reshape(shape)
+        values: np.ndarray = flat.astype(out_dtype).reshape(shape)
         if n > 1 and (np.diff(ts) < 0).any():
             order = np.argsort(ts, kind="stable")
             ts, values = ts[order], values[order]
@@ -397,8 +397,8 @@ def read(source: str | os.PathLike[str] | bytes | bytearray | memoryview, *,
     wpiutil = _wpiutil()
     try:
         end, _, why = _frame_end(memoryview(raw))
-    except DataLogError as e:
-        raise DataLogError(f"{name}: {e}") from None
+    except DataLogError as err:
+        raise DataLogError(f"{name}: {err}") from None
     truncated = None
     if why is not None:
         truncated = f"truncated at byte {end} of {len(raw)}: {why}"

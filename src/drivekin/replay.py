@@ -195,7 +195,7 @@ def replayPoses(odometry: Any, gyro: np.ndarray, positions: np.ndarray) -> np.nd
     out = np.empty((n, 3))
     angles = gyro.tolist()
     rot = Rotation2d.fromRadians
-    update = getattr(odometry, "update", None)
+    update: Any = getattr(odometry, "update", None)
     if isinstance(odometry, SwerveDriveOdometry):
         rows = np.ascontiguousarray(positions, dtype=np.float64)
         for i in range(n):
@@ -229,7 +229,7 @@ def _pick(log: LogData, role: str, types: tuple[str, ...], prefer: str | None,
           exclude: set[str]) -> str | None:
     cands = [e.name for e in log.entries.values()
              if e.type in types and not e.name.startswith(REPLAY_PREFIX)
-             and e.name not in exclude and e.count > 0]
+             and e.name not in exclude and e.records > 0]
     if len(cands) <= 1:
         return cands[0] if cands else None
     if prefer:
@@ -305,6 +305,7 @@ def _rate(t: np.ndarray) -> float:
 
 def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig) -> tuple[Any, str]:
     """The kinematics object (or None) and a description of the geometry used."""
+    kin: Any
     if kind == "swerve":
         mods = cfg.modules
         src = "from the options"

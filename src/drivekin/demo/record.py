@@ -56,7 +56,7 @@ def record(args: Any, steps: int) -> dict[str, Any]:
     → (type string, values)), the timestamps ``t`` (µs), the kinematics value and the
     final odometry pose."""
     sim = Simulation(args.drivetrain, args.max_speed, args.max_omega, args.vision)
-    drive = sim.drive
+    drive: Any = sim.drive
     swerve = isinstance(getattr(drive, "kinematics", None), SwerveDriveKinematics)
     diff = args.drivetrain == "differential"
     own_truth = hasattr(drive, "truth") or hasattr(drive, "truth_odometry")
