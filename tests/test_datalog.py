@@ -432,3 +432,25 @@ def test_missing_wpiutil_is_an_import_error_naming_the_extra():
     assert r.returncode == 0, r.stderr
     assert 'ImportError: robotpy-wpiutil is needed' in r.stdout
     assert 'pip install "drivekin[log]"' in r.stdout
+
+
+def test_entry_restarted_with_another_type_is_refused(tmp_path):
+    path = tmp_path / "restart.wpilog"
+    with robotpy_log(path) as log:
+        e = log.start("/x", "double", 1)
+        log.double(e, 1.0, 1000)
+        log.log.finish(e, 1500)
+        e2 = log.start("/x", "string", 2000)
+        log.log.appendString(e2, "now a string", 2500)
+        e3 = log.start("/y", "double", 1)
+        log.double(e3, 2.0, 1000)
+        log.log.finish(e3, 1500)
+        e4 = log.start("/y", "double", 2000)
+        log.double(e4, 3.0, 3000)
+    log = datalog.read(path)
+    assert log.entries["/x"].type == "double|string"
+    with pytest.raises(DataLogError, match=r"'/x' was started with several types "
+                                           r"\(double, string\)"):
+        log.values("/x")
+    # Finished and restarted with the same type: one entry, both records.
+    assert log.values("/y")[1].tolist() == [2.0, 3.0]

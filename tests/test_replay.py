@@ -390,3 +390,27 @@ def test_demo_log_and_plot_options_are_validated():
         errors = [line for line in r.stderr.splitlines() if "error:" in line]
         assert errors == [f"python -m drivekin: error: argument {option}: the folder of "
                           f"'/no/such/folder/x' does not exist"], r.stderr
+
+
+@pytest.mark.parametrize("argv, missing, message", [
+    (["--seconds", "1", "--log", "x.wpilog"], "wpiutil",
+     'python -m drivekin: error: --log needs robotpy-wpiutil: pip install "drivekin[log]"'),
+    (["--seconds", "1", "--plot", "x.png"], "matplotlib",
+     'python -m drivekin: error: --plot needs matplotlib: pip install "drivekin[plot]"'),
+    (["replay", "x.wpilog"], "wpiutil",
+     "python -m drivekin replay: error: reading .wpilog files needs robotpy-wpiutil: "
+     'pip install "drivekin[log]"'),
+    (["replay", "x.wpilog", "--plot"], "matplotlib",
+     'python -m drivekin replay: error: --plot needs matplotlib: pip install "drivekin[plot]"'),
+])
+def test_missing_extras_are_usage_errors_before_any_work(monkeypatch, capsys, argv, missing,
+                                                         message):
+    import importlib.util
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *a: None if name == missing else real(name, *a))
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 2
+    errors = [line for line in capsys.readouterr().err.splitlines() if "error:" in line]
+    assert errors == [message]
