@@ -321,10 +321,21 @@ cdef inline double gyro_change(rot2_t gyro, rot2_t prev) noexcept nogil:
     # Wrapped to (−π, π]: 170° -> -170° is +20°.
     return rot_radians(rot_minus(gyro, prev))
 
+cdef inline void odometry_move(pose2_t* p,                             # IN/OUT
+                               twist2_t* tw,                           # OUT
+                               double dx, double dy, double dtheta) noexcept nogil:
+    # The twist is kept: it is the log of the new pose relative to the old one, which the
+    # pose estimators' interpolation would otherwise recompute with an atan2.
+    tw.dx = dx
+    tw.dy = dy
+    tw.dtheta = dtheta
+    p[0] = pose_transform_by(p[0], twist_exp(dx, dy, dtheta))
+
 cdef inline void odometry_step(pose2_t* p, rot2_t* prev_gyro,          # IN/OUT
+                               twist2_t* tw,                           # OUT
                                double dx, double dy, rot2_t gyro) noexcept nogil:
     # The heading change always comes from the gyro.
-    p[0] = pose_transform_by(p[0], twist_exp(dx, dy, gyro_change(gyro, prev_gyro[0])))
+    odometry_move(p, tw, dx, dy, gyro_change(gyro, prev_gyro[0]))
     prev_gyro[0] = gyro
 
 cdef inline void wheels_desaturate(Py_ssize_t n, const double* w, double attainable,

@@ -3,7 +3,7 @@
 # without one, from the wheels). ``_step`` is ``update`` without building the returned
 # Pose2d, for the pose estimators.
 cimport cython
-from drivekin._types cimport pose2_t, rot2_t
+from drivekin._types cimport pose2_t, rot2_t, twist2_t
 from drivekin.geometry cimport Rotation2d
 from drivekin.kinematics cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
@@ -13,6 +13,7 @@ from drivekin.deadwheel cimport DeadWheelKinematics
 cdef class _Odometry:
     cdef pose2_t pose            # current pose estimate (field frame, m)
     cdef rot2_t prev_gyro        # gyro reading at the last update/reset
+    cdef twist2_t twist          # the last update's motion, in the previous pose's frame
     cdef bint ready              # set by a completed __init__; nothing computes before
     cdef int _start_init(self) except -1
 

@@ -14,7 +14,7 @@ from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from drivekin._types cimport pose2_t
 from drivekin._wheels cimport _WheelValues
 from drivekin._kernels cimport (deadwheel_solve, forward_solve, gyro_change, mat_vec,
-                                odometry_step, pose, pose_transform_by, rot_xy, twist_exp, vec)
+                                odometry_move, odometry_step, pose, rot_xy, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.kinematics cimport SwerveDriveKinematics, SwerveModulePosition
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
@@ -132,7 +132,7 @@ cdef class SwerveDriveOdometry(_Odometry):
             k.s0[i] = d - self.prev[i]
             self.prev[i] = d
         forward_solve(3, k.n, k.f1, k.s0, k.s1, k.s2, r)
-        odometry_step(&self.pose, &self.prev_gyro, r[0], r[1], gyroAngle.r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyroAngle.r)
         return 0
 
 
@@ -179,7 +179,7 @@ cdef class MecanumDriveOdometry(_Odometry):
             d[i] = w.w[i] - self.prev[i]
         self.prev = w.w
         mat_vec(3, 4, self.kin.f, d, r)
-        odometry_step(&self.pose, &self.prev_gyro, r[0], r[1], gyroAngle.r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyroAngle.r)
         return 0
 
 
@@ -222,7 +222,7 @@ cdef class DifferentialDriveOdometry(_Odometry):
         cdef double dl = leftDistance - self.prev_l, dr = rightDistance - self.prev_r
         self.prev_l = leftDistance
         self.prev_r = rightDistance
-        odometry_step(&self.pose, &self.prev_gyro, (dl + dr) / 2.0, 0.0, gyroAngle.r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, (dl + dr) / 2.0, 0.0, gyroAngle.r)
         return 0
 
 
@@ -277,7 +277,7 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         self.prev_x = xWheelPos
         self.prev_y = yWheelPos
         self.prev_gyro = gyroAngle.r
-        self.pose = pose_transform_by(self.pose, twist_exp(dx, dy, dtheta))
+        odometry_move(&self.pose, &self.twist, dx, dy, dtheta)
         return 0
 
     def toChassisVelocities(self, double vx, double vy, double omega):
@@ -381,5 +381,5 @@ cdef class DeadWheelOdometry(_Odometry):
             w = gyro_change((<Rotation2d>gyroAngle).r, self.prev_gyro)
             self.prev_gyro = (<Rotation2d>gyroAngle).r
         deadwheel_solve(k.n, k.p3, k.p2, k.g, k.s, self.gyro, w, r)
-        self.pose = pose_transform_by(self.pose, twist_exp(r[0], r[1], r[2]))
+        odometry_move(&self.pose, &self.twist, r[0], r[1], r[2])
         return 0
