@@ -36,6 +36,12 @@ cdef inline double fhypot(double x, double y) noexcept nogil:
         return r
     return hypot(x, y)
 
+# robotpy-wpimath's fromFeet factories convert through the C++ units library, which
+# multiplies by the numerator of 1 ft = 381/1250 m and then divides by the denominator;
+# the same two roundings give the same bits.
+cdef inline double feet_to_meters(double feet) noexcept nogil:
+    return feet * 381.0 / 1250.0
+
 # ---------------------------------------------------------------------------------------
 # Rotation2d
 
