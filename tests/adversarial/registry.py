@@ -19,6 +19,7 @@ import threading
 import numpy as np
 
 import drivekin
+import drivekin.protobuf as protobuf
 import drivekin.wpistruct as wpistruct
 from drivekin import (
     ChassisAccelerations as CA,
@@ -817,6 +818,27 @@ WPISTRUCT = {  # function name -> Sig (receiver-less)
     "unpackArray": S(Type(Pose2d), Bytes(lambda: _pose_bytes() * 2)),
 }
 WPISTRUCT_NONCALLABLE = {"STRUCT_TYPES", "StructValue", "MAX_SWERVE_MODULES"}
+
+
+# ---- protobuf ---------------------------------------------------------------------
+
+def _pose_message():
+    return protobuf.pack(VALID[Pose2d]())
+
+
+PROTOBUF = {  # function name -> Sig (receiver-less)
+    "getTypeName": S(Type(Pose2d)), "getTypeString": S(Type(Pose2d)),
+    "getMessageClass": S(Type(Pose2d)),
+    "forEachDescriptor": S(Type(Pose2d), Callback()),
+    "pack": S(StructObj(Pose2d)),
+    "unpack": [S(Type(Pose2d), Bytes(_pose_message)),
+               S(Type(Pose2d), Bytes(lambda: bytearray(_pose_message())))],
+}
+PROTOBUF_NONCALLABLE = {"PROTOBUF_TYPES", "ProtobufValue", "PACKAGE", "GEOMETRY2D_FILE",
+                        "KINEMATICS_FILE", "SCHEMA_TYPE"}
+
+# Module-level functions (the receiver-less members): module -> its registry.
+MODULE_FUNCTIONS = {wpistruct: WPISTRUCT, protobuf: PROTOBUF}
 
 
 def members(cls):
