@@ -49,6 +49,9 @@ from drivekin._errors import type_name
 
 cnp.import_array()
 
+__all__ = ["discretize", "exp", "log", "replay", "toChassisVelocities", "toFieldRelative",
+           "toRobotRelative", "toSwerveModuleVelocities", "toWheelVelocities"]
+
 
 # ---------------------------------------------------------------------------------------
 # Argument handling. Each helper returns the validated array (the caller keeps it, so its
@@ -83,7 +86,7 @@ cdef _Stack _stack(object x, tuple inner, str name, bint single_ok=True):
     elif len(shape) == len(inner) + 1 and shape[1:] == inner:
         s.single, s.n = False, shape[0]
     else:
-        want = f"(N, {_shape_text(inner)[1:]}" if inner else "(N,)"
+        want = _shape_text(("N",) + inner)
         if single_ok:
             want = f"{_shape_text(inner)} or {want}"
         raise ValueError(f"{name} must have shape {want}, got {shape}")

@@ -19,6 +19,7 @@ import threading
 import numpy as np
 
 import drivekin
+import drivekin.batch as batch
 import drivekin.protobuf as protobuf
 import drivekin.wpistruct as wpistruct
 from drivekin import (
@@ -837,8 +838,21 @@ PROTOBUF = {  # function name -> Sig (receiver-less)
 PROTOBUF_NONCALLABLE = {"PROTOBUF_TYPES", "ProtobufValue", "PACKAGE", "GEOMETRY2D_FILE",
                         "KINEMATICS_FILE", "SCHEMA_TYPE"}
 
+_CHASSIS_STACK = Arr((6, 3), rows_free=True)
+BATCH = {  # drivekin.batch: stacks of 6 samples
+    "toSwerveModuleVelocities": S(Obj(SwerveDriveKinematics), _CHASSIS_STACK),
+    "toWheelVelocities": [S(Obj(MecanumDriveKinematics), _CHASSIS_STACK),
+                          S(Obj(DifferentialDriveKinematics), _CHASSIS_STACK)],
+    "toChassisVelocities": [S(Obj(SwerveDriveKinematics), Arr((6, N, 2), rows_free=True)),
+                            S(Obj(MecanumDriveKinematics), Arr((6, 4), rows_free=True))],
+    "discretize": S(_CHASSIS_STACK, NUM),
+    "toRobotRelative": S(_CHASSIS_STACK, NUM), "toFieldRelative": S(_CHASSIS_STACK, NUM),
+    "exp": S(_CHASSIS_STACK), "log": S(_CHASSIS_STACK),
+    "replay": S(Obj(DifferentialDriveOdometry), Arr((6,)), Arr((6, 2))),
+}
+
 # Module-level functions (the receiver-less members): module -> its registry.
-MODULE_FUNCTIONS = {wpistruct: WPISTRUCT, protobuf: PROTOBUF}
+MODULE_FUNCTIONS = {wpistruct: WPISTRUCT, protobuf: PROTOBUF, batch: BATCH}
 
 
 def members(cls):
