@@ -67,8 +67,8 @@ def dead_wheels():
 
 
 def modules(states):
-    return [(s.velocity if hasattr(s, "velocity") else s.distance, s.angle.getRadians())
-            for s in states]
+    magnitude = next(n for n in ("velocity", "distance", "acceleration") if hasattr(states[0], n))
+    return [(getattr(s, magnitude), s.angle.getRadians()) for s in states]
 
 
 # -- inverse kinematics ---------------------------------------------------------------------
@@ -247,7 +247,17 @@ def test_bad_arguments_are_clear_and_change_nothing():
         (lambda: batch.toChassisVelocities(k, np.ones((5, 3, 2))), ValueError, "(4, 2)"),
         (lambda: batch.toChassisVelocities(DifferentialDriveKinematics(1.0), np.ones((5, 2)),
                                            np.ones(5)), TypeError, "gyroRates"),
-        (lambda: batch.toWheelVelocities(k, cv), TypeError, "MecanumDriveKinematics"),
+        (lambda: batch.toWheelVelocities(R(), cv), TypeError, "MecanumDriveKinematics"),
+        (lambda: batch.toSwerveModuleVelocities(MecanumDriveKinematics(T(1, 1), T(1, -1), T(-1, 1),
+                                                                       T(-1, -1)), cv),
+         TypeError, "SwerveDriveKinematics"),
+        (lambda: batch.desaturateWheelVelocities(np.ones((5, 4, 2)), np.ones((4, 3)), 1.0, 1.0,
+                                                 1.0), ValueError, "one row per sample"),
+        (lambda: batch.desaturateWheelVelocities(np.ones((5, 4, 2)), np.ones((5, 3)), 1.0),
+         TypeError, "all three limits"),
+        (lambda: batch.desaturateWheelVelocities(np.ones(4), 1.0), ValueError, "(M, 2)"),
+        (lambda: batch.desaturate(np.ones((2, 3, 4)), 1.0), ValueError, "(W,) or (N, W)"),
+        (lambda: batch.toSwerveModuleAccelerations(k, cv, np.ones(3)), ValueError, "(5,)"),
         (lambda: batch.discretize(cv, np.ones(4)), ValueError, "(5,)"),
         (lambda: batch.discretize(cv, "0.02"), TypeError, "float"),
         (lambda: batch.exp(np.ones((5, 3), dtype=object)), TypeError, "float64"),
@@ -306,3 +316,92 @@ def test_empty_stacks():
     o = DifferentialDriveOdometry(R(0.0), 0.0, 0.0)
     assert batch.replay(o, np.empty(0), np.empty((0, 2))).shape == (0, 3)
     assert batch.toSwerveModuleVelocities(swerve(3), np.empty((0, 3))).shape == (0, 3, 2)
+
+
+# -- accelerations and desaturation --------------------------------------------------------------
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_accelerations(seed):
+    from drivekin import (ChassisAccelerations, DifferentialDriveWheelAccelerations,
+                          MecanumDriveWheelAccelerations, SwerveModuleAcceleration)
+    rng = np.random.default_rng(seed)
+    ca = rows(rng, N, 3)
+    omega = rng.uniform(-4, 4, N)
+    omega[::7] = 0.0
+    cor = T(0.1, 0.2)
+    sk = swerve(4)
+    same(batch.toSwerveModuleAccelerations(sk, ca, omega, cor),
+         [modules(sk.toSwerveModuleAccelerations(ChassisAccelerations(*r), w, cor))
+          for r, w in zip(ca, omega)])
+    same(batch.toSwerveModuleAccelerations(sk, ca, 1.5),
+         [modules(sk.toSwerveModuleAccelerations(ChassisAccelerations(*r), 1.5)) for r in ca])
+    same(batch.toWheelAccelerations(sk, ca),
+         [modules(sk.toWheelAccelerations(ChassisAccelerations(*r))) for r in ca])
+    ma = rows(rng, N, 8, scale=4.0).reshape(N, 4, 2)
+    same(batch.toChassisAccelerations(sk, ma),
+         [accel(sk.toChassisAccelerations([SwerveModuleAcceleration(a, R(t)) for a, t in r]))
+          for r in ma])
+    mk = MecanumDriveKinematics(T(0.3, 0.3), T(0.3, -0.3), T(-0.3, 0.3), T(-0.3, -0.3))
+    same(batch.toWheelAccelerations(mk, ca, cor),
+         [list(mk.toWheelAccelerations(ChassisAccelerations(*r), cor)) for r in ca])
+    w4 = rows(rng, N, 4)
+    same(batch.toChassisAccelerations(mk, w4),
+         [accel(mk.toChassisAccelerations(MecanumDriveWheelAccelerations(*r))) for r in w4])
+    dk = DifferentialDriveKinematics(0.7)
+    same(batch.toWheelAccelerations(dk, ca),
+         [[a.left, a.right] for a in (dk.toWheelAccelerations(ChassisAccelerations(*r))
+                                      for r in ca)])
+    w2 = rows(rng, N, 2)
+    same(batch.toChassisAccelerations(dk, w2),
+         [accel(dk.toChassisAccelerations(DifferentialDriveWheelAccelerations(*r))) for r in w2])
+    wk = dead_wheels()
+    same(batch.toWheelAccelerations(wk, ca),
+         [list(wk.toWheelAccelerations(ChassisAccelerations(*r))) for r in ca])
+    w3 = rows(rng, N, 3)
+    alpha = rng.uniform(-2, 2, N)
+    same(batch.toChassisAccelerations(wk, w3, alpha),
+         [accel(wk.toChassisAccelerations(list(r), a)) for r, a in zip(w3, alpha)])
+    same(batch.toChassisAccelerations(wk, w3),
+         [accel(wk.toChassisAccelerations(list(r))) for r in w3])
+
+
+def accel(a):
+    return [a.ax, a.ay, a.alpha]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_desaturation_both_forms_and_in_place(seed):
+    rng = np.random.default_rng(seed)
+    mv = rows(rng, N, 8, scale=6.0).reshape(N, 4, 2)
+    mv[4] = 0.0
+    desired = rows(rng, N, 3, scale=5.0)
+
+    def per_call(sample, *args):
+        arr = sample.copy()
+        SwerveDriveKinematics.desaturateWheelVelocitiesInPlace(arr, *args)
+        objects = [SwerveModuleVelocity(v, R(a)) for v, a in sample]
+        new = SwerveDriveKinematics.desaturateWheelVelocities(objects, *args)
+        assert [s.velocity for s in new] == [v for v, _ in arr] or np.isnan(arr).any()
+        return arr
+
+    same(batch.desaturateWheelVelocities(mv, 3.0), [per_call(r, 3.0) for r in mv])
+    limits = (4.0, 3.0, 6.0)
+    expected = [per_call(r, ChassisVelocities(*d), *limits) for r, d in zip(mv, desired)]
+    same(batch.desaturateWheelVelocities(mv, desired, *limits), expected)
+    same(batch.desaturateWheelVelocities(mv[3], desired[3], *limits), expected[3])
+    inplace = mv.copy()
+    assert batch.desaturateWheelVelocities(inplace, desired, *limits, out=inplace) is inplace
+    same(inplace, expected)
+
+    w4 = rows(rng, N, 4, scale=6.0)
+    expected = []
+    for r in w4:
+        v = MecanumDriveWheelVelocities(*r).desaturate(2.5)
+        expected.append([v.frontLeft, v.frontRight, v.rearLeft, v.rearRight])
+    same(batch.desaturate(w4, 2.5), expected)
+    w2 = rows(rng, N, 2, scale=6.0)
+    expected = [[v.left, v.right] for v in (DifferentialDriveWheelVelocities(*r).desaturate(2.5)
+                                            for r in w2)]
+    same(batch.desaturate(w2, 2.5), expected)
+    batch.desaturate(w2, 2.5, out=w2)
+    same(w2, expected)

@@ -29,14 +29,16 @@ stays safe, but the interleaving is unspecified).
 """
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from libc.math cimport atan2, cos, sin
+from libc.string cimport memset
 cimport numpy as cnp
 
 import numpy as np
 
-from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
+from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 from drivekin._kernels cimport (chassis_discretize, deadwheel_reading, deadwheel_solve,
-                                forward_solve, mat_vec, pose, rot_neg, rot_rad, swerve_ik,
-                                transform_log, twist_exp, vec, vec_rotate)
+                                desaturate_factors, forward_solve, mat_vec, max_abs, pose,
+                                rot_neg, rot_rad, swerve_ik, swerve_ik_accel, transform_log,
+                                twist_exp, vec, vec_rotate, wheels_desaturate)
 from drivekin.geometry cimport Translation2d
 from drivekin.kinematics cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics
@@ -49,8 +51,10 @@ from drivekin._errors import type_name
 
 cnp.import_array()
 
-__all__ = ["discretize", "exp", "log", "replay", "toChassisVelocities", "toFieldRelative",
-           "toRobotRelative", "toSwerveModuleVelocities", "toWheelVelocities"]
+__all__ = ["desaturate", "desaturateWheelVelocities", "discretize", "exp", "log", "replay",
+           "toChassisAccelerations", "toChassisVelocities", "toFieldRelative",
+           "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities",
+           "toWheelAccelerations", "toWheelVelocities"]
 
 
 # ---------------------------------------------------------------------------------------
@@ -99,6 +103,18 @@ cdef _Stack _stack(object x, tuple inner, str name, bint single_ok=True):
     s.array = a
     s.data = <double*>cnp.PyArray_DATA(a)
     return s
+
+
+cdef Py_ssize_t _rows(object x, Py_ssize_t cols, str name, str shapes) except -1:
+    """The wheel or module count of a value whose count is free: the last axis (cols = 0)
+    or the one before a last axis of ``cols``."""
+    if not cnp.PyArray_Check(x):
+        raise TypeError(f"{name} must be a float64 numpy array, got {type_name(x)}")
+    cdef tuple shape = (<object>x).shape
+    cdef Py_ssize_t nd = len(shape), base = 2 if cols else 1
+    if nd != base and nd != base + 1:
+        raise ValueError(f"{name} must have shape {shapes}, got {shape}")
+    return shape[nd - 2] if cols else shape[nd - 1]
 
 
 cdef _Stack _per_sample(object x, Py_ssize_t n, bint single, str name):
@@ -175,22 +191,24 @@ cdef int _ready(object k, tuple types, str call) except -1:
 # ---------------------------------------------------------------------------------------
 # Inverse kinematics
 
-def toSwerveModuleVelocities(SwerveDriveKinematics kinematics not None, chassisVelocities,
-                             centerOfRotation=None, out=None):
-    """Module velocities ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]`` for chassis velocities
-    ``(3,)`` / ``(N, 3)`` (robot-relative), about ``centerOfRotation`` (a Translation2d,
-    m; default the robot centre). The heading memory is used and left as N
-    :meth:`SwerveDriveKinematics.toSwerveModuleVelocities` calls would leave it."""
-    cdef SwerveDriveKinematics k = kinematics
-    kinematics._ready()
-    cdef _Stack v = _stack(chassisVelocities, (3,), "chassisVelocities")
-    cdef vec2_t cor = vec(0.0, 0.0)
-    if centerOfRotation is not None:
-        if not isinstance(centerOfRotation, Translation2d):
-            raise TypeError("centerOfRotation must be a drivekin Translation2d, got "
-                            f"{type_name(centerOfRotation)}")
-        cor = (<Translation2d>centerOfRotation).v
-    cdef _Stack o = _result(out, v.n, v.single, (k.n, 2), (v,), "chassisVelocities")
+cdef vec2_t _cor(object centerOfRotation) except *:
+    if centerOfRotation is None:
+        return vec(0.0, 0.0)
+    if not isinstance(centerOfRotation, Translation2d):
+        raise TypeError("centerOfRotation must be a drivekin Translation2d, got "
+                        f"{type_name(centerOfRotation)}")
+    return (<Translation2d>centerOfRotation).v
+
+
+cdef object _swerve_inverse(SwerveDriveKinematics k, object chassis, object omega,
+                            object centerOfRotation, object out, bint accel, str name):
+    """Module velocities (accel False; heading memory) or accelerations (accel True;
+    ``omega`` the angular velocity) for a chassis stack, as ``[magnitude, rad]``."""
+    k._ready()
+    cdef _Stack v = _stack(chassis, (3,), name)
+    cdef vec2_t cor = _cor(centerOfRotation)
+    cdef _Stack w = _per_sample(omega, v.n, v.single, "angularVelocity")
+    cdef _Stack o = _result(out, v.n, v.single, (k.n, 2), (v, w), name)
     cdef Py_ssize_t n = k.n, i, j, count = v.n
     # Private copies of the rows and the headings: another thread's call cannot change
     # them under the loop, and the headings are written back once at the end.
@@ -199,7 +217,7 @@ def toSwerveModuleVelocities(SwerveDriveKinematics kinematics not None, chassisV
     cdef double* ry = buf + n
     cdef double* hc = buf + 2 * n
     cdef double* hs = buf + 3 * n
-    cdef double* sp = buf + 4 * n
+    cdef double* mag = buf + 4 * n
     cdef double* oc = buf + 5 * n
     cdef double* os = buf + 6 * n
     cdef const double* x
@@ -214,24 +232,26 @@ def toSwerveModuleVelocities(SwerveDriveKinematics kinematics not None, chassisV
         for i in range(count):
             x = v.data + 3 * i
             y = o.data + 2 * n * i
-            swerve_ik(n, rx, ry, x[0], x[1], x[2], hc, hs, sp, oc, os)
+            if accel:
+                swerve_ik_accel(n, rx, ry, x[0], x[1], w.data[i], x[2], mag, oc, os)
+            else:
+                swerve_ik(n, rx, ry, x[0], x[1], x[2], hc, hs, mag, oc, os)
             for j in range(n):
-                y[2 * j] = sp[j]
+                y[2 * j] = mag[j]
                 y[2 * j + 1] = atan2(os[j], oc[j])
-    for j in range(n):
-        k.hc[j] = hc[j]
-        k.hs[j] = hs[j]
+    if not accel:
+        for j in range(n):
+            k.hc[j] = hc[j]
+            k.hs[j] = hs[j]
     PyMem_Free(buf)
     return o.array
 
 
-def toWheelVelocities(kinematics, chassisVelocities, centerOfRotation=None, out=None):
-    """Wheel velocities ``(W,)`` / ``(N, W)`` (m/s) for chassis velocities ``(3,)`` /
-    ``(N, 3)``: mecanum (W = 4, about ``centerOfRotation``), differential (W = 2,
-    ``[left, right]``) or dead-wheel (W = the wheel count; surface velocities)."""
-    _ready(kinematics, (MecanumDriveKinematics, DifferentialDriveKinematics,
-                        DeadWheelKinematics), "toWheelVelocities")
-    cdef _Stack v = _stack(chassisVelocities, (3,), "chassisVelocities")
+cdef object _wheels_inverse(object kinematics, object chassis, object centerOfRotation,
+                            object out, str name):
+    """Mecanum, differential or dead-wheel readings for a chassis stack (the same map
+    serves velocities and accelerations)."""
+    cdef _Stack v = _stack(chassis, (3,), name)
     cdef Py_ssize_t i, j, w, count = v.n
     cdef double m[12]
     cdef double half
@@ -241,13 +261,8 @@ def toWheelVelocities(kinematics, chassisVelocities, centerOfRotation=None, out=
     cdef _Stack o
     cdef DeadWheelKinematics dk
     if type(kinematics) is MecanumDriveKinematics:
-        if centerOfRotation is None:
-            centerOfRotation = Translation2d()
-        elif not isinstance(centerOfRotation, Translation2d):
-            raise TypeError("centerOfRotation must be a drivekin Translation2d, got "
-                            f"{type_name(centerOfRotation)}")
-        o = _result(out, count, v.single, (4,), (v,), "chassisVelocities")
-        (<MecanumDriveKinematics>kinematics)._set_cor((<Translation2d>centerOfRotation).v)
+        (<MecanumDriveKinematics>kinematics)._set_cor(_cor(centerOfRotation))
+        o = _result(out, count, v.single, (4,), (v,), name)
         m = (<MecanumDriveKinematics>kinematics).m
         with nogil:
             for i in range(count):
@@ -256,7 +271,7 @@ def toWheelVelocities(kinematics, chassisVelocities, centerOfRotation=None, out=
     if centerOfRotation is not None:
         raise TypeError(f"{type(kinematics).__name__} has no centre of rotation argument")
     if type(kinematics) is DifferentialDriveKinematics:
-        o = _result(out, count, v.single, (2,), (v,), "chassisVelocities")
+        o = _result(out, count, v.single, (2,), (v,), name)
         half = (<DifferentialDriveKinematics>kinematics)._trackwidth / 2.0
         with nogil:
             for i in range(count):
@@ -266,7 +281,7 @@ def toWheelVelocities(kinematics, chassisVelocities, centerOfRotation=None, out=
         return o.array
     dk = <DeadWheelKinematics>kinematics
     w = dk.n
-    o = _result(out, count, v.single, (w,), (v,), "chassisVelocities")
+    o = _result(out, count, v.single, (w,), (v,), name)
     rows = _scratch(3 * w)
     for j in range(3 * w):
         rows[j] = dk.m[j]
@@ -280,38 +295,84 @@ def toWheelVelocities(kinematics, chassisVelocities, centerOfRotation=None, out=
     return o.array
 
 
+_INVERSE = (SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics,
+            DeadWheelKinematics)
+
+
+def toSwerveModuleVelocities(kinematics, chassisVelocities, centerOfRotation=None,
+                             out=None):
+    """Module velocities ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]`` for chassis velocities
+    ``(3,)`` / ``(N, 3)`` (robot-relative), about ``centerOfRotation`` (a Translation2d,
+    m; default the robot centre). The heading memory is used and left as N
+    :meth:`SwerveDriveKinematics.toSwerveModuleVelocities` calls would leave it."""
+    _ready(kinematics, (SwerveDriveKinematics,), "toSwerveModuleVelocities")
+    return _swerve_inverse(kinematics, chassisVelocities, 0.0, centerOfRotation, out, False,
+                           "chassisVelocities")
+
+
+def toSwerveModuleAccelerations(kinematics, chassisAccelerations, angularVelocity=0.0,
+                                centerOfRotation=None, out=None):
+    """Module accelerations ``(M, 2)`` / ``(N, M, 2)`` ``[m/s², rad]`` for chassis
+    accelerations ``(3,)`` / ``(N, 3)`` ``[ax, ay, alpha]`` while turning at
+    ``angularVelocity`` (rad/s; a float or ``(N,)``), as
+    :meth:`SwerveDriveKinematics.toSwerveModuleAccelerations`."""
+    _ready(kinematics, (SwerveDriveKinematics,), "toSwerveModuleAccelerations")
+    return _swerve_inverse(kinematics, chassisAccelerations, angularVelocity,
+                           centerOfRotation, out, True, "chassisAccelerations")
+
+
+def toWheelVelocities(kinematics, chassisVelocities, centerOfRotation=None, out=None):
+    """Wheel velocities for chassis velocities ``(3,)`` / ``(N, 3)``: mecanum ``(4,)`` /
+    ``(N, 4)`` (about ``centerOfRotation``), differential ``(N, 2)`` ``[left, right]``,
+    dead-wheel ``(N, W)`` (surface velocities), all m/s; a SwerveDriveKinematics gives
+    :func:`toSwerveModuleVelocities`."""
+    _ready(kinematics, _INVERSE, "toWheelVelocities")
+    if type(kinematics) is SwerveDriveKinematics:
+        return _swerve_inverse(kinematics, chassisVelocities, 0.0, centerOfRotation, out,
+                               False, "chassisVelocities")
+    return _wheels_inverse(kinematics, chassisVelocities, centerOfRotation, out,
+                           "chassisVelocities")
+
+
+def toWheelAccelerations(kinematics, chassisAccelerations, centerOfRotation=None, out=None):
+    """Wheel accelerations (m/s²) for chassis accelerations ``(3,)`` / ``(N, 3)``, shaped
+    as :func:`toWheelVelocities`; a SwerveDriveKinematics gives
+    :func:`toSwerveModuleAccelerations` with zero angular velocity."""
+    _ready(kinematics, _INVERSE, "toWheelAccelerations")
+    if type(kinematics) is SwerveDriveKinematics:
+        return _swerve_inverse(kinematics, chassisAccelerations, 0.0, centerOfRotation, out,
+                               True, "chassisAccelerations")
+    return _wheels_inverse(kinematics, chassisAccelerations, centerOfRotation, out,
+                           "chassisAccelerations")
+
+
 # ---------------------------------------------------------------------------------------
 # Forward kinematics
 
-def toChassisVelocities(kinematics, wheelVelocities, gyroRates=None, out=None):
-    """Chassis velocities ``(3,)`` / ``(N, 3)`` ``[vx, vy, omega]`` from swerve module
-    velocities ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]``, or wheel velocities ``(W,)`` /
-    ``(N, W)`` of a mecanum, differential or dead-wheel drive. ``gyroRates`` (rad/s, a
-    float or ``(N,)``) is the dead-wheel form's optional gyro."""
-    _ready(kinematics, (SwerveDriveKinematics, MecanumDriveKinematics,
-                        DifferentialDriveKinematics, DeadWheelKinematics),
-           "toChassisVelocities")
+cdef object _forward(object kinematics, object wheels, object gyro_arg, object out,
+                     bint accel, str name, str gyro_name):
     cdef Py_ssize_t i, j, n, count
     cdef _Stack w, o, g
     cdef double* buf
     cdef double* f
     cdef double tw
+    cdef double r[4]
     cdef const double* x
     cdef DeadWheelKinematics dk
     cdef SwerveDriveKinematics sk
-    cdef bint gyro = gyroRates is not None
+    cdef bint gyro = gyro_arg is not None
     if gyro and type(kinematics) is not DeadWheelKinematics:
-        raise TypeError("gyroRates is only for DeadWheelKinematics")
+        raise TypeError(f"{gyro_name} is only for DeadWheelKinematics")
     if type(kinematics) is SwerveDriveKinematics:
         sk = <SwerveDriveKinematics>kinematics
         n = sk.n
-        w = _stack(wheelVelocities, (n, 2), "moduleVelocities")
+        w = _stack(wheels, (n, 2), name)
         count = w.n
-        o = _result(out, count, w.single, (3,), (w,), "moduleVelocities")
-        buf = _scratch(3 * n + 6 * n)
+        o = _result(out, count, w.single, (3,), (w,), name)
+        buf = _scratch(3 * n + 8 * n)
         f = buf + 3 * n
-        for j in range(6 * n):
-            f[j] = sk.f1[j]
+        for j in range(8 * n if accel else 6 * n):
+            f[j] = sk.f2[j] if accel else sk.f1[j]
         with nogil:
             for i in range(count):
                 x = w.data + 2 * n * i
@@ -319,12 +380,19 @@ def toChassisVelocities(kinematics, wheelVelocities, gyroRates=None, out=None):
                     buf[j] = x[2 * j]
                     buf[n + j] = cos(x[2 * j + 1])
                     buf[2 * n + j] = sin(x[2 * j + 1])
-                forward_solve(3, n, f, buf, buf + n, buf + 2 * n, o.data + 3 * i)
+                if accel:
+                    # The solve's third row (the ω² estimate) is discarded.
+                    forward_solve(4, n, f, buf, buf + n, buf + 2 * n, r)
+                    o.data[3 * i] = r[0]
+                    o.data[3 * i + 1] = r[1]
+                    o.data[3 * i + 2] = r[3]
+                else:
+                    forward_solve(3, n, f, buf, buf + n, buf + 2 * n, o.data + 3 * i)
         PyMem_Free(buf)
         return o.array
     if type(kinematics) is MecanumDriveKinematics:
-        w = _stack(wheelVelocities, (4,), "wheelVelocities")
-        o = _result(out, w.n, w.single, (3,), (w,), "wheelVelocities")
+        w = _stack(wheels, (4,), name)
+        o = _result(out, w.n, w.single, (3,), (w,), name)
         f = (<MecanumDriveKinematics>kinematics).f
         count = w.n
         with nogil:
@@ -332,8 +400,8 @@ def toChassisVelocities(kinematics, wheelVelocities, gyroRates=None, out=None):
                 mat_vec(3, 4, f, w.data + 4 * i, o.data + 3 * i)
         return o.array
     if type(kinematics) is DifferentialDriveKinematics:
-        w = _stack(wheelVelocities, (2,), "wheelVelocities")
-        o = _result(out, w.n, w.single, (3,), (w,), "wheelVelocities")
+        w = _stack(wheels, (2,), name)
+        o = _result(out, w.n, w.single, (3,), (w,), name)
         tw = (<DifferentialDriveKinematics>kinematics)._trackwidth
         count = w.n
         with nogil:
@@ -345,15 +413,15 @@ def toChassisVelocities(kinematics, wheelVelocities, gyroRates=None, out=None):
         return o.array
     dk = <DeadWheelKinematics>kinematics
     n = dk.n
-    w = _stack(wheelVelocities, (n,), "wheelVelocities")
+    w = _stack(wheels, (n,), name)
     count = w.n
     if gyro:
-        g = _per_sample(gyroRates, count, w.single, "gyroRates")
+        g = _per_sample(gyro_arg, count, w.single, gyro_name)
     else:
         if not dk.heading:
-            dk._need_heading("toChassisVelocities")
-        g = _per_sample(0.0, count, w.single, "gyroRates")
-    o = _result(out, count, w.single, (3,), (w, g), "wheelVelocities")
+            dk._need_heading("toChassisAccelerations" if accel else "toChassisVelocities")
+        g = _per_sample(0.0, count, w.single, gyro_name)
+    o = _result(out, count, w.single, (3,), (w, g), name)
     buf = _scratch(6 * n + 2)
     for j in range(3 * n):
         buf[j] = dk.p3[j]
@@ -366,6 +434,107 @@ def toChassisVelocities(kinematics, wheelVelocities, gyroRates=None, out=None):
             deadwheel_solve(n, buf, buf + 3 * n, buf + 5 * n, w.data + n * i, gyro, g.data[i],
                             o.data + 3 * i)
     PyMem_Free(buf)
+    return o.array
+
+
+def toChassisVelocities(kinematics, wheelVelocities, gyroRates=None, out=None):
+    """Chassis velocities ``(3,)`` / ``(N, 3)`` ``[vx, vy, omega]`` from swerve module
+    velocities ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]``, or wheel velocities ``(W,)`` /
+    ``(N, W)`` of a mecanum, differential or dead-wheel drive. ``gyroRates`` (rad/s, a
+    float or ``(N,)``) is the dead-wheel form's optional gyro."""
+    _ready(kinematics, _INVERSE, "toChassisVelocities")
+    return _forward(kinematics, wheelVelocities, gyroRates, out, False, "wheelVelocities",
+                    "gyroRates")
+
+
+def toChassisAccelerations(kinematics, wheelAccelerations, angularAccelerations=None,
+                           out=None):
+    """Chassis accelerations ``(3,)`` / ``(N, 3)`` ``[ax, ay, alpha]`` from swerve module
+    accelerations ``(M, 2)`` / ``(N, M, 2)`` ``[m/s², rad]`` or wheel accelerations;
+    ``angularAccelerations`` (rad/s², a float or ``(N,)``) fixes alpha for dead wheels."""
+    _ready(kinematics, _INVERSE, "toChassisAccelerations")
+    return _forward(kinematics, wheelAccelerations, angularAccelerations, out, True,
+                    "wheelAccelerations", "angularAccelerations")
+
+
+# ---------------------------------------------------------------------------------------
+# Desaturation
+
+def desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed,
+                              attainableMaxModuleSpeed=None,
+                              attainableMaxTranslationalSpeed=None,
+                              attainableMaxRotationalVelocity=None, out=None):
+    """:meth:`SwerveDriveKinematics.desaturateWheelVelocities` for module velocities
+    ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]``, each sample scaled on its own. Either one
+    limit ``attainableMaxSpeed`` (m/s), or the desired chassis velocities (``(3,)`` /
+    ``(N, 3)``) in its place followed by the three limits (m/s, m/s, rad/s). Angles pass
+    through unchanged (as in the per-call (M, 2) array form); ``out=moduleVelocities``
+    desaturates in place."""
+    cdef _Stack v, c, o
+    cdef desat_t p
+    cdef bint five = attainableMaxModuleSpeed is not None or \
+        attainableMaxTranslationalSpeed is not None or attainableMaxRotationalVelocity is not None
+    cdef Py_ssize_t i, j, m, count
+    cdef double div, mul
+    cdef double* y
+    cdef const double* x
+    memset(&p, 0, sizeof(p))
+    m = _rows(moduleVelocities, 2, "moduleVelocities", "(M, 2) or (N, M, 2)")
+    v = _stack(moduleVelocities, (m, 2), "moduleVelocities")
+    count = v.n
+    p.five = five
+    if five:
+        if (attainableMaxModuleSpeed is None or attainableMaxTranslationalSpeed is None
+                or attainableMaxRotationalVelocity is None):
+            raise TypeError("the five-argument form needs all three limits")
+        c = _stack(attainableMaxSpeed, (3,), "desiredChassisVelocities")
+        if c.single != v.single or c.n != count:
+            raise ValueError("desiredChassisVelocities must have one row per sample of "
+                             f"moduleVelocities ({'(3,)' if v.single else f'({count}, 3)'}), "
+                             f"got {attainableMaxSpeed.shape}")
+        p.max_module = attainableMaxModuleSpeed
+        p.max_trans = attainableMaxTranslationalSpeed
+        p.max_rot = attainableMaxRotationalVelocity
+        inputs = (v, c)
+    else:
+        c = v
+        p.max_speed = attainableMaxSpeed
+        inputs = (v,)
+    # In place is safe: each sample's speeds are all read before any is written.
+    if out is moduleVelocities:
+        o = v
+    else:
+        o = _result(out, count, v.single, (m, 2), inputs, "moduleVelocities")
+    with nogil:
+        for i in range(count):
+            x = v.data + 2 * m * i
+            y = o.data + 2 * m * i
+            if five:
+                p.desired.x = c.data[3 * i]
+                p.desired.y = c.data[3 * i + 1]
+                p.desired.z = c.data[3 * i + 2]
+            desaturate_factors(max_abs(m, x, 2), &p, &div, &mul)
+            for j in range(m):
+                y[2 * j] = x[2 * j] / div * mul
+                y[2 * j + 1] = x[2 * j + 1]
+    return o.array
+
+
+def desaturate(wheelVelocities, double attainableMaxSpeed, out=None):
+    """:meth:`MecanumDriveWheelVelocities.desaturate` (W = 4) and the differential one
+    (W = 2) for wheel velocities ``(W,)`` / ``(N, W)`` (m/s), each sample scaled on its own;
+    ``out=wheelVelocities`` desaturates in place."""
+    cdef Py_ssize_t i, w = _rows(wheelVelocities, 0, "wheelVelocities", "(W,) or (N, W)")
+    if w != 2 and w != 4:
+        raise ValueError("wheelVelocities must hold 4 (mecanum) or 2 (differential) wheels "
+                         f"per sample, got shape {wheelVelocities.shape}")
+    cdef _Stack v = _stack(wheelVelocities, (w,), "wheelVelocities")
+    cdef _Stack o = v if out is wheelVelocities else _result(out, v.n, v.single, (w,), (v,),
+                                                             "wheelVelocities")
+    cdef Py_ssize_t count = v.n
+    with nogil:
+        for i in range(count):
+            wheels_desaturate(w, v.data + w * i, attainableMaxSpeed, o.data + w * i)
     return o.array
 
 
