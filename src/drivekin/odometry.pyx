@@ -13,8 +13,9 @@ from cpython.mem cimport PyMem_Free, PyMem_Malloc
 
 from drivekin._types cimport pose2_t, rot2_t
 from drivekin._wheels cimport _WheelValues
-from drivekin._kernels cimport (deadwheel_solve, forward_solve, gyro_change, mat_vec,
-                                odometry_move, odometry_step, pose, rot_xy, vec)
+from drivekin._kernels cimport (deadwheel_solve, forward_solve, mat_vec, odometry_move,
+                                odometry_move_cs, odometry_step, pose, rot_minus,
+                                rot_radians, rot_xy, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.kinematics cimport SwerveDriveKinematics, SwerveModulePosition
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
@@ -286,13 +287,14 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         return 0
 
     cdef void _advance(self, double xWheelPos, double yWheelPos, rot2_t gyro) noexcept nogil:
-        cdef double dtheta = gyro_change(gyro, self.prev_gyro)
+        cdef rot2_t turn = rot_minus(gyro, self.prev_gyro)
+        cdef double dtheta = rot_radians(turn)
         cdef double dx = xWheelPos - self.prev_x + dtheta * self.x_wheel_y
         cdef double dy = yWheelPos - self.prev_y - dtheta * self.y_wheel_x
         self.prev_x = xWheelPos
         self.prev_y = yWheelPos
         self.prev_gyro = gyro
-        odometry_move(&self.pose, &self.twist, dx, dy, dtheta)
+        odometry_move_cs(&self.pose, &self.twist, dx, dy, dtheta, turn.c, turn.s)
 
     def toChassisVelocities(self, double vx, double vy, double omega):
         """Return the robot velocity from the forward wheel's and left wheel's surface
@@ -390,14 +392,20 @@ cdef class DeadWheelOdometry(_Odometry):
     cdef void _advance(self, double* dist, rot2_t gyro) noexcept nogil:
         # Without a gyro, ``gyro`` is ignored.
         cdef Py_ssize_t i
-        cdef double d, w = 0.0
+        cdef double d
         cdef double r[3]
+        cdef rot2_t turn
         for i in range(self.kin.n):
             d = dist[i]
             dist[i] = d - self.prev[i]
             self.prev[i] = d
         if self.gyro:
-            w = gyro_change(gyro, self.prev_gyro)
+            turn = rot_minus(gyro, self.prev_gyro)
             self.prev_gyro = gyro
-        deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, self.gyro, w, r)
-        odometry_move(&self.pose, &self.twist, r[0], r[1], r[2])
+            deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, True,
+                            rot_radians(turn), r)
+            odometry_move_cs(&self.pose, &self.twist, r[0], r[1], r[2], turn.c, turn.s)
+        else:
+            deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, False,
+                            0.0, r)
+            odometry_move(&self.pose, &self.twist, r[0], r[1], r[2])
