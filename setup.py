@@ -38,7 +38,7 @@ if trace:
 compile_args = ["-O3", "-fno-math-errno"] if os.name != "nt" else []
 
 modules = ["geometry", "kinematics", "_wheels", "differential", "mecanum", "deadwheel",
-           "diffswerve", "odometry", "estimator", "_alloccount"]
+           "diffswerve", "odometry", "estimator", "batch", "_alloccount"]
 extensions = [
     Extension(
         f"drivekin.{name}",

@@ -12,6 +12,8 @@ import numpy as np
 import pytest
 
 from drivekin import (
+    DeadWheelKinematics,
+    DeadWheelPoseEstimator,
     DifferentialDrivePoseEstimator,
     DifferentialDriveWheelPositions,
     MathSharedStore,
@@ -202,3 +204,86 @@ def test_bad_input(call, exc, needle):
         call(e)
     assert needle in str(info.value)
     assert e.getEstimatedPosition() == before
+
+
+# -- sampleAt interpolation: the odometry-step shortcut against the general form -------------
+# Between two samples that the odometry appended one step apart, sampleAt reuses that step's
+# twist instead of taking the log of one pose relative to the other (estimator.pyx,
+# interpolate_samples). These drives mix appended, inserted and replaced samples, heading
+# steps near and beyond ±π, and resets; a model of WPILib's buffer built from Pose2d.interpolate
+# must agree everywhere.
+
+def _model_sample(history, t):
+    times = sorted(history)
+    if t <= times[0]:
+        return history[times[0]]
+    if t >= times[-1]:
+        return history[times[-1]]
+    hi = next(i for i, s in enumerate(times) if s >= t)
+    a, b = times[hi - 1], times[hi]
+    if b == t:
+        return history[b]
+    return history[a].interpolate(history[b], (t - a) / (b - a))
+
+
+def _drive_and_compare(e, steps, step, rng):
+    history = {}
+    for _ in range(steps):
+        t, pose = step(rng)
+        history = {s: p for s, p in history.items() if t - s < 1.5}
+        history[t] = pose
+        times = sorted(history)
+        probes = list(rng.uniform(times[0] - 0.05, times[-1] + 0.05, 4)) + times
+        probes += [0.5 * (a + b) for a, b in zip(times, times[1:])]
+        for q in probes:
+            expected = _model_sample(history, q)
+            got = e.sampleAt(q)
+            assert_pose((expected.getX(), expected.getY(), expected.getRotation().getRadians()),
+                        got, 1e-12)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_sample_interpolation_with_appended_inserted_and_replaced_samples(seed):
+    rng = np.random.default_rng(seed)
+    e = estimator()
+    state = {"t": 1.0, "l": 0.0, "r": 0.0, "gyro": 0.0}
+
+    def step(rng):
+        kind = rng.choice(["append", "append", "insert", "replace", "spin"])
+        if kind == "append":
+            state["t"] += rng.uniform(0.005, 0.04)
+            t = state["t"]
+        elif kind == "insert":
+            t = state["t"] - rng.uniform(0.0, 0.3)
+        elif kind == "replace":
+            t = state["t"]
+        else:                                   # heading steps of 2.9 .. 3.14 rad
+            state["t"] += 0.02
+            t = state["t"]
+            state["gyro"] += rng.choice([-1, 1]) * rng.uniform(2.9, math.pi)
+        state["l"] += rng.uniform(-0.05, 0.1)
+        state["r"] += rng.uniform(-0.05, 0.1)
+        state["gyro"] += rng.uniform(-0.2, 0.2)
+        pose = e.updateWithTime(t, R(state["gyro"]), state["l"], state["r"])
+        return t, pose
+
+    _drive_and_compare(e, 60, step, rng)
+    e.resetPose(Pose2d(1, 2, R(0.5)))
+    _drive_and_compare(e, 20, step, rng)
+
+
+def test_sample_interpolation_after_wheel_only_heading_steps_beyond_pi():
+    # Without a gyro the dead-wheel heading change is not wrapped: a step of 4 rad is a
+    # twist of 4 rad whose pose-to-pose log is 4 − 2π; the interpolation must follow the log.
+    kin = DeadWheelKinematics([Pose2d(0, 0.2, R()), Pose2d(0, -0.2, R()), Pose2d(0.1, 0, R(math.pi / 2))])
+    e = DeadWheelPoseEstimator(kin, [0.0, 0.0, 0.0])
+    wheels = np.zeros(3)
+    state = {"t": 0.0}
+
+    def step(rng):
+        state["t"] += 0.02
+        spin = rng.choice([0.01, 4.0, -4.0, 3.05])
+        wheels[:] += [-0.2 * spin + 0.05, 0.2 * spin + 0.05, 0.1 * spin + 0.01]
+        return state["t"], e.updateWithTime(state["t"], wheels.copy())
+
+    _drive_and_compare(e, 40, step, np.random.default_rng(7))

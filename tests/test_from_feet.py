@@ -92,3 +92,29 @@ def test_a_robotpy_rotation_is_named(g, call):
 def test_bad_arguments(call):
     with pytest.raises(TypeError):
         call()
+
+
+@given(anything, anything, anything)
+def test_chassis_velocities_from_feet_matches_robotpy_bits(vx, vy, omega):
+    k = pytest.importorskip("wpimath.kinematics")
+    from drivekin import ChassisVelocities
+
+    ours = ChassisVelocities.fromFeet(vx, vy, omega)
+    theirs = k.ChassisSpeeds.fromFeet(vx, vy, omega)
+    assert bits(ours.vx, ours.vy, ours.omega) == bits(theirs.vx, theirs.vy, theirs.omega)
+    assert ChassisVelocities.fromFeet() == ChassisVelocities()
+
+
+@given(anything, anything, anything, anything)
+def test_wheel_velocities_from_feet_match_robotpy_bits(a, b, c, d):
+    k = pytest.importorskip("wpimath.kinematics")
+    from drivekin import DifferentialDriveWheelVelocities, MecanumDriveWheelVelocities
+
+    ours = MecanumDriveWheelVelocities.fromFeet(a, b, c, d)
+    theirs = k.MecanumDriveWheelSpeeds.fromFeet(a, b, c, d)
+    assert bits(ours.frontLeft, ours.frontRight, ours.rearLeft, ours.rearRight) == \
+        bits(theirs.frontLeft, theirs.frontRight, theirs.rearLeft, theirs.rearRight)
+    two = DifferentialDriveWheelVelocities.fromFeet(a, b)
+    rp = k.DifferentialDriveWheelSpeeds.fromFeet(a, b)
+    assert bits(two.left, two.right) == bits(rp.left, rp.right)
+    assert type(ours) is MecanumDriveWheelVelocities and type(two) is DifferentialDriveWheelVelocities

@@ -36,6 +36,12 @@ cdef inline double fhypot(double x, double y) noexcept nogil:
         return r
     return hypot(x, y)
 
+# robotpy-wpimath's fromFeet factories convert through the C++ units library, which
+# multiplies by the numerator of 1 ft = 381/1250 m and then divides by the denominator;
+# the same two roundings give the same bits.
+cdef inline double feet_to_meters(double feet) noexcept nogil:
+    return feet * 381.0 / 1250.0
+
 # ---------------------------------------------------------------------------------------
 # Rotation2d
 
@@ -134,7 +140,13 @@ cdef inline pose2_t pose_times(pose2_t p, double k) noexcept nogil:
 # Twist2d.exp / Transform2d.log
 
 cdef inline pose2_t twist_exp(double dx, double dy, double dtheta) noexcept nogil:
-    cdef double st = sin(dtheta), ct = cos(dtheta), s, c
+    return twist_exp_cs(dx, dy, dtheta, cos(dtheta), sin(dtheta))
+
+cdef inline pose2_t twist_exp_cs(double dx, double dy, double dtheta,
+                                 double ct, double st) noexcept nogil:
+    # twist_exp with cos θ and sin θ already known (odometry has the heading change as a
+    # rotation before it has the angle).
+    cdef double s, c
     if fabs(dtheta) < 1e-9:
         # Series (exact to rounding here): sin θ/θ = 1 − θ²/6, (1 − cos θ)/θ = θ/2.
         s = 1.0 - dtheta * dtheta / 6.0
@@ -317,14 +329,30 @@ cdef inline void mat_vec(Py_ssize_t rows, Py_ssize_t cols, const double* m, cons
             acc = acc + m[r * cols + c] * x[c]
         out[r] = acc
 
-cdef inline double gyro_change(rot2_t gyro, rot2_t prev) noexcept nogil:
-    # Wrapped to (−π, π]: 170° -> -170° is +20°.
-    return rot_radians(rot_minus(gyro, prev))
+cdef inline void odometry_move_cs(pose2_t* p,                          # IN/OUT
+                                  twist2_t* tw,                        # OUT
+                                  double dx, double dy, double dtheta,
+                                  double ct, double st) noexcept nogil:
+    # The twist is kept: it is the log of the new pose relative to the old one, which the
+    # pose estimators' interpolation would otherwise recompute with an atan2.
+    tw.dx = dx
+    tw.dy = dy
+    tw.dtheta = dtheta
+    p[0] = pose_transform_by(p[0], twist_exp_cs(dx, dy, dtheta, ct, st))
+
+cdef inline void odometry_move(pose2_t* p,                             # IN/OUT
+                               twist2_t* tw,                           # OUT
+                               double dx, double dy, double dtheta) noexcept nogil:
+    odometry_move_cs(p, tw, dx, dy, dtheta, cos(dtheta), sin(dtheta))
 
 cdef inline void odometry_step(pose2_t* p, rot2_t* prev_gyro,          # IN/OUT
+                               twist2_t* tw,                           # OUT
                                double dx, double dy, rot2_t gyro) noexcept nogil:
-    # The heading change always comes from the gyro.
-    p[0] = pose_transform_by(p[0], twist_exp(dx, dy, gyro_change(gyro, prev_gyro[0])))
+    # The heading change always comes from the gyro, wrapped to (−π, π] (170° -> -170° is
+    # +20°). Its rotation gives cos dθ and sin dθ directly (within an ulp of WPILib's
+    # cos/sin of the angle), saving a sincos per step.
+    cdef rot2_t d = rot_minus(gyro, prev_gyro[0])
+    odometry_move_cs(p, tw, dx, dy, rot_radians(d), d.c, d.s)
     prev_gyro[0] = gyro
 
 cdef inline void wheels_desaturate(Py_ssize_t n, const double* w, double attainable,

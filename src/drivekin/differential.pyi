@@ -27,6 +27,10 @@ class DifferentialDriveWheelVelocities:
     """
 
     def __init__(self, left: float = 0.0, right: float = 0.0) -> None: ...
+    @staticmethod
+    def fromFeet(left: float, right: float) -> DifferentialDriveWheelVelocities:
+        """Return the wheel velocities given in ft/s, in m/s (the same bits as
+        robotpy-wpimath's ``DifferentialDriveWheelSpeeds.fromFeet``)."""
     @property
     def left(self) -> float:
         """Left wheel value (m/s, m or m/s² depending on the class)."""

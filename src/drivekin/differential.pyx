@@ -7,7 +7,7 @@ cimport cython
 from libc.math cimport isfinite
 
 from drivekin._wheels cimport _WheelValues, install_bare_new
-from drivekin._kernels cimport clamp01, wheels_desaturate
+from drivekin._kernels cimport clamp01, feet_to_meters, wheels_desaturate
 from drivekin.geometry cimport new_twist
 from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
 from drivekin._errors import type_name
@@ -59,6 +59,13 @@ cdef class DifferentialDriveWheelVelocities(_Wheel2):
 
     cdef _WheelValues _new(self):
         return init2(DifferentialDriveWheelVelocities.__new__(DifferentialDriveWheelVelocities), 0.0, 0.0)
+
+    @staticmethod
+    def fromFeet(double left, double right):
+        """Return the wheel velocities given in ft/s, in m/s (the same bits as
+        robotpy-wpimath's ``DifferentialDriveWheelSpeeds.fromFeet``)."""
+        return init2(DifferentialDriveWheelVelocities.__new__(DifferentialDriveWheelVelocities),
+                     feet_to_meters(left), feet_to_meters(right))
 
     @cython.always_allow_keywords(False)   # METH_O: the 1-argument fast call (~3 ns)
     def desaturate(self, double attainableMaxSpeed):

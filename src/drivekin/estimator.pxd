@@ -1,6 +1,6 @@
 # Pose estimators: odometry fused with vision measurements (WPILib 2027's PoseEstimator).
 cimport cython
-from drivekin._types cimport pose2_t, rot2_t
+from drivekin._types cimport pose2_t, rot2_t, twist2_t
 from drivekin.geometry cimport Pose2d, Rotation2d
 from drivekin.mecanum cimport MecanumDriveWheelPositions
 from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
@@ -11,6 +11,8 @@ from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
 cdef struct sample_t:
     double t                     # s
     pose2_t p                    # odometry pose at t (field frame, m)
+    twist2_t tw                  # the odometry step from the previous sample to this one,
+    bint joined                  # when that is what it is (see _after_update)
 
 cdef struct record_t:
     # A vision correction: at time t the odometry said ``odometry``, the corrected pose is
@@ -18,6 +20,7 @@ cdef struct record_t:
     double t
     pose2_t vision
     pose2_t odometry
+    pose2_t shift                # vision ∘ odometry⁻¹, so compensating is one composition
 
 
 cdef class _PoseEstimator:
@@ -27,6 +30,7 @@ cdef class _PoseEstimator:
     cdef pose2_t estimate
     cdef sample_t* buf           # odometry poses, ascending time: buf[start : start + count]
     cdef Py_ssize_t start, count, cap
+    cdef bint tail_is_odometry   # the newest sample is the odometry's current pose
     cdef record_t* rec           # vision records, ascending time: rec[0 : nrec]
     cdef Py_ssize_t nrec, rcap
     cdef bint ready
@@ -35,6 +39,7 @@ cdef class _PoseEstimator:
     cdef int _start(self) except -1
     cdef int _check(self) except -1
     cdef int _reserve(self) except -1
+    cdef int _set_vision_std_devs(self, object values) except -1
     cdef int _after_update(self, double t) except -1
     cdef void _clear(self) noexcept
     cdef bint _sample(self, double t, pose2_t* out) noexcept

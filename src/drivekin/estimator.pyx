@@ -17,16 +17,16 @@ calls: the pose history and the vision records live in arrays that grow only whe
 history needs more room, and returned poses come from the Pose2d freelist.
 """
 from cpython.mem cimport PyMem_Free, PyMem_Malloc, PyMem_Realloc
-from libc.math cimport isfinite, sqrt
+from libc.math cimport fabs, isfinite, sqrt
 from libc.string cimport memmove
 cimport numpy as cnp
 
 import time
 
-from drivekin._types cimport pose2_t, rot2_t
+from drivekin._types cimport pose2_t, rot2_t, twist2_t
 from drivekin._numbers cimport read_floats
 from drivekin._kernels cimport (pose, pose_interpolate, pose_relative_to, pose_transform_by,
-                                rot_times, vec)
+                                rot_times, transform_inverse, twist_exp, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.kinematics cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
@@ -117,9 +117,25 @@ cdef inline double gain(double q, double r) noexcept nogil:
     return q / (q + sqrt(q * r))
 
 
+cdef inline void set_shift(record_t* r) noexcept nogil:
+    r.shift = pose_transform_by(r.vision, transform_inverse(r.odometry))
+
 cdef inline pose2_t compensate(const record_t* r, pose2_t p) noexcept nogil:
-    # The corrected pose at r.t plus the odometry's motion since then.
-    return pose_transform_by(r.vision, pose_relative_to(p, r.odometry))
+    # The corrected pose at r.t plus the odometry's motion since then: WPILib's
+    # vision + (p − odometry), composed once ahead of time as the shift (equal up to
+    # rounding; it saves two rotation normalisations on every update and sample).
+    return pose_transform_by(r.shift, p)
+
+
+cdef inline pose2_t interpolate_samples(const sample_t* a, const sample_t* b,
+                                        double f) noexcept nogil:
+    # Pose2d.interpolate(a.p, b.p, f). When b was appended by the odometry step after a,
+    # the log of b relative to a is that step's twist (to rounding), which saves an atan2
+    # and two normalisations. Near ±π the log's wrapped angle may differ from the step's,
+    # so there, and for any other pair, the general form runs.
+    if f <= 0.0 or f >= 1.0 or not b.joined or not fabs(b.tw.dtheta) < 3.0:
+        return pose_interpolate(a.p, b.p, f)
+    return pose_transform_by(a.p, twist_exp(b.tw.dx * f, b.tw.dy * f, b.tw.dtheta * f))
 
 
 # ---------------------------------------------------------------------------------------
@@ -215,8 +231,13 @@ cdef class _PoseEstimator:
         if n == 0 or t > b[n - 1].t:
             b[n].t = t
             b[n].p = p
+            b[n].tw = self.odo.twist
+            b[n].joined = n > 0 and self.tail_is_odometry
             self.count += 1
+            self.tail_is_odometry = True
         else:
+            # The odometry pose lands between stored ones: neither it nor the sample after
+            # it follows its predecessor by one odometry step.
             lo, hi = 0, n            # first index with time >= t
             while lo < hi:
                 mid = (lo + hi) // 2
@@ -231,6 +252,10 @@ cdef class _PoseEstimator:
                 b[lo].t = t
                 b[lo].p = p
                 self.count += 1
+            b[lo].joined = False
+            if lo + 1 < self.count:
+                b[lo + 1].joined = False
+            self.tail_is_odometry = lo + 1 == self.count
         self.estimate = p if self.nrec == 0 else compensate(self.rec + self.nrec - 1, p)
         return 0
 
@@ -262,7 +287,7 @@ cdef class _PoseEstimator:
         if b[lo].t == t:
             out[0] = b[lo].p
         else:
-            out[0] = pose_interpolate(b[lo].p, b[hi].p, (t - b[lo].t) / (b[hi].t - b[lo].t))
+            out[0] = interpolate_samples(b + lo, b + hi, (t - b[lo].t) / (b[hi].t - b[lo].t))
         return True
 
     cdef Py_ssize_t _floor_record(self, double t) noexcept:
@@ -310,12 +335,16 @@ cdef class _PoseEstimator:
         """Set how much vision is trusted: standard deviations of the measured x (m),
         y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
         values trust vision less."""
+        self._check()
+        self._set_vision_std_devs(visionMeasurementStdDevs)
+
+    cdef int _set_vision_std_devs(self, object values) except -1:
         cdef double vd[3]
         cdef Py_ssize_t i
-        self._check()
-        read_std_devs(visionMeasurementStdDevs, "visionMeasurementStdDevs", vd)
+        read_std_devs(values, "visionMeasurementStdDevs", vd)
         for i in range(3):
             self.k[i] = gain(self.q[i], vd[i] * vd[i])
+        return 0
 
     def addVisionMeasurement(self, Pose2d visionRobotPose not None, double timestamp,
                              visionMeasurementStdDevs=None):
@@ -333,7 +362,7 @@ cdef class _PoseEstimator:
         self._check()
         finite_time(timestamp, "timestamp")
         if visionMeasurementStdDevs is not None:
-            self.setVisionMeasurementStdDevs(visionMeasurementStdDevs)
+            self._set_vision_std_devs(visionMeasurementStdDevs)
         if self.count == 0:
             return
         b = self.buf + self.start
@@ -370,6 +399,7 @@ cdef class _PoseEstimator:
         r.t = timestamp
         r.vision = pose_transform_by(vision_sample, scaled)
         r.odometry = odometry_sample
+        set_shift(r)
         self.nrec = lo + 1
         self.estimate = compensate(r, self.odo.pose)
 
@@ -411,6 +441,7 @@ cdef class _PoseEstimator:
         else:
             latest.vision.r = r
             latest.odometry.r = r
+        set_shift(&latest)
         self.rec[0] = latest
         self.nrec = 1
         self.estimate = compensate(self.rec, self.odo.pose)

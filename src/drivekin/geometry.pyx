@@ -12,7 +12,7 @@ import numpy as np
 
 from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t
 from drivekin._kernels cimport (
-    pose, pose_interpolate, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
+    feet_to_meters, pose, pose_interpolate, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
     rot_neg, rot_plus, rot_rad, rot_radians, rot_times, rot_xy, transform_inverse,
     transform_log, twist_exp, vec, vec_eq, vec_rotate,
 )
@@ -51,13 +51,6 @@ cdef vec2_t vector2(object a) except *:
     if a.shape != (2,):
         raise ValueError(f"Translation2d(vector) needs shape (2,), got {a.shape}")
     return vec(a[0], a[1])
-
-
-# robotpy-wpimath's fromFeet factories convert through the C++ units library, which
-# multiplies by the numerator of 1 ft = 381/1250 m and then divides by the denominator;
-# the same two roundings give the same bits.
-cdef inline double feet_to_meters(double feet) noexcept nogil:
-    return feet * 381.0 / 1250.0
 
 
 cdef rot2_t feet_angle(object angle, str where) except *:

@@ -35,6 +35,10 @@ class ChassisVelocities:
     """
 
     def __init__(self, vx: float = 0.0, vy: float = 0.0, omega: float = 0.0) -> None: ...
+    @staticmethod
+    def fromFeet(vx: float = 0.0, vy: float = 0.0, omega: float = 0.0) -> ChassisVelocities:
+        """Return the velocity ``vx`` forward and ``vy`` left given in ft/s, ``omega`` in
+        rad/s, in m/s (the same bits as robotpy-wpimath's ``ChassisSpeeds.fromFeet``)."""
     @property
     def vx(self) -> float:
         """Forward velocity, m/s."""

@@ -21,7 +21,7 @@ import numpy as np
 
 from drivekin._types cimport desat_t, rot2_t, vec2_t, vec3_t
 from drivekin._kernels cimport (
-    chassis_discretize, clamp01, desaturate_factors, forward_solve, jmax, max_abs, rot_eq,
+    chassis_discretize, clamp01, desaturate_factors, feet_to_meters, forward_solve, jmax, max_abs, rot_eq,
     rot_interp, rot_minus, rot_neg, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
     vec, vec_eq, vec_rotate,
 )
@@ -185,6 +185,12 @@ cdef class ChassisVelocities(_ChassisVector):
 
     cdef _ChassisVector _new(self, double x, double y, double z):
         return new_chassis_velocities(x, y, z)
+
+    @staticmethod
+    def fromFeet(double vx=0.0, double vy=0.0, double omega=0.0):
+        """Return the velocity ``vx`` forward and ``vy`` left given in ft/s, ``omega`` in
+        rad/s, in m/s (the same bits as robotpy-wpimath's ``ChassisSpeeds.fromFeet``)."""
+        return new_chassis_velocities(feet_to_meters(vx), feet_to_meters(vy), omega)
 
     @property
     def vx(self):

@@ -34,6 +34,12 @@ class MecanumDriveWheelVelocities:
         rearLeft: float = 0.0,
         rearRight: float = 0.0,
     ) -> None: ...
+    @staticmethod
+    def fromFeet(
+        frontLeft: float, frontRight: float, rearLeft: float, rearRight: float
+    ) -> MecanumDriveWheelVelocities:
+        """Return the wheel velocities given in ft/s, in m/s (the same bits as
+        robotpy-wpimath's ``MecanumDriveWheelSpeeds.fromFeet``)."""
     @property
     def frontLeft(self) -> float:
         """Front-left wheel value (m/s, m or m/s² depending on the class)."""

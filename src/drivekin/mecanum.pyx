@@ -11,7 +11,7 @@ import numpy as np
 
 from drivekin._types cimport vec2_t
 from drivekin._wheels cimport _WheelValues, install_bare_new
-from drivekin._kernels cimport clamp01, mat_vec, vec, vec_eq, wheels_desaturate
+from drivekin._kernels cimport clamp01, feet_to_meters, mat_vec, vec, vec_eq, wheels_desaturate
 from drivekin.geometry cimport Translation2d, new_twist
 from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
 from drivekin._errors import type_name
@@ -86,6 +86,17 @@ cdef class MecanumDriveWheelVelocities(_Wheel4):
 
     cdef _WheelValues _new(self):
         return blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
+
+    @staticmethod
+    def fromFeet(double frontLeft, double frontRight, double rearLeft, double rearRight):
+        """Return the wheel velocities given in ft/s, in m/s (the same bits as
+        robotpy-wpimath's ``MecanumDriveWheelSpeeds.fromFeet``)."""
+        cdef _WheelValues out = blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
+        out.w[0] = feet_to_meters(frontLeft)
+        out.w[1] = feet_to_meters(frontRight)
+        out.w[2] = feet_to_meters(rearLeft)
+        out.w[3] = feet_to_meters(rearRight)
+        return out
 
     @cython.always_allow_keywords(False)   # METH_O: the 1-argument fast call (~3 ns)
     def desaturate(self, double attainableMaxSpeed):

@@ -11,10 +11,11 @@ cimport cython
 from libc.math cimport isfinite
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 
-from drivekin._types cimport pose2_t
+from drivekin._types cimport pose2_t, rot2_t
 from drivekin._wheels cimport _WheelValues
-from drivekin._kernels cimport (deadwheel_solve, forward_solve, gyro_change, mat_vec,
-                                odometry_step, pose, pose_transform_by, rot_xy, twist_exp, vec)
+from drivekin._kernels cimport (deadwheel_solve, forward_solve, mat_vec, odometry_move,
+                                odometry_move_cs, odometry_step, pose, rot_minus,
+                                rot_radians, rot_xy, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.kinematics cimport SwerveDriveKinematics, SwerveModulePosition
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
@@ -121,19 +122,23 @@ cdef class SwerveDriveOdometry(_Odometry):
 
     cdef int _step(self, Rotation2d gyroAngle, object modulePositions) except -1:
         cdef SwerveDriveKinematics k = self.kin
-        cdef Py_ssize_t i
-        cdef double d
-        cdef double r[3]
         if not self.ready:
             uninitialised(self)
         k._read(modulePositions, SwerveModulePosition, "modulePositions")
-        for i in range(k.n):
-            d = k.s0[i]
-            k.s0[i] = d - self.prev[i]
-            self.prev[i] = d
-        forward_solve(3, k.n, k.f1, k.s0, k.s1, k.s2, r)
-        odometry_step(&self.pose, &self.prev_gyro, r[0], r[1], gyroAngle.r)
+        self._advance(k.s0, k.s1, k.s2, gyroAngle.r)
         return 0
+
+    cdef void _advance(self, double* dist, const double* c, const double* s,
+                       rot2_t gyro) noexcept nogil:
+        cdef Py_ssize_t i
+        cdef double d
+        cdef double r[3]
+        for i in range(self.kin.n):
+            d = dist[i]
+            dist[i] = d - self.prev[i]
+            self.prev[i] = d
+        forward_solve(3, self.kin.n, self.kin.f1, dist, c, s, r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro)
 
 
 cdef class MecanumDriveOdometry(_Odometry):
@@ -169,18 +174,21 @@ cdef class MecanumDriveOdometry(_Odometry):
         return new_pose(self.pose)
 
     cdef int _step(self, Rotation2d gyroAngle, MecanumDriveWheelPositions wheelPositions) except -1:
+        if not self.ready:
+            uninitialised(self)
+        self._advance((<_WheelValues>wheelPositions).w, gyroAngle.r)
+        return 0
+
+    cdef void _advance(self, const double* w, rot2_t gyro) noexcept nogil:
         cdef double d[4]
         cdef double r[3]
         cdef Py_ssize_t i
-        cdef _WheelValues w = wheelPositions
-        if not self.ready:
-            uninitialised(self)
         for i in range(4):
-            d[i] = w.w[i] - self.prev[i]
-        self.prev = w.w
+            d[i] = w[i] - self.prev[i]
+        for i in range(4):
+            self.prev[i] = w[i]
         mat_vec(3, 4, self.kin.f, d, r)
-        odometry_step(&self.pose, &self.prev_gyro, r[0], r[1], gyroAngle.r)
-        return 0
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro)
 
 
 cdef class DifferentialDriveOdometry(_Odometry):
@@ -219,11 +227,15 @@ cdef class DifferentialDriveOdometry(_Odometry):
                    double rightDistance) except -1:
         if not self.ready:
             uninitialised(self)
+        self._advance(leftDistance, rightDistance, gyroAngle.r)
+        return 0
+
+    cdef void _advance(self, double leftDistance, double rightDistance,
+                       rot2_t gyro) noexcept nogil:
         cdef double dl = leftDistance - self.prev_l, dr = rightDistance - self.prev_r
         self.prev_l = leftDistance
         self.prev_r = rightDistance
-        odometry_step(&self.pose, &self.prev_gyro, (dl + dr) / 2.0, 0.0, gyroAngle.r)
-        return 0
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, (dl + dr) / 2.0, 0.0, gyro)
 
 
 cdef class TwoDeadWheelOdometry(_Odometry):
@@ -271,14 +283,18 @@ cdef class TwoDeadWheelOdometry(_Odometry):
     cdef int _step(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle) except -1:
         if not self.ready:
             uninitialised(self)
-        cdef double dtheta = gyro_change(gyroAngle.r, self.prev_gyro)
+        self._advance(xWheelPos, yWheelPos, gyroAngle.r)
+        return 0
+
+    cdef void _advance(self, double xWheelPos, double yWheelPos, rot2_t gyro) noexcept nogil:
+        cdef rot2_t turn = rot_minus(gyro, self.prev_gyro)
+        cdef double dtheta = rot_radians(turn)
         cdef double dx = xWheelPos - self.prev_x + dtheta * self.x_wheel_y
         cdef double dy = yWheelPos - self.prev_y - dtheta * self.y_wheel_x
         self.prev_x = xWheelPos
         self.prev_y = yWheelPos
-        self.prev_gyro = gyroAngle.r
-        self.pose = pose_transform_by(self.pose, twist_exp(dx, dy, dtheta))
-        return 0
+        self.prev_gyro = gyro
+        odometry_move_cs(&self.pose, &self.twist, dx, dy, dtheta, turn.c, turn.s)
 
     def toChassisVelocities(self, double vx, double vy, double omega):
         """Return the robot velocity from the forward wheel's and left wheel's surface
@@ -366,20 +382,30 @@ cdef class DeadWheelOdometry(_Odometry):
 
     cdef int _step(self, object wheelPositions, object gyroAngle) except -1:
         cdef DeadWheelKinematics k = self.kin
-        cdef Py_ssize_t i
-        cdef double d, w = 0.0
-        cdef double r[3]
         if not self.ready:
             uninitialised(self)
         self._gyro_arg(gyroAngle, "update")
         k._read(wheelPositions, k.s, "wheelPositions")
-        for i in range(k.n):
-            d = k.s[i]
-            k.s[i] = d - self.prev[i]
+        self._advance(k.s, (<Rotation2d>gyroAngle).r if self.gyro else self.prev_gyro)
+        return 0
+
+    cdef void _advance(self, double* dist, rot2_t gyro) noexcept nogil:
+        # Without a gyro, ``gyro`` is ignored.
+        cdef Py_ssize_t i
+        cdef double d
+        cdef double r[3]
+        cdef rot2_t turn
+        for i in range(self.kin.n):
+            d = dist[i]
+            dist[i] = d - self.prev[i]
             self.prev[i] = d
         if self.gyro:
-            w = gyro_change((<Rotation2d>gyroAngle).r, self.prev_gyro)
-            self.prev_gyro = (<Rotation2d>gyroAngle).r
-        deadwheel_solve(k.n, k.p3, k.p2, k.g, k.s, self.gyro, w, r)
-        self.pose = pose_transform_by(self.pose, twist_exp(r[0], r[1], r[2]))
-        return 0
+            turn = rot_minus(gyro, self.prev_gyro)
+            self.prev_gyro = gyro
+            deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, True,
+                            rot_radians(turn), r)
+            odometry_move_cs(&self.pose, &self.twist, r[0], r[1], r[2], turn.c, turn.s)
+        else:
+            deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, False,
+                            0.0, r)
+            odometry_move(&self.pose, &self.twist, r[0], r[1], r[2])

@@ -26,7 +26,7 @@ import registry as reg
 from registry import (Arr, Bytes, Const, Floats, Int, Num, Obj, Out, OutArr, OutBytes,
                       OutRawArr, OutSeq, Prop, RawArr, Seq, Type)
 from support import (CLEAN, BadNumber, Boom, Fail, armed_gc, bound, describe, expect_clean,
-                     finite, label, member_specs, outcome, receiver, short, snap)
+                     finite, is_module, label, member_specs, outcome, receiver, short, snap)
 
 try:
     import wpimath.geometry
@@ -501,7 +501,7 @@ def group_gc():
                             cases[f"{base} arg{pos} finalizer-{mode} fuse={fuse}"] = \
                                 functools.partial(check_gc_mutation, cls, name, sig, pos,
                                                   mode, fuse)
-            if cls is not None and name != "__init__":
+            if not is_module(cls) and name != "__init__":
                 for fuse in (1, 2, 4):
                     cases[f"{base} finalizer-reenters fuse={fuse}"] = _gc_reentry(
                         cls, name, sig, fuse)
@@ -566,7 +566,7 @@ def group_reentry():
     for cls, name, spec in member_specs():
         if isinstance(spec, (Prop, Const)) or name in reg.OPERATORS or name == "__init__":
             continue
-        if cls is None or cls in reg.NAMESPACES:
+        if is_module(cls) or cls in reg.NAMESPACES:
             continue
         for si, sig in enumerate(spec):
             base = label(cls, name, si if len(spec) > 1 else None)

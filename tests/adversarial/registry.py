@@ -19,6 +19,8 @@ import threading
 import numpy as np
 
 import drivekin
+import drivekin.batch as batch
+import drivekin.protobuf as protobuf
 import drivekin.wpistruct as wpistruct
 from drivekin import (
     ChassisAccelerations as CA,
@@ -522,7 +524,7 @@ API = {
         "dx": Prop(NUM), "dy": Prop(NUM), "dtheta": Prop(NUM), "exp": S(),
         "fromFeet": [S(), S(NUM, NUM, NUM)],
     },
-    CV: {**_chassis(CV, ("vx", "vy", "omega")),
+    CV: {**_chassis(CV, ("vx", "vy", "omega")), "fromFeet": [S(), S(NUM, NUM, NUM)],
          "toTwist2d": S(NUM), "discretize": S(NUM), "discretizeInto": S(NUM, Out(CV))},
     CA: _chassis(CA, ("ax", "ay", "alpha")),
     SMV: {**_module(SMV, "velocity"),
@@ -530,11 +532,12 @@ API = {
           "cosineScale": S(Obj(R)), "cosineScaleInPlace": S(Obj(R))},
     SMP: {**_module(SMP, "distance"), "copy": S()},
     SMA: _module(SMA, "acceleration"),
-    MWV: _wheels(MWV, ("frontLeft", "frontRight", "rearLeft", "rearRight"), desat=True),
+    MWV: {**_wheels(MWV, ("frontLeft", "frontRight", "rearLeft", "rearRight"), desat=True),
+          "fromFeet": S(NUM, NUM, NUM, NUM)},
     MWP: _wheels(MWP, ("frontLeft", "frontRight", "rearLeft", "rearRight"), copy=True,
                  eq=True),
     MWA: _wheels(MWA, ("frontLeft", "frontRight", "rearLeft", "rearRight")),
-    DWV: _wheels(DWV, ("left", "right"), desat=True),
+    DWV: {**_wheels(DWV, ("left", "right"), desat=True), "fromFeet": S(NUM, NUM)},
     DWP: _wheels(DWP, ("left", "right"), copy=True, eq=True),
     DWA: _wheels(DWA, ("left", "right")),
     SwerveDriveKinematics: {
@@ -816,6 +819,48 @@ WPISTRUCT = {  # function name -> Sig (receiver-less)
     "unpackArray": S(Type(Pose2d), Bytes(lambda: _pose_bytes() * 2)),
 }
 WPISTRUCT_NONCALLABLE = {"STRUCT_TYPES", "StructValue", "MAX_SWERVE_MODULES"}
+
+
+# ---- protobuf ---------------------------------------------------------------------
+
+def _pose_message():
+    return protobuf.pack(VALID[Pose2d]())
+
+
+PROTOBUF = {  # function name -> Sig (receiver-less)
+    "getTypeName": S(Type(Pose2d)), "getTypeString": S(Type(Pose2d)),
+    "getMessageClass": S(Type(Pose2d)),
+    "forEachDescriptor": S(Type(Pose2d), Callback()),
+    "pack": S(StructObj(Pose2d)),
+    "unpack": [S(Type(Pose2d), Bytes(_pose_message)),
+               S(Type(Pose2d), Bytes(lambda: bytearray(_pose_message())))],
+}
+PROTOBUF_NONCALLABLE = {"PROTOBUF_TYPES", "ProtobufValue", "PACKAGE", "GEOMETRY2D_FILE",
+                        "KINEMATICS_FILE", "SCHEMA_TYPE"}
+
+_CHASSIS_STACK = Arr((6, 3), rows_free=True)
+BATCH = {  # drivekin.batch: stacks of 6 samples
+    "toSwerveModuleVelocities": S(Obj(SwerveDriveKinematics), _CHASSIS_STACK),
+    "toWheelVelocities": [S(Obj(MecanumDriveKinematics), _CHASSIS_STACK),
+                          S(Obj(DifferentialDriveKinematics), _CHASSIS_STACK)],
+    "toChassisVelocities": [S(Obj(SwerveDriveKinematics), Arr((6, N, 2), rows_free=True)),
+                            S(Obj(MecanumDriveKinematics), Arr((6, 4), rows_free=True))],
+    "toSwerveModuleAccelerations": S(Obj(SwerveDriveKinematics), _CHASSIS_STACK, NUM),
+    "toWheelAccelerations": [S(Obj(MecanumDriveKinematics), _CHASSIS_STACK),
+                             S(Obj(SwerveDriveKinematics), _CHASSIS_STACK)],
+    "toChassisAccelerations": [S(Obj(SwerveDriveKinematics), Arr((6, N, 2), rows_free=True)),
+                               S(Obj(DifferentialDriveKinematics), Arr((6, 2), rows_free=True))],
+    "desaturateWheelVelocities": [S(Arr((6, N, 2), rows_free=True), NUM),
+                                  S(Arr((6, N, 2)), Arr((6, 3)), NUM, NUM, NUM)],
+    "desaturate": S(Arr((6, 4), rows_free=True), NUM),
+    "discretize": S(_CHASSIS_STACK, NUM),
+    "toRobotRelative": S(_CHASSIS_STACK, NUM), "toFieldRelative": S(_CHASSIS_STACK, NUM),
+    "exp": S(_CHASSIS_STACK), "log": S(_CHASSIS_STACK),
+    "replay": S(Obj(DifferentialDriveOdometry), Arr((6,)), Arr((6, 2))),
+}
+
+# Module-level functions (the receiver-less members): module -> its registry.
+MODULE_FUNCTIONS = {wpistruct: WPISTRUCT, protobuf: PROTOBUF, batch: BATCH}
 
 
 def members(cls):

@@ -3,12 +3,12 @@ snapshot objects (to prove a failed call changed nothing), and the hostile helpe
 from __future__ import annotations
 
 import gc
+import types
 import math
 
 import numpy as np
 
 import drivekin
-import drivekin.wpistruct as wpistruct
 import registry as reg
 from registry import ODOMETRY, Const, Prop
 
@@ -59,16 +59,21 @@ def short(x, n=160):
 
 # ---- calling -----------------------------------------------------------------------
 
+def is_module(cls):
+    """``cls`` stands for a module's functions (wpistruct, protobuf), not a class."""
+    return isinstance(cls, types.ModuleType)
+
+
 def receiver(cls):
-    """A fresh receiver for a member of ``cls`` (None for wpistruct functions)."""
-    return None if cls is None else reg.VALID[cls]()
+    """A fresh receiver for a member of ``cls`` (None for module-level functions)."""
+    return None if is_module(cls) else reg.VALID[cls]()
 
 
 def bound(cls, recv, name):
     """The callable for ``name``; for __init__ of an init-once class, the constructor
     (re-init is a lifecycle case), else the method (mutables: a re-init)."""
-    if cls is None:
-        return getattr(wpistruct, name)
+    if is_module(cls):
+        return getattr(cls, name)
     if name in reg.OPERATORS:
         op = reg.OPERATORS[name]
         return lambda *a: op(recv, *a)
@@ -230,17 +235,19 @@ def math_ok(x):
 
 
 def member_specs(classes=None):
-    """(cls, name, spec) for every registered member; cls None = wpistruct."""
+    """(cls, name, spec) for every registered member; for the module-level functions
+    (reg.MODULE_FUNCTIONS) cls is the module."""
     for cls in classes or reg.public_classes():
         for name, spec in reg.members(cls):
             yield cls, name, spec
     if classes is None:
-        for name, sig in reg.WPISTRUCT.items():
-            yield None, name, sig if isinstance(sig, list) else [sig]
+        for module, functions in reg.MODULE_FUNCTIONS.items():
+            for name, sig in functions.items():
+                yield module, name, sig if isinstance(sig, list) else [sig]
 
 
 def label(cls, name, si=None):
-    base = f"{'wpistruct' if cls is None else cls.__name__}.{name}"
+    base = f"{cls.__name__.rpartition('.')[2]}.{name}"
     return base if si is None else f"{base}#{si}"
 
 

@@ -4,6 +4,8 @@ construction (see registry.py for how to add one)."""
 from __future__ import annotations
 
 import drivekin
+import drivekin.batch as batch
+import drivekin.protobuf as protobuf
 import drivekin.wpistruct as wpistruct
 import pytest
 
@@ -31,6 +33,15 @@ def test_every_public_member_is_registered(cls):
 def test_every_wpistruct_function_is_registered():
     public = set(wpistruct.__all__) - reg.WPISTRUCT_NONCALLABLE
     assert public == set(reg.WPISTRUCT), sorted(public ^ set(reg.WPISTRUCT))
+
+
+def test_every_batch_function_is_registered():
+    assert set(batch.__all__) == set(reg.BATCH), sorted(set(batch.__all__) ^ set(reg.BATCH))
+
+
+def test_every_protobuf_function_is_registered():
+    public = set(protobuf.__all__) - reg.PROTOBUF_NONCALLABLE
+    assert public == set(reg.PROTOBUF), sorted(public ^ set(reg.PROTOBUF))
 
 
 def test_registry_has_no_unknown_classes():

@@ -1,0 +1,192 @@
+"""Whole recordings at once: numpy stacks through the same kernels as the per-call API.
+
+Shapes follow one convention ("single or stacked", as in scipy.spatial.transform): an
+argument that is one value per call in the per-call API is either that value's array
+(shape ``S``) or a stack of N of them (shape ``(N,) + S``), and results have the matching
+form. The value arrays are
+
+===========================  ==========  =============================================
+value                        shape S     columns
+===========================  ==========  =============================================
+chassis vector / pose        (3,)        ``[vx m/s, vy m/s, omega rad/s]``,
+                                         ``[x m, y m, θ rad]``, ``[dx m, dy m, dθ rad]``
+swerve modules (M modules)   (M, 2)      ``[velocity m/s or distance m, angle rad]``
+wheels (mecanum, diff, dead) (W,)        one value per wheel, the per-call order
+angle / time step            ()          rad / s (a float, or an (N,) stack)
+===========================  ==========  =============================================
+
+Every array must be a float64, native-endian, C-contiguous numpy array (the rule of the
+per-call buffers; ``np.ascontiguousarray(x, dtype=np.float64)`` makes one). ``out=``, when
+given, must have exactly the result's shape, be writeable and not overlap an input; it
+is filled and returned. Angles in results are ``Rotation2d.getRadians()`` values, wrapped to
+(−π, π].
+
+Results are bit-identical to the per-call methods called in a loop, including their
+state: swerve inverse kinematics reads and leaves the heading memory as N calls would,
+and :func:`replay` leaves the odometry at the last sample. The loops run without the GIL;
+do not use the same kinematics or odometry object from another thread meanwhile (memory
+stays safe, but the interleaving is unspecified).
+"""
+import numpy as np
+import numpy.typing as npt
+
+from drivekin.deadwheel import DeadWheelKinematics
+from drivekin.differential import DifferentialDriveKinematics
+from drivekin.geometry import Translation2d
+from drivekin.kinematics import SwerveDriveKinematics
+from drivekin.mecanum import MecanumDriveKinematics
+from drivekin.odometry import (
+    DeadWheelOdometry,
+    DifferentialDriveOdometry,
+    MecanumDriveOdometry,
+    SwerveDriveOdometry,
+    TwoDeadWheelOdometry,
+)
+
+_Array = npt.NDArray[np.float64]
+
+__all__ = ["desaturate", "desaturateWheelVelocities", "discretize", "exp", "log", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
+
+
+def toSwerveModuleVelocities(
+    kinematics: SwerveDriveKinematics,
+    chassisVelocities: _Array,
+    centerOfRotation: Translation2d | None = None,
+    out: _Array | None = None,
+) -> _Array:
+    """Module velocities ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]`` for chassis velocities
+    ``(3,)`` / ``(N, 3)`` (robot-relative), about ``centerOfRotation`` (a Translation2d,
+    m; default the robot centre). The heading memory is used and left as N
+    :meth:`SwerveDriveKinematics.toSwerveModuleVelocities` calls would leave it."""
+
+def toSwerveModuleAccelerations(
+    kinematics: SwerveDriveKinematics,
+    chassisAccelerations: _Array,
+    angularVelocity: _Array | float = 0.0,
+    centerOfRotation: Translation2d | None = None,
+    out: _Array | None = None,
+) -> _Array:
+    """Module accelerations ``(M, 2)`` / ``(N, M, 2)`` ``[m/s², rad]`` for chassis
+    accelerations ``(3,)`` / ``(N, 3)`` ``[ax, ay, alpha]`` while turning at
+    ``angularVelocity`` (rad/s; a float or ``(N,)``), as
+    :meth:`SwerveDriveKinematics.toSwerveModuleAccelerations`."""
+
+def toWheelVelocities(
+    kinematics: SwerveDriveKinematics | MecanumDriveKinematics | DifferentialDriveKinematics | DeadWheelKinematics,
+    chassisVelocities: _Array,
+    centerOfRotation: Translation2d | None = None,
+    out: _Array | None = None,
+) -> _Array:
+    """Wheel velocities for chassis velocities ``(3,)`` / ``(N, 3)``: mecanum ``(4,)`` /
+    ``(N, 4)`` (about ``centerOfRotation``), differential ``(N, 2)`` ``[left, right]``,
+    dead-wheel ``(N, W)`` (surface velocities), all m/s; a SwerveDriveKinematics gives
+    :func:`toSwerveModuleVelocities`."""
+
+def toWheelAccelerations(
+    kinematics: SwerveDriveKinematics | MecanumDriveKinematics | DifferentialDriveKinematics | DeadWheelKinematics,
+    chassisAccelerations: _Array,
+    centerOfRotation: Translation2d | None = None,
+    out: _Array | None = None,
+) -> _Array:
+    """Wheel accelerations (m/s²) for chassis accelerations ``(3,)`` / ``(N, 3)``, shaped
+    as :func:`toWheelVelocities`; a SwerveDriveKinematics gives
+    :func:`toSwerveModuleAccelerations` with zero angular velocity."""
+
+def toChassisVelocities(
+    kinematics: SwerveDriveKinematics | MecanumDriveKinematics | DifferentialDriveKinematics | DeadWheelKinematics,
+    wheelVelocities: _Array,
+    gyroRates: _Array | float | None = None,
+    out: _Array | None = None,
+) -> _Array:
+    """Chassis velocities ``(3,)`` / ``(N, 3)`` ``[vx, vy, omega]`` from swerve module
+    velocities ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]``, or wheel velocities ``(W,)`` /
+    ``(N, W)`` of a mecanum, differential or dead-wheel drive. ``gyroRates`` (rad/s, a
+    float or ``(N,)``) is the dead-wheel form's optional gyro."""
+
+def toChassisAccelerations(
+    kinematics: SwerveDriveKinematics | MecanumDriveKinematics | DifferentialDriveKinematics | DeadWheelKinematics,
+    wheelAccelerations: _Array,
+    angularAccelerations: _Array | float | None = None,
+    out: _Array | None = None,
+) -> _Array:
+    """Chassis accelerations ``(3,)`` / ``(N, 3)`` ``[ax, ay, alpha]`` from swerve module
+    accelerations ``(M, 2)`` / ``(N, M, 2)`` ``[m/s², rad]`` or wheel accelerations;
+    ``angularAccelerations`` (rad/s², a float or ``(N,)``) fixes alpha for dead wheels."""
+
+def desaturateWheelVelocities(
+    moduleVelocities: _Array,
+    attainableMaxSpeed: _Array | float,
+    attainableMaxModuleSpeed: float | None = None,
+    attainableMaxTranslationalSpeed: float | None = None,
+    attainableMaxRotationalVelocity: float | None = None,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`SwerveDriveKinematics.desaturateWheelVelocities` for module velocities
+    ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]``, each sample scaled on its own. Either one
+    limit ``attainableMaxSpeed`` (m/s), or the desired chassis velocities (``(3,)`` /
+    ``(N, 3)``) in its place followed by the three limits (m/s, m/s, rad/s). Angles pass
+    through unchanged (as in the per-call (M, 2) array form); ``out=moduleVelocities``
+    desaturates in place."""
+
+def desaturate(
+    wheelVelocities: _Array,
+    attainableMaxSpeed: float,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`MecanumDriveWheelVelocities.desaturate` (W = 4) and the differential one
+    (W = 2) for wheel velocities ``(W,)`` / ``(N, W)`` (m/s), each sample scaled on its own;
+    ``out=wheelVelocities`` desaturates in place."""
+
+def discretize(
+    chassisVelocities: _Array,
+    dt: _Array | float,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`ChassisVelocities.discretize` for ``(3,)`` / ``(N, 3)`` velocities; ``dt`` (s)
+    is a float or an ``(N,)`` stack."""
+
+def toRobotRelative(
+    chassisVectors: _Array,
+    robotAngles: _Array | float,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`ChassisVelocities.toRobotRelative` (and the ChassisAccelerations one) for
+    ``(3,)`` / ``(N, 3)`` field-relative vectors and robot headings ``robotAngles`` (rad;
+    a float or ``(N,)``)."""
+
+def toFieldRelative(
+    chassisVectors: _Array,
+    robotAngles: _Array | float,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`ChassisVelocities.toFieldRelative` for ``(3,)`` / ``(N, 3)`` robot-relative
+    vectors and robot headings ``robotAngles`` (rad; a float or ``(N,)``)."""
+
+def exp(
+    twists: _Array,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`Twist2d.exp` for ``(3,)`` / ``(N, 3)`` twists ``[dx m, dy m, dθ rad]``: the
+    transforms ``[x m, y m, θ rad]``."""
+
+def log(
+    transforms: _Array,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`Transform2d.log` for ``(3,)`` / ``(N, 3)`` transforms ``[x m, y m, θ rad]``:
+    the twists ``[dx m, dy m, dθ rad]``."""
+
+def replay(
+    odometry: SwerveDriveOdometry | MecanumDriveOdometry | DifferentialDriveOdometry | TwoDeadWheelOdometry | DeadWheelOdometry,
+    gyroAngles: _Array | None,
+    positions: _Array,
+    out: _Array | None = None,
+) -> _Array:
+    """Run ``odometry.update`` for N samples; return the poses ``(N, 3)`` ``[x m, y m,
+    θ rad]`` after each, leaving the odometry at the last one.
+
+    ``gyroAngles`` is ``(N,)`` (rad; None for a DeadWheelOdometry built without a gyro);
+    ``positions`` is what ``update`` reads, stacked: SwerveDriveOdometry ``(N, M, 2)``
+    ``[distance m, angle rad]``; MecanumDriveOdometry ``(N, 4)``; DifferentialDriveOdometry
+    ``(N, 2)`` ``[left, right]``; TwoDeadWheelOdometry ``(N, 2)`` ``[xWheelPos,
+    yWheelPos]``; DeadWheelOdometry ``(N, W)`` (m throughout)."""

@@ -1,0 +1,721 @@
+"""Whole recordings at once: numpy stacks through the same kernels as the per-call API.
+
+Shapes follow one convention ("single or stacked", as in scipy.spatial.transform): an
+argument that is one value per call in the per-call API is either that value's array
+(shape ``S``) or a stack of N of them (shape ``(N,) + S``), and results have the matching
+form. The value arrays are
+
+===========================  ==========  =============================================
+value                        shape S     columns
+===========================  ==========  =============================================
+chassis vector / pose        (3,)        ``[vx m/s, vy m/s, omega rad/s]``,
+                                         ``[x m, y m, θ rad]``, ``[dx m, dy m, dθ rad]``
+swerve modules (M modules)   (M, 2)      ``[velocity m/s or distance m, angle rad]``
+wheels (mecanum, diff, dead) (W,)        one value per wheel, the per-call order
+angle / time step            ()          rad / s (a float, or an (N,) stack)
+===========================  ==========  =============================================
+
+Every array must be a float64, native-endian, C-contiguous numpy array (the rule of the
+per-call buffers; ``np.ascontiguousarray(x, dtype=np.float64)`` makes one). ``out=``, when
+given, must have exactly the result's shape, be writeable and not overlap an input; it
+is filled and returned. Angles in results are ``Rotation2d.getRadians()`` values, wrapped to
+(−π, π].
+
+Results are bit-identical to the per-call methods called in a loop, including their
+state: swerve inverse kinematics reads and leaves the heading memory as N calls would,
+and :func:`replay` leaves the odometry at the last sample. The loops run without the GIL;
+do not use the same kinematics or odometry object from another thread meanwhile (memory
+stays safe, but the interleaving is unspecified).
+"""
+from cpython.mem cimport PyMem_Free, PyMem_Malloc
+from libc.math cimport atan2, cos, sin
+from libc.string cimport memset
+cimport numpy as cnp
+
+import numpy as np
+
+from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
+from drivekin._kernels cimport (chassis_discretize, deadwheel_reading, deadwheel_solve,
+                                desaturate_factors, forward_solve, mat_vec, max_abs, pose,
+                                rot_neg, rot_rad, swerve_ik, swerve_ik_accel, transform_log,
+                                twist_exp, vec, vec_rotate, wheels_desaturate)
+from drivekin.geometry cimport Translation2d
+from drivekin.kinematics cimport SwerveDriveKinematics
+from drivekin.mecanum cimport MecanumDriveKinematics
+from drivekin.differential cimport DifferentialDriveKinematics
+from drivekin.deadwheel cimport DeadWheelKinematics
+from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
+                                MecanumDriveOdometry, SwerveDriveOdometry,
+                                TwoDeadWheelOdometry, _Odometry)
+from drivekin._errors import type_name
+
+cnp.import_array()
+
+__all__ = ["desaturate", "desaturateWheelVelocities", "discretize", "exp", "log", "replay",
+           "toChassisAccelerations", "toChassisVelocities", "toFieldRelative",
+           "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities",
+           "toWheelAccelerations", "toWheelVelocities"]
+
+
+# ---------------------------------------------------------------------------------------
+# Argument handling. Each helper returns the validated array (the caller keeps it, so its
+# data stays alive) and the data pointer; nothing is converted or copied.
+
+cdef class _Stack:
+    """One validated float64 argument: ``n`` samples of ``width`` doubles at ``data``."""
+    cdef object array
+    cdef double* data
+    cdef Py_ssize_t n, width
+    cdef bint single
+
+
+cdef str _shape_text(tuple inner):
+    return "(" + ", ".join([str(d) for d in inner]) + ("," if len(inner) == 1 else "") + ")"
+
+
+cdef _Stack _stack(object x, tuple inner, str name, bint single_ok=True):
+    """Validate ``x`` as one value of shape ``inner`` or an (N,) + inner stack."""
+    cdef _Stack s = _Stack.__new__(_Stack)
+    cdef cnp.ndarray a
+    cdef tuple shape
+    cdef Py_ssize_t d
+    if not cnp.PyArray_Check(x):
+        raise TypeError(f"{name} must be a float64 numpy array, got {type_name(x)}")
+    a = <cnp.ndarray>x
+    if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
+        raise TypeError(f"{name} must have dtype float64 (native byte order), got {a.dtype}")
+    shape = (<object>a).shape
+    if single_ok and shape == inner:
+        s.single, s.n = True, 1
+    elif len(shape) == len(inner) + 1 and shape[1:] == inner:
+        s.single, s.n = False, shape[0]
+    else:
+        want = _shape_text(("N",) + inner)
+        if single_ok:
+            want = f"{_shape_text(inner)} or {want}"
+        raise ValueError(f"{name} must have shape {want}, got {shape}")
+    if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
+        raise ValueError(f"{name} must be C-contiguous and aligned "
+                         "(np.ascontiguousarray makes a copy that is)")
+    s.width = 1
+    for d in inner:
+        s.width *= d
+    s.array = a
+    s.data = <double*>cnp.PyArray_DATA(a)
+    return s
+
+
+cdef Py_ssize_t _rows(object x, Py_ssize_t cols, str name, str shapes) except -1:
+    """The wheel or module count of a value whose count is free: the last axis (cols = 0)
+    or the one before a last axis of ``cols``."""
+    if not cnp.PyArray_Check(x):
+        raise TypeError(f"{name} must be a float64 numpy array, got {type_name(x)}")
+    cdef tuple shape = (<object>x).shape
+    cdef Py_ssize_t nd = len(shape), base = 2 if cols else 1
+    if nd != base and nd != base + 1:
+        raise ValueError(f"{name} must have shape {shapes}, got {shape}")
+    return shape[nd - 2] if cols else shape[nd - 1]
+
+
+cdef _Stack _per_sample(object x, Py_ssize_t n, bint single, str name):
+    """One number per sample: a float (the same for every sample) or, beside a stack of
+    n values, an (n,) float64 array. Always returned as n values."""
+    cdef _Stack s
+    if cnp.PyArray_Check(x):
+        s = _stack(x, (), name)
+        if s.single or single or s.n != n:
+            raise ValueError(f"{name} must be a float" + ("" if single else
+                             f" or have shape ({n},) to match the other argument") +
+                             f", got an array of shape {x.shape}")
+        return s
+    if not isinstance(x, (float, int)) or isinstance(x, bool):
+        raise TypeError(f"{name} must be a float or a float64 array, got {type_name(x)}")
+    return _stack(np.full(n, float(x)), (), name, False)
+
+
+cdef _Stack _result(object out, Py_ssize_t n, bint single, tuple inner, tuple inputs,
+                    str name):
+    """``out`` validated for the result's shape, or a new array."""
+    cdef tuple shape = inner if single else (n,) + inner
+    cdef _Stack s
+    cdef _Stack i
+    if out is None:
+        out = np.empty(shape)
+    else:
+        if not cnp.PyArray_Check(out):
+            raise TypeError(f"out must be a float64 numpy array, got {type_name(out)}")
+        if out.shape != shape:
+            raise ValueError(f"out must have shape {shape} for this {name}, got {out.shape}")
+        if not cnp.PyArray_ISWRITEABLE(<cnp.ndarray>out):
+            raise ValueError("out must be writeable")
+        for i in inputs:
+            if np.may_share_memory(out, i.array):
+                raise ValueError("out must not overlap an input array")
+    s = _stack(out, inner, "out")
+    return s
+
+
+cdef double* _scratch(Py_ssize_t count) except NULL:
+    cdef double* p = <double*>PyMem_Malloc(sizeof(double) * (count if count > 0 else 1))
+    if p == NULL:
+        raise MemoryError()
+    return p
+
+
+cdef inline void store_pose(double* o, pose2_t p) noexcept nogil:
+    o[0] = p.t.x
+    o[1] = p.t.y
+    o[2] = atan2(p.r.s, p.r.c)
+
+
+cdef int _ready(object k, tuple types, str call) except -1:
+    """Check that ``k`` is a complete object of one of ``types`` (exact types)."""
+    cdef type kind = type(k)
+    if kind is SwerveDriveKinematics and kind in types:
+        (<SwerveDriveKinematics>k)._ready()
+    elif kind is MecanumDriveKinematics and kind in types:
+        (<MecanumDriveKinematics>k)._ready()
+    elif kind is DifferentialDriveKinematics and kind in types:
+        (<DifferentialDriveKinematics>k)._ready()
+    elif kind is DeadWheelKinematics and kind in types:
+        (<DeadWheelKinematics>k)._ready()
+    elif kind in types and issubclass(kind, _Odometry):
+        if not (<_Odometry>k).ready:
+            raise RuntimeError(f"{kind.__name__}.__init__ has not completed")
+    else:
+        raise TypeError(f"{call} takes a drivekin " + ", ".join([t.__name__ for t in types]) +
+                        f" as its first argument, got {type_name(k)}")
+    return 0
+
+
+# ---------------------------------------------------------------------------------------
+# Inverse kinematics
+
+cdef vec2_t _cor(object centerOfRotation) except *:
+    if centerOfRotation is None:
+        return vec(0.0, 0.0)
+    if not isinstance(centerOfRotation, Translation2d):
+        raise TypeError("centerOfRotation must be a drivekin Translation2d, got "
+                        f"{type_name(centerOfRotation)}")
+    return (<Translation2d>centerOfRotation).v
+
+
+cdef object _swerve_inverse(SwerveDriveKinematics k, object chassis, object omega,
+                            object centerOfRotation, object out, bint accel, str name):
+    """Module velocities (accel False; heading memory) or accelerations (accel True;
+    ``omega`` the angular velocity) for a chassis stack, as ``[magnitude, rad]``."""
+    k._ready()
+    cdef _Stack v = _stack(chassis, (3,), name)
+    cdef vec2_t cor = _cor(centerOfRotation)
+    cdef _Stack w = _per_sample(omega, v.n, v.single, "angularVelocity")
+    cdef _Stack o = _result(out, v.n, v.single, (k.n, 2), (v, w), name)
+    cdef Py_ssize_t n = k.n, i, j, count = v.n
+    # Private copies of the rows and the headings: another thread's call cannot change
+    # them under the loop, and the headings are written back once at the end.
+    cdef double* buf = _scratch(7 * n)
+    cdef double* rx = buf
+    cdef double* ry = buf + n
+    cdef double* hc = buf + 2 * n
+    cdef double* hs = buf + 3 * n
+    cdef double* mag = buf + 4 * n
+    cdef double* oc = buf + 5 * n
+    cdef double* os = buf + 6 * n
+    cdef const double* x
+    cdef double* y
+    k._set_cor(cor)
+    for j in range(n):
+        rx[j] = k.rx[j]
+        ry[j] = k.ry[j]
+        hc[j] = k.hc[j]
+        hs[j] = k.hs[j]
+    with nogil:
+        for i in range(count):
+            x = v.data + 3 * i
+            y = o.data + 2 * n * i
+            if accel:
+                swerve_ik_accel(n, rx, ry, x[0], x[1], w.data[i], x[2], mag, oc, os)
+            else:
+                swerve_ik(n, rx, ry, x[0], x[1], x[2], hc, hs, mag, oc, os)
+            for j in range(n):
+                y[2 * j] = mag[j]
+                y[2 * j + 1] = atan2(os[j], oc[j])
+    if not accel:
+        for j in range(n):
+            k.hc[j] = hc[j]
+            k.hs[j] = hs[j]
+    PyMem_Free(buf)
+    return o.array
+
+
+cdef object _wheels_inverse(object kinematics, object chassis, object centerOfRotation,
+                            object out, str name):
+    """Mecanum, differential or dead-wheel readings for a chassis stack (the same map
+    serves velocities and accelerations)."""
+    cdef _Stack v = _stack(chassis, (3,), name)
+    cdef Py_ssize_t i, j, w, count = v.n
+    cdef double m[12]
+    cdef double half
+    cdef const double* x
+    cdef double* y
+    cdef double* rows
+    cdef _Stack o
+    cdef DeadWheelKinematics dk
+    if type(kinematics) is MecanumDriveKinematics:
+        (<MecanumDriveKinematics>kinematics)._set_cor(_cor(centerOfRotation))
+        o = _result(out, count, v.single, (4,), (v,), name)
+        m = (<MecanumDriveKinematics>kinematics).m
+        with nogil:
+            for i in range(count):
+                mat_vec(4, 3, m, v.data + 3 * i, o.data + 4 * i)
+        return o.array
+    if centerOfRotation is not None:
+        raise TypeError(f"{type(kinematics).__name__} has no centre of rotation argument")
+    if type(kinematics) is DifferentialDriveKinematics:
+        o = _result(out, count, v.single, (2,), (v,), name)
+        half = (<DifferentialDriveKinematics>kinematics)._trackwidth / 2.0
+        with nogil:
+            for i in range(count):
+                x = v.data + 3 * i
+                o.data[2 * i] = x[0] - half * x[2]
+                o.data[2 * i + 1] = x[0] + half * x[2]
+        return o.array
+    dk = <DeadWheelKinematics>kinematics
+    w = dk.n
+    o = _result(out, count, v.single, (w,), (v,), name)
+    rows = _scratch(3 * w)
+    for j in range(3 * w):
+        rows[j] = dk.m[j]
+    with nogil:
+        for i in range(count):
+            x = v.data + 3 * i
+            y = o.data + w * i
+            for j in range(w):
+                y[j] = deadwheel_reading(rows + 3 * j, x[0], x[1], x[2])
+    PyMem_Free(rows)
+    return o.array
+
+
+_INVERSE = (SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics,
+            DeadWheelKinematics)
+
+
+def toSwerveModuleVelocities(kinematics, chassisVelocities, centerOfRotation=None,
+                             out=None):
+    """Module velocities ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]`` for chassis velocities
+    ``(3,)`` / ``(N, 3)`` (robot-relative), about ``centerOfRotation`` (a Translation2d,
+    m; default the robot centre). The heading memory is used and left as N
+    :meth:`SwerveDriveKinematics.toSwerveModuleVelocities` calls would leave it."""
+    _ready(kinematics, (SwerveDriveKinematics,), "toSwerveModuleVelocities")
+    return _swerve_inverse(kinematics, chassisVelocities, 0.0, centerOfRotation, out, False,
+                           "chassisVelocities")
+
+
+def toSwerveModuleAccelerations(kinematics, chassisAccelerations, angularVelocity=0.0,
+                                centerOfRotation=None, out=None):
+    """Module accelerations ``(M, 2)`` / ``(N, M, 2)`` ``[m/s², rad]`` for chassis
+    accelerations ``(3,)`` / ``(N, 3)`` ``[ax, ay, alpha]`` while turning at
+    ``angularVelocity`` (rad/s; a float or ``(N,)``), as
+    :meth:`SwerveDriveKinematics.toSwerveModuleAccelerations`."""
+    _ready(kinematics, (SwerveDriveKinematics,), "toSwerveModuleAccelerations")
+    return _swerve_inverse(kinematics, chassisAccelerations, angularVelocity,
+                           centerOfRotation, out, True, "chassisAccelerations")
+
+
+def toWheelVelocities(kinematics, chassisVelocities, centerOfRotation=None, out=None):
+    """Wheel velocities for chassis velocities ``(3,)`` / ``(N, 3)``: mecanum ``(4,)`` /
+    ``(N, 4)`` (about ``centerOfRotation``), differential ``(N, 2)`` ``[left, right]``,
+    dead-wheel ``(N, W)`` (surface velocities), all m/s; a SwerveDriveKinematics gives
+    :func:`toSwerveModuleVelocities`."""
+    _ready(kinematics, _INVERSE, "toWheelVelocities")
+    if type(kinematics) is SwerveDriveKinematics:
+        return _swerve_inverse(kinematics, chassisVelocities, 0.0, centerOfRotation, out,
+                               False, "chassisVelocities")
+    return _wheels_inverse(kinematics, chassisVelocities, centerOfRotation, out,
+                           "chassisVelocities")
+
+
+def toWheelAccelerations(kinematics, chassisAccelerations, centerOfRotation=None, out=None):
+    """Wheel accelerations (m/s²) for chassis accelerations ``(3,)`` / ``(N, 3)``, shaped
+    as :func:`toWheelVelocities`; a SwerveDriveKinematics gives
+    :func:`toSwerveModuleAccelerations` with zero angular velocity."""
+    _ready(kinematics, _INVERSE, "toWheelAccelerations")
+    if type(kinematics) is SwerveDriveKinematics:
+        return _swerve_inverse(kinematics, chassisAccelerations, 0.0, centerOfRotation, out,
+                               True, "chassisAccelerations")
+    return _wheels_inverse(kinematics, chassisAccelerations, centerOfRotation, out,
+                           "chassisAccelerations")
+
+
+# ---------------------------------------------------------------------------------------
+# Forward kinematics
+
+cdef object _forward(object kinematics, object wheels, object gyro_arg, object out,
+                     bint accel, str name, str gyro_name):
+    cdef Py_ssize_t i, j, n, count
+    cdef _Stack w, o, g
+    cdef double* buf
+    cdef double* f
+    cdef double tw
+    cdef double r[4]
+    cdef const double* x
+    cdef DeadWheelKinematics dk
+    cdef SwerveDriveKinematics sk
+    cdef bint gyro = gyro_arg is not None
+    if gyro and type(kinematics) is not DeadWheelKinematics:
+        raise TypeError(f"{gyro_name} is only for DeadWheelKinematics")
+    if type(kinematics) is SwerveDriveKinematics:
+        sk = <SwerveDriveKinematics>kinematics
+        n = sk.n
+        w = _stack(wheels, (n, 2), name)
+        count = w.n
+        o = _result(out, count, w.single, (3,), (w,), name)
+        buf = _scratch(3 * n + 8 * n)
+        f = buf + 3 * n
+        for j in range(8 * n if accel else 6 * n):
+            f[j] = sk.f2[j] if accel else sk.f1[j]
+        with nogil:
+            for i in range(count):
+                x = w.data + 2 * n * i
+                for j in range(n):
+                    buf[j] = x[2 * j]
+                    buf[n + j] = cos(x[2 * j + 1])
+                    buf[2 * n + j] = sin(x[2 * j + 1])
+                if accel:
+                    # The solve's third row (the ω² estimate) is discarded.
+                    forward_solve(4, n, f, buf, buf + n, buf + 2 * n, r)
+                    o.data[3 * i] = r[0]
+                    o.data[3 * i + 1] = r[1]
+                    o.data[3 * i + 2] = r[3]
+                else:
+                    forward_solve(3, n, f, buf, buf + n, buf + 2 * n, o.data + 3 * i)
+        PyMem_Free(buf)
+        return o.array
+    if type(kinematics) is MecanumDriveKinematics:
+        w = _stack(wheels, (4,), name)
+        o = _result(out, w.n, w.single, (3,), (w,), name)
+        f = (<MecanumDriveKinematics>kinematics).f
+        count = w.n
+        with nogil:
+            for i in range(count):
+                mat_vec(3, 4, f, w.data + 4 * i, o.data + 3 * i)
+        return o.array
+    if type(kinematics) is DifferentialDriveKinematics:
+        w = _stack(wheels, (2,), name)
+        o = _result(out, w.n, w.single, (3,), (w,), name)
+        tw = (<DifferentialDriveKinematics>kinematics)._trackwidth
+        count = w.n
+        with nogil:
+            for i in range(count):
+                x = w.data + 2 * i
+                o.data[3 * i] = (x[0] + x[1]) / 2.0
+                o.data[3 * i + 1] = 0.0
+                o.data[3 * i + 2] = (x[1] - x[0]) / tw
+        return o.array
+    dk = <DeadWheelKinematics>kinematics
+    n = dk.n
+    w = _stack(wheels, (n,), name)
+    count = w.n
+    if gyro:
+        g = _per_sample(gyro_arg, count, w.single, gyro_name)
+    else:
+        if not dk.heading:
+            dk._need_heading("toChassisAccelerations" if accel else "toChassisVelocities")
+        g = _per_sample(0.0, count, w.single, gyro_name)
+    o = _result(out, count, w.single, (3,), (w, g), name)
+    buf = _scratch(6 * n + 2)
+    for j in range(3 * n):
+        buf[j] = dk.p3[j]
+    for j in range(2 * n):
+        buf[3 * n + j] = dk.p2[j]
+    buf[5 * n] = dk.g[0]
+    buf[5 * n + 1] = dk.g[1]
+    with nogil:
+        for i in range(count):
+            deadwheel_solve(n, buf, buf + 3 * n, buf + 5 * n, w.data + n * i, gyro, g.data[i],
+                            o.data + 3 * i)
+    PyMem_Free(buf)
+    return o.array
+
+
+def toChassisVelocities(kinematics, wheelVelocities, gyroRates=None, out=None):
+    """Chassis velocities ``(3,)`` / ``(N, 3)`` ``[vx, vy, omega]`` from swerve module
+    velocities ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]``, or wheel velocities ``(W,)`` /
+    ``(N, W)`` of a mecanum, differential or dead-wheel drive. ``gyroRates`` (rad/s, a
+    float or ``(N,)``) is the dead-wheel form's optional gyro."""
+    _ready(kinematics, _INVERSE, "toChassisVelocities")
+    return _forward(kinematics, wheelVelocities, gyroRates, out, False, "wheelVelocities",
+                    "gyroRates")
+
+
+def toChassisAccelerations(kinematics, wheelAccelerations, angularAccelerations=None,
+                           out=None):
+    """Chassis accelerations ``(3,)`` / ``(N, 3)`` ``[ax, ay, alpha]`` from swerve module
+    accelerations ``(M, 2)`` / ``(N, M, 2)`` ``[m/s², rad]`` or wheel accelerations;
+    ``angularAccelerations`` (rad/s², a float or ``(N,)``) fixes alpha for dead wheels."""
+    _ready(kinematics, _INVERSE, "toChassisAccelerations")
+    return _forward(kinematics, wheelAccelerations, angularAccelerations, out, True,
+                    "wheelAccelerations", "angularAccelerations")
+
+
+# ---------------------------------------------------------------------------------------
+# Desaturation
+
+def desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed,
+                              attainableMaxModuleSpeed=None,
+                              attainableMaxTranslationalSpeed=None,
+                              attainableMaxRotationalVelocity=None, out=None):
+    """:meth:`SwerveDriveKinematics.desaturateWheelVelocities` for module velocities
+    ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]``, each sample scaled on its own. Either one
+    limit ``attainableMaxSpeed`` (m/s), or the desired chassis velocities (``(3,)`` /
+    ``(N, 3)``) in its place followed by the three limits (m/s, m/s, rad/s). Angles pass
+    through unchanged (as in the per-call (M, 2) array form); ``out=moduleVelocities``
+    desaturates in place."""
+    cdef _Stack v, c, o
+    cdef desat_t p
+    cdef bint five = attainableMaxModuleSpeed is not None or \
+        attainableMaxTranslationalSpeed is not None or attainableMaxRotationalVelocity is not None
+    cdef Py_ssize_t i, j, m, count
+    cdef double div, mul
+    cdef double* y
+    cdef const double* x
+    memset(&p, 0, sizeof(p))
+    m = _rows(moduleVelocities, 2, "moduleVelocities", "(M, 2) or (N, M, 2)")
+    v = _stack(moduleVelocities, (m, 2), "moduleVelocities")
+    count = v.n
+    p.five = five
+    if five:
+        if (attainableMaxModuleSpeed is None or attainableMaxTranslationalSpeed is None
+                or attainableMaxRotationalVelocity is None):
+            raise TypeError("the five-argument form needs all three limits")
+        c = _stack(attainableMaxSpeed, (3,), "desiredChassisVelocities")
+        if c.single != v.single or c.n != count:
+            raise ValueError("desiredChassisVelocities must have one row per sample of "
+                             f"moduleVelocities ({'(3,)' if v.single else f'({count}, 3)'}), "
+                             f"got {attainableMaxSpeed.shape}")
+        p.max_module = attainableMaxModuleSpeed
+        p.max_trans = attainableMaxTranslationalSpeed
+        p.max_rot = attainableMaxRotationalVelocity
+        inputs = (v, c)
+    else:
+        c = v
+        p.max_speed = attainableMaxSpeed
+        inputs = (v,)
+    # In place is safe: each sample's speeds are all read before any is written.
+    if out is moduleVelocities:
+        o = v
+    else:
+        o = _result(out, count, v.single, (m, 2), inputs, "moduleVelocities")
+    with nogil:
+        for i in range(count):
+            x = v.data + 2 * m * i
+            y = o.data + 2 * m * i
+            if five:
+                p.desired.x = c.data[3 * i]
+                p.desired.y = c.data[3 * i + 1]
+                p.desired.z = c.data[3 * i + 2]
+            desaturate_factors(max_abs(m, x, 2), &p, &div, &mul)
+            for j in range(m):
+                y[2 * j] = x[2 * j] / div * mul
+                y[2 * j + 1] = x[2 * j + 1]
+    return o.array
+
+
+def desaturate(wheelVelocities, double attainableMaxSpeed, out=None):
+    """:meth:`MecanumDriveWheelVelocities.desaturate` (W = 4) and the differential one
+    (W = 2) for wheel velocities ``(W,)`` / ``(N, W)`` (m/s), each sample scaled on its own;
+    ``out=wheelVelocities`` desaturates in place."""
+    cdef Py_ssize_t i, w = _rows(wheelVelocities, 0, "wheelVelocities", "(W,) or (N, W)")
+    if w != 2 and w != 4:
+        raise ValueError("wheelVelocities must hold 4 (mecanum) or 2 (differential) wheels "
+                         f"per sample, got shape {wheelVelocities.shape}")
+    cdef _Stack v = _stack(wheelVelocities, (w,), "wheelVelocities")
+    cdef _Stack o = v if out is wheelVelocities else _result(out, v.n, v.single, (w,), (v,),
+                                                             "wheelVelocities")
+    cdef Py_ssize_t count = v.n
+    with nogil:
+        for i in range(count):
+            wheels_desaturate(w, v.data + w * i, attainableMaxSpeed, o.data + w * i)
+    return o.array
+
+
+# ---------------------------------------------------------------------------------------
+# Chassis vectors and geometry
+
+def discretize(chassisVelocities, dt, out=None):
+    """:meth:`ChassisVelocities.discretize` for ``(3,)`` / ``(N, 3)`` velocities; ``dt`` (s)
+    is a float or an ``(N,)`` stack."""
+    cdef _Stack v = _stack(chassisVelocities, (3,), "chassisVelocities")
+    cdef _Stack t = _per_sample(dt, v.n, v.single, "dt")
+    cdef _Stack o = _result(out, v.n, v.single, (3,), (v, t), "chassisVelocities")
+    cdef Py_ssize_t i, count = v.n
+    cdef const double* x
+    cdef vec3_t d
+    with nogil:
+        for i in range(count):
+            x = v.data + 3 * i
+            d = chassis_discretize(x[0], x[1], x[2], t.data[i])
+            o.data[3 * i] = d.x
+            o.data[3 * i + 1] = d.y
+            o.data[3 * i + 2] = d.z
+    return o.array
+
+
+cdef object _rotate(object vectors, object robotAngles, object out, bint to_robot):
+    cdef _Stack v = _stack(vectors, (3,), "chassis vectors")
+    cdef _Stack a = _per_sample(robotAngles, v.n, v.single, "robotAngles")
+    cdef _Stack o = _result(out, v.n, v.single, (3,), (v, a), "chassis vectors")
+    cdef Py_ssize_t i, count = v.n
+    cdef const double* x
+    cdef rot2_t r
+    cdef vec2_t t
+    with nogil:
+        for i in range(count):
+            x = v.data + 3 * i
+            r = rot_rad(a.data[i])
+            if to_robot:
+                r = rot_neg(r)
+            t = vec_rotate(vec(x[0], x[1]), r)
+            o.data[3 * i] = t.x
+            o.data[3 * i + 1] = t.y
+            o.data[3 * i + 2] = x[2]
+    return o.array
+
+
+def toRobotRelative(chassisVectors, robotAngles, out=None):
+    """:meth:`ChassisVelocities.toRobotRelative` (and the ChassisAccelerations one) for
+    ``(3,)`` / ``(N, 3)`` field-relative vectors and robot headings ``robotAngles`` (rad;
+    a float or ``(N,)``)."""
+    return _rotate(chassisVectors, robotAngles, out, True)
+
+
+def toFieldRelative(chassisVectors, robotAngles, out=None):
+    """:meth:`ChassisVelocities.toFieldRelative` for ``(3,)`` / ``(N, 3)`` robot-relative
+    vectors and robot headings ``robotAngles`` (rad; a float or ``(N,)``)."""
+    return _rotate(chassisVectors, robotAngles, out, False)
+
+
+def exp(twists, out=None):
+    """:meth:`Twist2d.exp` for ``(3,)`` / ``(N, 3)`` twists ``[dx m, dy m, dθ rad]``: the
+    transforms ``[x m, y m, θ rad]``."""
+    cdef _Stack v = _stack(twists, (3,), "twists")
+    cdef _Stack o = _result(out, v.n, v.single, (3,), (v,), "twists")
+    cdef Py_ssize_t i, count = v.n
+    cdef const double* x
+    with nogil:
+        for i in range(count):
+            x = v.data + 3 * i
+            store_pose(o.data + 3 * i, twist_exp(x[0], x[1], x[2]))
+    return o.array
+
+
+def log(transforms, out=None):
+    """:meth:`Transform2d.log` for ``(3,)`` / ``(N, 3)`` transforms ``[x m, y m, θ rad]``:
+    the twists ``[dx m, dy m, dθ rad]``."""
+    cdef _Stack v = _stack(transforms, (3,), "transforms")
+    cdef _Stack o = _result(out, v.n, v.single, (3,), (v,), "transforms")
+    cdef Py_ssize_t i, count = v.n
+    cdef const double* x
+    cdef twist2_t tw
+    with nogil:
+        for i in range(count):
+            x = v.data + 3 * i
+            tw = transform_log(pose(vec(x[0], x[1]), rot_rad(x[2])))
+            o.data[3 * i] = tw.dx
+            o.data[3 * i + 1] = tw.dy
+            o.data[3 * i + 2] = tw.dtheta
+    return o.array
+
+
+# ---------------------------------------------------------------------------------------
+# Odometry replay
+
+def replay(odometry, gyroAngles, positions, out=None):
+    """Run ``odometry.update`` for N samples; return the poses ``(N, 3)`` ``[x m, y m,
+    θ rad]`` after each, leaving the odometry at the last one.
+
+    ``gyroAngles`` is ``(N,)`` (rad; None for a DeadWheelOdometry built without a gyro);
+    ``positions`` is what ``update`` reads, stacked: SwerveDriveOdometry ``(N, M, 2)``
+    ``[distance m, angle rad]``; MecanumDriveOdometry ``(N, 4)``; DifferentialDriveOdometry
+    ``(N, 2)`` ``[left, right]``; TwoDeadWheelOdometry ``(N, 2)`` ``[xWheelPos,
+    yWheelPos]``; DeadWheelOdometry ``(N, W)`` (m throughout)."""
+    cdef type kind = type(odometry)
+    cdef tuple inner
+    cdef bint needs_gyro = True
+    _ready(odometry, (SwerveDriveOdometry, MecanumDriveOdometry, DifferentialDriveOdometry,
+                      TwoDeadWheelOdometry, DeadWheelOdometry), "replay")
+    if kind is SwerveDriveOdometry:
+        inner = ((<SwerveDriveOdometry>odometry).kin.n, 2)
+    elif kind is MecanumDriveOdometry:
+        inner = (4,)
+    elif kind is DeadWheelOdometry:
+        inner = ((<DeadWheelOdometry>odometry).kin.n,)
+        needs_gyro = (<DeadWheelOdometry>odometry).gyro
+    else:
+        inner = (2,)
+    cdef _Stack p = _stack(positions, inner, "positions", False)
+    cdef _Stack g
+    if needs_gyro:
+        if gyroAngles is None:
+            raise TypeError("gyroAngles must be a float64 array of shape (N,), got None")
+        g = _stack(gyroAngles, (), "gyroAngles", False)
+        if g.n != p.n:
+            raise ValueError(f"gyroAngles has {g.n} samples but positions has {p.n}")
+    elif gyroAngles is not None:
+        raise ValueError("this DeadWheelOdometry was constructed without a gyro, so "
+                         "gyroAngles must be None")
+    else:
+        g = _per_sample(0.0, p.n, False, "gyroAngles")
+    cdef _Stack o = _result(out, p.n, False, (3,), (p, g), "replay")
+    _replay(odometry, kind, p, g, o)
+    return o.array
+
+
+cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) except -1:
+    cdef Py_ssize_t i, j, count = p.n, n = p.width
+    cdef const double* x
+    cdef double* buf = _scratch(3 * n)
+    cdef SwerveDriveOdometry so
+    cdef MecanumDriveOdometry mo
+    cdef DifferentialDriveOdometry do
+    cdef TwoDeadWheelOdometry to
+    cdef DeadWheelOdometry wo
+    if kind is SwerveDriveOdometry:
+        so = odometry
+        n = so.kin.n
+        with nogil:
+            for i in range(count):
+                x = p.data + 2 * n * i
+                for j in range(n):
+                    buf[j] = x[2 * j]
+                    buf[n + j] = cos(x[2 * j + 1])
+                    buf[2 * n + j] = sin(x[2 * j + 1])
+                so._advance(buf, buf + n, buf + 2 * n, rot_rad(g.data[i]))
+                store_pose(o.data + 3 * i, so.pose)
+    elif kind is MecanumDriveOdometry:
+        mo = odometry
+        with nogil:
+            for i in range(count):
+                mo._advance(p.data + 4 * i, rot_rad(g.data[i]))
+                store_pose(o.data + 3 * i, mo.pose)
+    elif kind is DifferentialDriveOdometry:
+        do = odometry
+        with nogil:
+            for i in range(count):
+                do._advance(p.data[2 * i], p.data[2 * i + 1], rot_rad(g.data[i]))
+                store_pose(o.data + 3 * i, do.pose)
+    elif kind is TwoDeadWheelOdometry:
+        to = odometry
+        with nogil:
+            for i in range(count):
+                to._advance(p.data[2 * i], p.data[2 * i + 1], rot_rad(g.data[i]))
+                store_pose(o.data + 3 * i, to.pose)
+    else:
+        wo = odometry
+        with nogil:
+            for i in range(count):
+                for j in range(n):
+                    buf[j] = p.data[n * i + j]
+                wo._advance(buf, rot_rad(g.data[i]))
+                store_pose(o.data + 3 * i, wo.pose)
+    PyMem_Free(buf)
+    return 0
