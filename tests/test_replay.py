@@ -414,3 +414,23 @@ def test_missing_extras_are_usage_errors_before_any_work(monkeypatch, capsys, ar
     assert exc.value.code == 2
     errors = [line for line in capsys.readouterr().err.splitlines() if "error:" in line]
     assert errors == [message]
+
+
+def test_replay_poses_matches_the_batch_replay_bit_for_bit(match):
+    # replayPoses is the per-call loop the batch kernel (drivekin.batch.replay) can
+    # replace; both must give the same bits on a real log's samples.
+    batch = pytest.importorskip("drivekin.batch")
+    log = datalog.read(match[0])
+    _, gyro = log.values("/Drive/Gyro/YawPosition")
+    _, pos = log.values("/Drive/ModulePositions")
+    n = min(len(gyro), len(pos))
+    gyro, pos = np.unwrap(gyro[:n]), np.ascontiguousarray(pos[:n])
+    kin = SwerveDriveKinematics(*[Translation2d(x, y) for x, y in W.MODULES])
+
+    def fresh():
+        return SwerveDriveOdometry(kin, Rotation2d(float(gyro[0])), pos[0], Pose2d())
+
+    a, b = fresh(), fresh()
+    loop, fast = replay.replayPoses(a, gyro, pos), batch.replay(b, gyro, pos)
+    assert np.array_equal(loop, fast)
+    assert a.getPose() == b.getPose()
