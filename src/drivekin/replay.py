@@ -53,7 +53,7 @@ from typing import Any
 
 import numpy as np
 
-from drivekin import datalog
+from drivekin import batch, datalog
 from drivekin.datalog import DataLogError, LogData
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
@@ -184,42 +184,16 @@ class ReplayResult:
 # The per-sample odometry replay (the batch kernel of issue 9 §1 replaces this loop)
 
 def replayPoses(odometry: Any, gyro: np.ndarray, positions: np.ndarray) -> np.ndarray:
-    """Call ``odometry.update`` once per sample and return the (N, 3) poses
+    """Run ``odometry.update`` once per sample through :func:`drivekin.batch.replay` (the
+    same bits as a loop of ``update`` calls) and return the (N, 3) poses
     ``[x m, y m, θ rad]`` (θ wrapped), leaving ``odometry`` at the last sample.
 
-    ``gyro``: float64 (N,) gyro angles in rad. ``positions``: float64 (N, M, 2)
-    ``[distance m, angle rad]`` for SwerveDriveOdometry, (N, 4) ``[fl, fr, rl, rr]`` for
-    MecanumDriveOdometry, (N, 2) ``[left, right]`` for DifferentialDriveOdometry,
-    (N, k) wheel distances for DeadWheelOdometry (with a gyro)."""
-    n = len(gyro)
-    out = np.empty((n, 3))
-    angles = gyro.tolist()
-    rot = Rotation2d.fromRadians
-    update: Any = getattr(odometry, "update", None)
-    if isinstance(odometry, SwerveDriveOdometry):
-        rows = np.ascontiguousarray(positions, dtype=np.float64)
-        for i in range(n):
-            p = update(rot(angles[i]), rows[i])
-            out[i] = (p.x, p.y, p.getRotation().getRadians())
-    elif isinstance(odometry, MecanumDriveOdometry):
-        wheels = positions.tolist()
-        for i in range(n):
-            p = update(rot(angles[i]), MecanumDriveWheelPositions(*wheels[i]))
-            out[i] = (p.x, p.y, p.getRotation().getRadians())
-    elif isinstance(odometry, DifferentialDriveOdometry):
-        sides = positions.tolist()
-        for i in range(n):
-            p = update(rot(angles[i]), sides[i][0], sides[i][1])
-            out[i] = (p.x, p.y, p.getRotation().getRadians())
-    elif isinstance(odometry, DeadWheelOdometry):
-        rows = np.ascontiguousarray(positions, dtype=np.float64)
-        for i in range(n):
-            p = update(rows[i], rot(angles[i]))
-            out[i] = (p.x, p.y, p.getRotation().getRadians())
-    else:
-        raise TypeError(f"replayPoses() takes a drivekin odometry object, got "
-                        f"{type(odometry).__name__}")
-    return out
+    ``gyro``: (N,) gyro angles in rad. ``positions``: (N, M, 2) ``[distance m, angle rad]``
+    for SwerveDriveOdometry, (N, 4) ``[fl, fr, rl, rr]`` for MecanumDriveOdometry, (N, 2)
+    ``[left, right]`` for DifferentialDriveOdometry, (N, k) wheel distances for
+    DeadWheelOdometry (with a gyro)."""
+    return batch.replay(odometry, np.ascontiguousarray(gyro, dtype=np.float64),
+                        np.ascontiguousarray(positions, dtype=np.float64))
 
 
 # ---------------------------------------------------------------------------------------
