@@ -67,9 +67,13 @@ cdef inline rot2_t rot_unit(double x, double y) noexcept nogil:
     return rot_scaled(x, y, sqrt(x * x + y * y))
 
 cdef inline rot2_t rot_rad(double theta) noexcept nogil:
+    return rot_cs(cos(theta), sin(theta))
+
+cdef inline rot2_t rot_cs(double c, double s) noexcept nogil:
+    # A rotation from cos θ and sin θ already computed (no normalisation).
     cdef rot2_t r
-    r.c = cos(theta)
-    r.s = sin(theta)
+    r.c = c
+    r.s = s
     return r
 
 cdef inline double rot_radians(rot2_t r) noexcept nogil:
@@ -198,10 +202,16 @@ cdef inline pose2_t pose_interpolate(pose2_t a, pose2_t b, double t) noexcept no
 # ChassisVelocities
 
 cdef inline vec3_t chassis_discretize(double vx, double vy, double omega, double dt) noexcept nogil:
+    cdef double theta = omega * dt
+    return chassis_discretize_cs(vx, vy, dt, theta, cos(theta), sin(theta))
+
+cdef inline vec3_t chassis_discretize_cs(double vx, double vy, double dt, double theta,
+                                         double ct, double st) noexcept nogil:
+    # chassis_discretize with theta = omega*dt and its cos and sin already known (the batch
+    # module computes those four at a time).
     # omega*dt goes through a Rotation2d, so it is wrapped; dt = 0 divides by zero (as WPILib).
     cdef vec3_t out
-    cdef double theta = omega * dt
-    cdef pose2_t tr = pose(vec(vx * dt, vy * dt), rot_rad(theta))
+    cdef pose2_t tr = pose(vec(vx * dt, vy * dt), rot_cs(ct, st))
     # atan2(sin θ, cos θ) returns θ itself (to rounding) inside (−π, π); only outside it
     # does the wrap change anything, so the atan2 is paid only there.
     cdef twist2_t tw = transform_log_angle(

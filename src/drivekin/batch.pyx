@@ -26,19 +26,34 @@ state: swerve inverse kinematics reads and leaves the heading memory as N calls 
 and :func:`replay` leaves the odometry at the last sample. The loops run without the GIL;
 do not use the same kinematics or odometry object from another thread meanwhile (memory
 stays safe, but the interleaving is unspecified).
+
+SIMD build. Built with ``DRIVEKIN_SIMD=1`` (setup.py; x86_64 with AVX2 and glibc ≥ 2.35),
+this module takes its sines, cosines and atan2 four at a time from glibc's libmvec
+(``SIMD`` is then True) instead of libm, and results are no longer bit-identical.
+glibc documents at most 2 ulp for libmvec's AVX2 sin and cos and 3 ulp for atan2
+(libm itself: 1 ulp). The bound, which tests/test_batch_simd.py checks against the
+per-call API: each per-sample result (kinematics, discretize, the rotations, exp, log)
+is within 1e-14 · max(|x|, 1) of the per-call value x; a replay's poses are within
+1e-14 · k · max(|x|, 1) after k samples, because the heading differences compose along
+the path. Measured on 10⁶ random samples (benchmarks/simd_error.py): per-sample functions
+at most 2.7e-15 (relative to max(|x|, 1)), 3.6e-15 absolute; 10⁶-sample replays at most
+8.2e-12 relative, 1.4e-11 m absolute. NaN and infinities come out where the default build
+puts them. Everything else (argument rules, state left behind, the desaturation and
+wheel-drive functions, which call no transcendental function) is the same in both builds.
 """
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from libc.math cimport atan2, cos, sin
+from libc.math cimport atan2
 from libc.string cimport memset
 cimport numpy as cnp
 
 import numpy as np
 
 from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
-from drivekin._kernels cimport (chassis_discretize, deadwheel_reading, deadwheel_solve,
-                                desaturate_factors, forward_solve, mat_vec, max_abs, pose,
-                                rot_neg, rot_rad, swerve_ik, swerve_ik_accel, transform_log,
-                                twist_exp, vec, vec_rotate, wheels_desaturate)
+from drivekin._kernels cimport (chassis_discretize_cs, deadwheel_reading, deadwheel_solve,
+                                desaturate_factors, forward_solve, mat_vec, max_abs,
+                                odometry_move_cs, pose, rot_cs, rot_minus, rot_neg,
+                                swerve_ik, swerve_ik_accel, transform_log_angle, twist_exp_cs,
+                                vec, vec_rotate, wheels_desaturate)
 from drivekin.geometry cimport Translation2d
 from drivekin.kinematics cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics
@@ -50,6 +65,23 @@ from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
 from drivekin._errors import type_name
 
 cnp.import_array()
+
+cdef extern from "_simd.h" nogil:
+    # Array sin/cos and atan2: libm loops by default, libmvec four at a time in the
+    # DRIVEKIN_SIMD=1 build (see _simd.h). Every transcendental call of this module goes
+    # through these two, so both builds run the same code path.
+    const int DK_SIMD
+    void dk_sincos_n(Py_ssize_t n, const double* x, double* s, double* c)
+    void dk_atan2_n(Py_ssize_t n, const double* y, const double* x, double* r)
+
+SIMD = bool(DK_SIMD)
+
+# Samples per pass: the loops below first compute every sample's sines, cosines and
+# angles of a chunk (independent of each other, so four at a time in the SIMD build), then
+# run the per-sample arithmetic, and write angles out in a last pass. 256 samples of
+# scratch stay in L1.
+cdef enum:
+    CHUNK = 256
 
 __all__ = ["desaturate", "desaturateWheelVelocities", "discretize", "exp", "log", "replay",
            "toChassisAccelerations", "toChassisVelocities", "toFieldRelative",
@@ -162,10 +194,28 @@ cdef double* _scratch(Py_ssize_t count) except NULL:
     return p
 
 
-cdef inline void store_pose(double* o, pose2_t p) noexcept nogil:
-    o[0] = p.t.x
-    o[1] = p.t.y
-    o[2] = atan2(p.r.s, p.r.c)
+cdef inline Py_ssize_t chunk_len(Py_ssize_t i0, Py_ssize_t count) noexcept nogil:
+    return CHUNK if count - i0 > CHUNK else count - i0
+
+
+cdef inline void keep_pose(Py_ssize_t i, double* px, double* py, double* pc, double* ps,
+                           pose2_t p) noexcept nogil:
+    # The pose of sample i of a chunk, its heading's atan2 left for store_poses.
+    px[i] = p.t.x
+    py[i] = p.t.y
+    pc[i] = p.r.c
+    ps[i] = p.r.s
+
+
+cdef inline void store_poses(Py_ssize_t k, double* o, const double* px, const double* py,
+                             const double* pc, const double* ps, double* heading) noexcept nogil:
+    # k poses as [x, y, atan2(s, c)] rows.
+    cdef Py_ssize_t i
+    dk_atan2_n(k, ps, pc, heading)
+    for i in range(k):
+        o[3 * i] = px[i]
+        o[3 * i + 1] = py[i]
+        o[3 * i + 2] = heading[i]
 
 
 cdef int _ready(object k, tuple types, str call) except -1:
@@ -209,17 +259,18 @@ cdef object _swerve_inverse(SwerveDriveKinematics k, object chassis, object omeg
     cdef vec2_t cor = _cor(centerOfRotation)
     cdef _Stack w = _per_sample(omega, v.n, v.single, "angularVelocity")
     cdef _Stack o = _result(out, v.n, v.single, (k.n, 2), (v, w), name)
-    cdef Py_ssize_t n = k.n, i, j, count = v.n
+    cdef Py_ssize_t n = k.n, i, i0, ch, j, kk, count = v.n, m = CHUNK * n
     # Private copies of the rows and the headings: another thread's call cannot change
     # them under the loop, and the headings are written back once at the end.
-    cdef double* buf = _scratch(7 * n)
+    cdef double* buf = _scratch(4 * n + 4 * m)
     cdef double* rx = buf
     cdef double* ry = buf + n
     cdef double* hc = buf + 2 * n
     cdef double* hs = buf + 3 * n
-    cdef double* mag = buf + 4 * n
-    cdef double* oc = buf + 5 * n
-    cdef double* os = buf + 6 * n
+    cdef double* mag = buf + 4 * n          # a chunk's module magnitudes, cos, sin, angles
+    cdef double* oc = mag + m
+    cdef double* os = oc + m
+    cdef double* ang = os + m
     cdef const double* x
     cdef double* y
     k._set_cor(cor)
@@ -229,16 +280,22 @@ cdef object _swerve_inverse(SwerveDriveKinematics k, object chassis, object omeg
         hc[j] = k.hc[j]
         hs[j] = k.hs[j]
     with nogil:
-        for i in range(count):
-            x = v.data + 3 * i
-            y = o.data + 2 * n * i
-            if accel:
-                swerve_ik_accel(n, rx, ry, x[0], x[1], w.data[i], x[2], mag, oc, os)
-            else:
-                swerve_ik(n, rx, ry, x[0], x[1], x[2], hc, hs, mag, oc, os)
-            for j in range(n):
+        for ch in range((count + CHUNK - 1) // CHUNK):
+            i0 = ch * CHUNK
+            kk = chunk_len(i0, count)
+            for i in range(kk):
+                x = v.data + 3 * (i0 + i)
+                if accel:
+                    swerve_ik_accel(n, rx, ry, x[0], x[1], w.data[i0 + i], x[2], mag + n * i,
+                                    oc + n * i, os + n * i)
+                else:
+                    swerve_ik(n, rx, ry, x[0], x[1], x[2], hc, hs, mag + n * i, oc + n * i,
+                              os + n * i)
+            dk_atan2_n(kk * n, os, oc, ang)
+            y = o.data + 2 * n * i0
+            for j in range(kk * n):
                 y[2 * j] = mag[j]
-                y[2 * j + 1] = atan2(os[j], oc[j])
+                y[2 * j + 1] = ang[j]
     if not accel:
         for j in range(n):
             k.hc[j] = hc[j]
@@ -351,7 +408,7 @@ def toWheelAccelerations(kinematics, chassisAccelerations, centerOfRotation=None
 
 cdef object _forward(object kinematics, object wheels, object gyro_arg, object out,
                      bint accel, str name, str gyro_name):
-    cdef Py_ssize_t i, j, n, count
+    cdef Py_ssize_t i, i0, ch, j, kk, m, n, count
     cdef _Stack w, o, g
     cdef double* buf
     cdef double* f
@@ -369,25 +426,31 @@ cdef object _forward(object kinematics, object wheels, object gyro_arg, object o
         w = _stack(wheels, (n, 2), name)
         count = w.n
         o = _result(out, count, w.single, (3,), (w,), name)
-        buf = _scratch(3 * n + 8 * n)
-        f = buf + 3 * n
+        m = CHUNK * n
+        buf = _scratch(8 * n + 4 * m)
+        f = buf + 4 * m                     # buf: a chunk's magnitudes, angles, cos, sin
         for j in range(8 * n if accel else 6 * n):
             f[j] = sk.f2[j] if accel else sk.f1[j]
         with nogil:
-            for i in range(count):
-                x = w.data + 2 * n * i
-                for j in range(n):
+            for ch in range((count + CHUNK - 1) // CHUNK):
+                i0 = ch * CHUNK
+                kk = chunk_len(i0, count)
+                x = w.data + 2 * n * i0
+                for j in range(kk * n):
                     buf[j] = x[2 * j]
-                    buf[n + j] = cos(x[2 * j + 1])
-                    buf[2 * n + j] = sin(x[2 * j + 1])
-                if accel:
-                    # The solve's third row (the ω² estimate) is discarded.
-                    forward_solve(4, n, f, buf, buf + n, buf + 2 * n, r)
-                    o.data[3 * i] = r[0]
-                    o.data[3 * i + 1] = r[1]
-                    o.data[3 * i + 2] = r[3]
-                else:
-                    forward_solve(3, n, f, buf, buf + n, buf + 2 * n, o.data + 3 * i)
+                    buf[m + j] = x[2 * j + 1]
+                dk_sincos_n(kk * n, buf + m, buf + 3 * m, buf + 2 * m)
+                for i in range(i0, i0 + kk):
+                    j = n * (i - i0)
+                    if accel:
+                        # The solve's third row (the ω² estimate) is discarded.
+                        forward_solve(4, n, f, buf + j, buf + 2 * m + j, buf + 3 * m + j, r)
+                        o.data[3 * i] = r[0]
+                        o.data[3 * i + 1] = r[1]
+                        o.data[3 * i + 2] = r[3]
+                    else:
+                        forward_solve(3, n, f, buf + j, buf + 2 * m + j, buf + 3 * m + j,
+                                      o.data + 3 * i)
         PyMem_Free(buf)
         return o.array
     if type(kinematics) is MecanumDriveKinematics:
@@ -547,16 +610,25 @@ def discretize(chassisVelocities, dt, out=None):
     cdef _Stack v = _stack(chassisVelocities, (3,), "chassisVelocities")
     cdef _Stack t = _per_sample(dt, v.n, v.single, "dt")
     cdef _Stack o = _result(out, v.n, v.single, (3,), (v, t), "chassisVelocities")
-    cdef Py_ssize_t i, count = v.n
+    cdef Py_ssize_t i, i0, ch, kk, count = v.n
     cdef const double* x
     cdef vec3_t d
+    cdef double th[CHUNK]
+    cdef double c[CHUNK]
+    cdef double s[CHUNK]
     with nogil:
-        for i in range(count):
-            x = v.data + 3 * i
-            d = chassis_discretize(x[0], x[1], x[2], t.data[i])
-            o.data[3 * i] = d.x
-            o.data[3 * i + 1] = d.y
-            o.data[3 * i + 2] = d.z
+        for ch in range((count + CHUNK - 1) // CHUNK):
+            i0 = ch * CHUNK
+            kk = chunk_len(i0, count)
+            for i in range(kk):
+                th[i] = v.data[3 * (i0 + i) + 2] * t.data[i0 + i]
+            dk_sincos_n(kk, th, s, c)
+            for i in range(kk):
+                x = v.data + 3 * (i0 + i)
+                d = chassis_discretize_cs(x[0], x[1], t.data[i0 + i], th[i], c[i], s[i])
+                o.data[3 * (i0 + i)] = d.x
+                o.data[3 * (i0 + i) + 1] = d.y
+                o.data[3 * (i0 + i) + 2] = d.z
     return o.array
 
 
@@ -564,20 +636,26 @@ cdef object _rotate(object vectors, object robotAngles, object out, bint to_robo
     cdef _Stack v = _stack(vectors, (3,), "chassis vectors")
     cdef _Stack a = _per_sample(robotAngles, v.n, v.single, "robotAngles")
     cdef _Stack o = _result(out, v.n, v.single, (3,), (v, a), "chassis vectors")
-    cdef Py_ssize_t i, count = v.n
+    cdef Py_ssize_t i, i0, ch, kk, count = v.n
     cdef const double* x
     cdef rot2_t r
     cdef vec2_t t
+    cdef double c[CHUNK]
+    cdef double s[CHUNK]
     with nogil:
-        for i in range(count):
-            x = v.data + 3 * i
-            r = rot_rad(a.data[i])
-            if to_robot:
-                r = rot_neg(r)
-            t = vec_rotate(vec(x[0], x[1]), r)
-            o.data[3 * i] = t.x
-            o.data[3 * i + 1] = t.y
-            o.data[3 * i + 2] = x[2]
+        for ch in range((count + CHUNK - 1) // CHUNK):
+            i0 = ch * CHUNK
+            kk = chunk_len(i0, count)
+            dk_sincos_n(kk, a.data + i0, s, c)
+            for i in range(kk):
+                x = v.data + 3 * (i0 + i)
+                r = rot_cs(c[i], s[i])
+                if to_robot:
+                    r = rot_neg(r)
+                t = vec_rotate(vec(x[0], x[1]), r)
+                o.data[3 * (i0 + i)] = t.x
+                o.data[3 * (i0 + i) + 1] = t.y
+                o.data[3 * (i0 + i) + 2] = x[2]
     return o.array
 
 
@@ -599,12 +677,27 @@ def exp(twists, out=None):
     transforms ``[x m, y m, θ rad]``."""
     cdef _Stack v = _stack(twists, (3,), "twists")
     cdef _Stack o = _result(out, v.n, v.single, (3,), (v,), "twists")
-    cdef Py_ssize_t i, count = v.n
+    cdef Py_ssize_t i, i0, ch, kk, count = v.n
     cdef const double* x
+    cdef double buf[7 * CHUNK]             # dθ, sin, cos, then the poses (x, y, cos, sin)
+    cdef double* th = buf
+    cdef double* s = buf + CHUNK
+    cdef double* c = buf + 2 * CHUNK
+    cdef double* px = buf + 3 * CHUNK
+    cdef double* py = buf + 4 * CHUNK
+    cdef double* pc = buf + 5 * CHUNK
+    cdef double* ps = buf + 6 * CHUNK
     with nogil:
-        for i in range(count):
-            x = v.data + 3 * i
-            store_pose(o.data + 3 * i, twist_exp(x[0], x[1], x[2]))
+        for ch in range((count + CHUNK - 1) // CHUNK):
+            i0 = ch * CHUNK
+            kk = chunk_len(i0, count)
+            for i in range(kk):
+                th[i] = v.data[3 * (i0 + i) + 2]
+            dk_sincos_n(kk, th, s, c)
+            for i in range(kk):
+                x = v.data + 3 * (i0 + i)
+                keep_pose(i, px, py, pc, ps, twist_exp_cs(x[0], x[1], x[2], c[i], s[i]))
+            store_poses(kk, o.data + 3 * i0, px, py, pc, ps, th)
     return o.array
 
 
@@ -613,16 +706,27 @@ def log(transforms, out=None):
     the twists ``[dx m, dy m, dθ rad]``."""
     cdef _Stack v = _stack(transforms, (3,), "transforms")
     cdef _Stack o = _result(out, v.n, v.single, (3,), (v,), "transforms")
-    cdef Py_ssize_t i, count = v.n
+    cdef Py_ssize_t i, i0, ch, kk, count = v.n
     cdef const double* x
     cdef twist2_t tw
+    cdef double th[CHUNK]
+    cdef double c[CHUNK]
+    cdef double s[CHUNK]
     with nogil:
-        for i in range(count):
-            x = v.data + 3 * i
-            tw = transform_log(pose(vec(x[0], x[1]), rot_rad(x[2])))
-            o.data[3 * i] = tw.dx
-            o.data[3 * i + 1] = tw.dy
-            o.data[3 * i + 2] = tw.dtheta
+        for ch in range((count + CHUNK - 1) // CHUNK):
+            i0 = ch * CHUNK
+            kk = chunk_len(i0, count)
+            for i in range(kk):
+                th[i] = v.data[3 * (i0 + i) + 2]
+            dk_sincos_n(kk, th, s, c)
+            # The wrapped angle: Transform2d.log takes atan2 of the rotation.
+            dk_atan2_n(kk, s, c, th)
+            for i in range(kk):
+                x = v.data + 3 * (i0 + i)
+                tw = transform_log_angle(pose(vec(x[0], x[1]), rot_cs(c[i], s[i])), th[i])
+                o.data[3 * (i0 + i)] = tw.dx
+                o.data[3 * (i0 + i) + 1] = tw.dy
+                o.data[3 * (i0 + i) + 2] = tw.dtheta
     return o.array
 
 
@@ -670,10 +774,51 @@ def replay(odometry, gyroAngles, positions, out=None):
     return o.array
 
 
+cdef inline void gyro_turns(Py_ssize_t k, const double* g, rot2_t* prev,   # IN/OUT prev
+                            double* gc, double* gs,                           # scratch
+                            double* tc, double* ts, double* dth               # OUT
+                            ) noexcept nogil:
+    # The first line of the per-call odometry_step for k samples: each gyro reading's
+    # wrapped change from the one before (prev before the first; left at the last), as a
+    # rotation (tc, ts) and its angle dth. None of it depends on the poses, so it runs
+    # ahead of the sequential pose updates.
+    cdef Py_ssize_t i
+    cdef rot2_t gyro, d
+    dk_sincos_n(k, g, gs, gc)
+    for i in range(k):
+        gyro = rot_cs(gc[i], gs[i])
+        d = rot_minus(gyro, prev[0])
+        prev[0] = gyro
+        tc[i] = d.c
+        ts[i] = d.s
+    dk_atan2_n(k, ts, tc, dth)
+
+
 cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) except -1:
-    cdef Py_ssize_t i, j, count = p.n, n = p.width
+    # The odometry classes' _advance, restaged per chunk: the transcendental functions of
+    # every sample first (gyro turns; swerve module cos/sin; dead wheels without a gyro,
+    # the cos/sin of the solved dθ), then the pose updates in order, then the headings.
+    # Each sample sees exactly the operations _advance performs (tests/test_batch.py).
+    cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = p.width
     cdef const double* x
-    cdef double* buf = _scratch(3 * n)
+    cdef double d, dl, dr, dx, dy
+    cdef double r[3]
+    cdef double w4[4]
+    cdef double* buf = _scratch(10 * CHUNK + n + 3 * CHUNK * n)
+    cdef double* gc = buf
+    cdef double* gs = buf + CHUNK
+    cdef double* tc = buf + 2 * CHUNK
+    cdef double* ts = buf + 3 * CHUNK
+    cdef double* dth = buf + 4 * CHUNK
+    cdef double* px = buf + 5 * CHUNK
+    cdef double* py = buf + 6 * CHUNK
+    cdef double* pc = buf + 7 * CHUNK
+    cdef double* ps = buf + 8 * CHUNK
+    cdef double* hd = buf + 9 * CHUNK
+    cdef double* dist = buf + 10 * CHUNK
+    cdef double* ang = dist + n             # swerve: a chunk's module angles, cos, sin
+    cdef double* mc = ang + CHUNK * n
+    cdef double* ms = mc + CHUNK * n
     cdef SwerveDriveOdometry so
     cdef MecanumDriveOdometry mo
     cdef DifferentialDriveOdometry do
@@ -683,39 +828,100 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
         so = odometry
         n = so.kin.n
         with nogil:
-            for i in range(count):
-                x = p.data + 2 * n * i
-                for j in range(n):
-                    buf[j] = x[2 * j]
-                    buf[n + j] = cos(x[2 * j + 1])
-                    buf[2 * n + j] = sin(x[2 * j + 1])
-                so._advance(buf, buf + n, buf + 2 * n, rot_rad(g.data[i]))
-                store_pose(o.data + 3 * i, so.pose)
+            for ch in range((count + CHUNK - 1) // CHUNK):
+                i0 = ch * CHUNK
+                kk = chunk_len(i0, count)
+                x = p.data + 2 * n * i0
+                for j in range(kk * n):
+                    ang[j] = x[2 * j + 1]
+                dk_sincos_n(kk * n, ang, ms, mc)
+                gyro_turns(kk, g.data + i0, &so.prev_gyro, gc, gs, tc, ts, dth)
+                for i in range(kk):
+                    x = p.data + 2 * n * (i0 + i)
+                    for j in range(n):
+                        d = x[2 * j]
+                        dist[j] = d - so.prev[j]
+                        so.prev[j] = d
+                    forward_solve(3, n, so.kin.f1, dist, mc + n * i, ms + n * i, r)
+                    odometry_move_cs(&so.pose, &so.twist, r[0], r[1], dth[i], tc[i], ts[i])
+                    keep_pose(i, px, py, pc, ps, so.pose)
+                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     elif kind is MecanumDriveOdometry:
         mo = odometry
         with nogil:
-            for i in range(count):
-                mo._advance(p.data + 4 * i, rot_rad(g.data[i]))
-                store_pose(o.data + 3 * i, mo.pose)
+            for ch in range((count + CHUNK - 1) // CHUNK):
+                i0 = ch * CHUNK
+                kk = chunk_len(i0, count)
+                gyro_turns(kk, g.data + i0, &mo.prev_gyro, gc, gs, tc, ts, dth)
+                for i in range(kk):
+                    x = p.data + 4 * (i0 + i)
+                    for j in range(4):
+                        w4[j] = x[j] - mo.prev[j]
+                    for j in range(4):
+                        mo.prev[j] = x[j]
+                    mat_vec(3, 4, mo.kin.f, w4, r)
+                    odometry_move_cs(&mo.pose, &mo.twist, r[0], r[1], dth[i], tc[i], ts[i])
+                    keep_pose(i, px, py, pc, ps, mo.pose)
+                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     elif kind is DifferentialDriveOdometry:
         do = odometry
         with nogil:
-            for i in range(count):
-                do._advance(p.data[2 * i], p.data[2 * i + 1], rot_rad(g.data[i]))
-                store_pose(o.data + 3 * i, do.pose)
+            for ch in range((count + CHUNK - 1) // CHUNK):
+                i0 = ch * CHUNK
+                kk = chunk_len(i0, count)
+                gyro_turns(kk, g.data + i0, &do.prev_gyro, gc, gs, tc, ts, dth)
+                for i in range(kk):
+                    x = p.data + 2 * (i0 + i)
+                    dl = x[0] - do.prev_l
+                    dr = x[1] - do.prev_r
+                    do.prev_l = x[0]
+                    do.prev_r = x[1]
+                    odometry_move_cs(&do.pose, &do.twist, (dl + dr) / 2.0, 0.0, dth[i],
+                                     tc[i], ts[i])
+                    keep_pose(i, px, py, pc, ps, do.pose)
+                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     elif kind is TwoDeadWheelOdometry:
         to = odometry
         with nogil:
-            for i in range(count):
-                to._advance(p.data[2 * i], p.data[2 * i + 1], rot_rad(g.data[i]))
-                store_pose(o.data + 3 * i, to.pose)
+            for ch in range((count + CHUNK - 1) // CHUNK):
+                i0 = ch * CHUNK
+                kk = chunk_len(i0, count)
+                gyro_turns(kk, g.data + i0, &to.prev_gyro, gc, gs, tc, ts, dth)
+                for i in range(kk):
+                    x = p.data + 2 * (i0 + i)
+                    dx = x[0] - to.prev_x + dth[i] * to.x_wheel_y
+                    dy = x[1] - to.prev_y - dth[i] * to.y_wheel_x
+                    to.prev_x = x[0]
+                    to.prev_y = x[1]
+                    odometry_move_cs(&to.pose, &to.twist, dx, dy, dth[i], tc[i], ts[i])
+                    keep_pose(i, px, py, pc, ps, to.pose)
+                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     else:
         wo = odometry
         with nogil:
-            for i in range(count):
-                for j in range(n):
-                    buf[j] = p.data[n * i + j]
-                wo._advance(buf, rot_rad(g.data[i]))
-                store_pose(o.data + 3 * i, wo.pose)
+            for ch in range((count + CHUNK - 1) // CHUNK):
+                i0 = ch * CHUNK
+                kk = chunk_len(i0, count)
+                if wo.gyro:
+                    gyro_turns(kk, g.data + i0, &wo.prev_gyro, gc, gs, tc, ts, dth)
+                for i in range(kk):
+                    x = p.data + n * (i0 + i)
+                    for j in range(n):
+                        d = x[j]
+                        dist[j] = d - wo.prev[j]
+                        wo.prev[j] = d
+                    # Without a gyro the solve gives dθ too; its cos/sin wait for the pass
+                    # below, so (dx, dy, dθ) are kept in (gc, gs, dth).
+                    deadwheel_solve(n, wo.kin.p3, wo.kin.p2, wo.kin.g, dist, wo.gyro,
+                                    dth[i] if wo.gyro else 0.0, r)
+                    gc[i] = r[0]
+                    gs[i] = r[1]
+                    dth[i] = r[2]
+                if not wo.gyro:
+                    dk_sincos_n(kk, dth, ts, tc)
+                for i in range(kk):
+                    odometry_move_cs(&wo.pose, &wo.twist, gc[i], gs[i], dth[i], tc[i], ts[i])
+                    keep_pose(i, px, py, pc, ps, wo.pose)
+                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     PyMem_Free(buf)
     return 0
