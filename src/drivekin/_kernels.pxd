@@ -355,15 +355,21 @@ cdef inline void odometry_move(pose2_t* p,                             # IN/OUT
                                double dx, double dy, double dtheta) noexcept nogil:
     odometry_move_cs(p, tw, dx, dy, dtheta, cos(dtheta), sin(dtheta))
 
+cdef inline rot2_t gyro_turn(rot2_t gyro, rot2_t* prev_gyro) noexcept nogil:   # IN/OUT
+    # The heading change since the last reading, as a rotation (its angle is wrapped to
+    # (−π, π]: 170° -> -170° is +20°); the reading becomes the last one. The rotation gives
+    # cos dθ and sin dθ directly (within an ulp of WPILib's cos/sin of the angle), saving a
+    # sincos per step.
+    cdef rot2_t d = rot_minus(gyro, prev_gyro[0])
+    prev_gyro[0] = gyro
+    return d
+
 cdef inline void odometry_step(pose2_t* p, rot2_t* prev_gyro,          # IN/OUT
                                twist2_t* tw,                           # OUT
                                double dx, double dy, rot2_t gyro) noexcept nogil:
-    # The heading change always comes from the gyro, wrapped to (−π, π] (170° -> -170° is
-    # +20°). Its rotation gives cos dθ and sin dθ directly (within an ulp of WPILib's
-    # cos/sin of the angle), saving a sincos per step.
-    cdef rot2_t d = rot_minus(gyro, prev_gyro[0])
+    # The heading change always comes from the gyro.
+    cdef rot2_t d = gyro_turn(gyro, prev_gyro)
     odometry_move_cs(p, tw, dx, dy, rot_radians(d), d.c, d.s)
-    prev_gyro[0] = gyro
 
 cdef inline void wheels_desaturate(Py_ssize_t n, const double* w, double attainable,
                                    double* out                        # OUT (may be w)

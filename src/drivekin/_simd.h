@@ -22,6 +22,11 @@
 
 #define DK_SIMD 1
 
+/* The instructions this build uses are available on the running CPU. */
+static inline int dk_cpu_ok(void) {
+    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+}
+
 /* libmvec's x86_64 vector ABI: the 'd' ISA class (AVX2) takes and returns ymm registers,
  * which is exactly how gcc passes __m256d under -mavx2. (libmvec's sincos takes a vector of
  * output pointers and measured slower here than a sin and a cos.) */
@@ -72,6 +77,8 @@ static inline void dk_atan2_n(ptrdiff_t n, const double* y, const double* x, dou
 #else  /* scalar libm: the per-call kernels' exact operations */
 
 #define DK_SIMD 0
+
+static inline int dk_cpu_ok(void) { return 1; }
 
 static inline void dk_sincos_n(ptrdiff_t n, const double* x, double* s, double* c) {
     ptrdiff_t i;

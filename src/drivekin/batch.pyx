@@ -50,8 +50,8 @@ import numpy as np
 
 from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 from drivekin._kernels cimport (chassis_discretize_cs, deadwheel_reading, deadwheel_solve,
-                                desaturate_factors, forward_solve, mat_vec, max_abs,
-                                odometry_move_cs, pose, rot_cs, rot_minus, rot_neg,
+                                desaturate_factors, forward_solve, gyro_turn, mat_vec, max_abs,
+                                odometry_move_cs, pose, rot_cs, rot_neg,
                                 swerve_ik, swerve_ik_accel, transform_log_angle, twist_exp_cs,
                                 vec, vec_rotate, wheels_desaturate)
 from drivekin.geometry cimport Translation2d
@@ -73,8 +73,13 @@ cdef extern from "_simd.h" nogil:
     const int DK_SIMD
     void dk_sincos_n(Py_ssize_t n, const double* x, double* s, double* c)
     void dk_atan2_n(Py_ssize_t n, const double* y, const double* x, double* r)
+    bint dk_cpu_ok()
 
 SIMD = bool(DK_SIMD)
+if not dk_cpu_ok():
+    # Without this, the first vector instruction would kill the process (SIGILL).
+    raise ImportError("this drivekin.batch was built with DRIVEKIN_SIMD=1 and needs a CPU "
+                      "with AVX2 and FMA; rebuild without DRIVEKIN_SIMD")
 
 # Samples per pass: the loops below first compute every sample's sines, cosines and
 # angles of a chunk (independent of each other, so four at a time in the SIMD build), then
@@ -778,32 +783,28 @@ cdef inline void gyro_turns(Py_ssize_t k, const double* g, rot2_t* prev,   # IN/
                             double* gc, double* gs,                           # scratch
                             double* tc, double* ts, double* dth               # OUT
                             ) noexcept nogil:
-    # The first line of the per-call odometry_step for k samples: each gyro reading's
-    # wrapped change from the one before (prev before the first; left at the last), as a
-    # rotation (tc, ts) and its angle dth. None of it depends on the poses, so it runs
-    # ahead of the sequential pose updates.
+    # gyro_turn for k samples: each gyro reading's change from the one before (prev before
+    # the first; left at the last), as a rotation (tc, ts) and its angle dth. None of it
+    # depends on the poses, so it runs ahead of the sequential pose updates.
     cdef Py_ssize_t i
-    cdef rot2_t gyro, d
+    cdef rot2_t d
     dk_sincos_n(k, g, gs, gc)
     for i in range(k):
-        gyro = rot_cs(gc[i], gs[i])
-        d = rot_minus(gyro, prev[0])
-        prev[0] = gyro
+        d = gyro_turn(rot_cs(gc[i], gs[i]), prev)
         tc[i] = d.c
         ts[i] = d.s
     dk_atan2_n(k, ts, tc, dth)
 
 
 cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) except -1:
-    # The odometry classes' _advance, restaged per chunk: the transcendental functions of
-    # every sample first (gyro turns; swerve module cos/sin; dead wheels without a gyro,
-    # the cos/sin of the solved dθ), then the pose updates in order, then the headings.
-    # Each sample sees exactly the operations _advance performs (tests/test_batch.py).
+    # The odometry step (each class's _motion plus the gyro turn and the pose move, as in
+    # its update), restaged per chunk: the transcendental functions of every sample first
+    # (gyro turns; swerve module cos/sin; dead wheels without a gyro, the cos/sin of the
+    # solved dθ), then the pose updates in order, then the headings. Each sample sees
+    # exactly the operations of update (tests/test_batch.py compares the bits).
     cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = p.width
     cdef const double* x
-    cdef double d, dl, dr, dx, dy
     cdef double r[3]
-    cdef double w4[4]
     cdef double* buf = _scratch(10 * CHUNK + n + 3 * CHUNK * n)
     cdef double* gc = buf
     cdef double* gs = buf + CHUNK
@@ -839,10 +840,8 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 for i in range(kk):
                     x = p.data + 2 * n * (i0 + i)
                     for j in range(n):
-                        d = x[2 * j]
-                        dist[j] = d - so.prev[j]
-                        so.prev[j] = d
-                    forward_solve(3, n, so.kin.f1, dist, mc + n * i, ms + n * i, r)
+                        dist[j] = x[2 * j]
+                    so._motion(dist, mc + n * i, ms + n * i, r)
                     odometry_move_cs(&so.pose, &so.twist, r[0], r[1], dth[i], tc[i], ts[i])
                     keep_pose(i, px, py, pc, ps, so.pose)
                 store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
@@ -854,12 +853,7 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 kk = chunk_len(i0, count)
                 gyro_turns(kk, g.data + i0, &mo.prev_gyro, gc, gs, tc, ts, dth)
                 for i in range(kk):
-                    x = p.data + 4 * (i0 + i)
-                    for j in range(4):
-                        w4[j] = x[j] - mo.prev[j]
-                    for j in range(4):
-                        mo.prev[j] = x[j]
-                    mat_vec(3, 4, mo.kin.f, w4, r)
+                    mo._motion(p.data + 4 * (i0 + i), r)
                     odometry_move_cs(&mo.pose, &mo.twist, r[0], r[1], dth[i], tc[i], ts[i])
                     keep_pose(i, px, py, pc, ps, mo.pose)
                 store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
@@ -872,12 +866,8 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 gyro_turns(kk, g.data + i0, &do.prev_gyro, gc, gs, tc, ts, dth)
                 for i in range(kk):
                     x = p.data + 2 * (i0 + i)
-                    dl = x[0] - do.prev_l
-                    dr = x[1] - do.prev_r
-                    do.prev_l = x[0]
-                    do.prev_r = x[1]
-                    odometry_move_cs(&do.pose, &do.twist, (dl + dr) / 2.0, 0.0, dth[i],
-                                     tc[i], ts[i])
+                    do._motion(x[0], x[1], r)
+                    odometry_move_cs(&do.pose, &do.twist, r[0], r[1], dth[i], tc[i], ts[i])
                     keep_pose(i, px, py, pc, ps, do.pose)
                 store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     elif kind is TwoDeadWheelOdometry:
@@ -889,11 +879,8 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 gyro_turns(kk, g.data + i0, &to.prev_gyro, gc, gs, tc, ts, dth)
                 for i in range(kk):
                     x = p.data + 2 * (i0 + i)
-                    dx = x[0] - to.prev_x + dth[i] * to.x_wheel_y
-                    dy = x[1] - to.prev_y - dth[i] * to.y_wheel_x
-                    to.prev_x = x[0]
-                    to.prev_y = x[1]
-                    odometry_move_cs(&to.pose, &to.twist, dx, dy, dth[i], tc[i], ts[i])
+                    to._motion(x[0], x[1], dth[i], r)
+                    odometry_move_cs(&to.pose, &to.twist, r[0], r[1], dth[i], tc[i], ts[i])
                     keep_pose(i, px, py, pc, ps, to.pose)
                 store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     else:
@@ -907,13 +894,10 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 for i in range(kk):
                     x = p.data + n * (i0 + i)
                     for j in range(n):
-                        d = x[j]
-                        dist[j] = d - wo.prev[j]
-                        wo.prev[j] = d
+                        dist[j] = x[j]
                     # Without a gyro the solve gives dθ too; its cos/sin wait for the pass
                     # below, so (dx, dy, dθ) are kept in (gc, gs, dth).
-                    deadwheel_solve(n, wo.kin.p3, wo.kin.p2, wo.kin.g, dist, wo.gyro,
-                                    dth[i] if wo.gyro else 0.0, r)
+                    wo._motion(dist, dth[i] if wo.gyro else 0.0, r)
                     gc[i] = r[0]
                     gs[i] = r[1]
                     dth[i] = r[2]

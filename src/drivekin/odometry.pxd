@@ -1,8 +1,10 @@
 # Odometry for every drivetrain (WPILib 2027 semantics): the pose is integrated from
 # wheel-position changes, with the heading change taken from the gyro (or, for dead wheels
 # without one, from the wheels). ``_step`` is ``update`` without building the returned
-# Pose2d, for the pose estimators; ``_advance`` is its arithmetic on readings already in C
-# memory, shared with the batch replay (drivekin.batch).
+# Pose2d, for the pose estimators; ``_motion`` is the drivetrain's part of a step on
+# readings already in C memory (wheel or module deltas to the robot-frame motion, updating
+# the stored readings), shared with the batch replay (drivekin.batch), which handles the
+# gyro for many samples at once.
 cimport cython
 from drivekin._types cimport pose2_t, rot2_t, twist2_t
 from drivekin.geometry cimport Rotation2d
@@ -23,23 +25,23 @@ cdef class SwerveDriveOdometry(_Odometry):
     cdef SwerveDriveKinematics kin
     cdef double* prev            # module distances at the last update, m (n values)
     cdef int _step(self, Rotation2d gyroAngle, object modulePositions) except -1
-    cdef void _advance(self, double* dist, const double* c, const double* s,
-                       rot2_t gyro) noexcept nogil
+    cdef void _motion(self, double* dist, const double* c, const double* s,
+                      double* r) noexcept nogil
 
 @cython.final
 cdef class MecanumDriveOdometry(_Odometry):
     cdef MecanumDriveKinematics kin
     cdef double prev[4]          # wheel distances at the last update, m
     cdef int _step(self, Rotation2d gyroAngle, MecanumDriveWheelPositions wheelPositions) except -1
-    cdef void _advance(self, const double* w, rot2_t gyro) noexcept nogil
+    cdef void _motion(self, const double* w, double* r) noexcept nogil
 
 @cython.final
 cdef class DifferentialDriveOdometry(_Odometry):
     cdef double prev_l, prev_r   # wheel distances at the last update, m
     cdef int _step(self, Rotation2d gyroAngle, double leftDistance,
                    double rightDistance) except -1
-    cdef void _advance(self, double leftDistance, double rightDistance,
-                       rot2_t gyro) noexcept nogil
+    cdef void _motion(self, double leftDistance, double rightDistance,
+                      double* r) noexcept nogil
 
 @cython.final
 cdef class TwoDeadWheelOdometry(_Odometry):
@@ -47,7 +49,8 @@ cdef class TwoDeadWheelOdometry(_Odometry):
     cdef double y_wheel_x        # yWheelXPos: x of the left-facing wheel, m
     cdef double prev_x, prev_y   # wheel distances at the last update, m
     cdef int _step(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle) except -1
-    cdef void _advance(self, double xWheelPos, double yWheelPos, rot2_t gyro) noexcept nogil
+    cdef void _motion(self, double xWheelPos, double yWheelPos, double dtheta,
+                      double* r) noexcept nogil
 
 @cython.final
 cdef class DeadWheelOdometry(_Odometry):
@@ -56,4 +59,4 @@ cdef class DeadWheelOdometry(_Odometry):
     cdef bint gyro               # fixed at construction: heading from a gyro
     cdef int _gyro_arg(self, object gyroAngle, str call) except -1
     cdef int _step(self, object wheelPositions, object gyroAngle) except -1
-    cdef void _advance(self, double* dist, rot2_t gyro) noexcept nogil
+    cdef void _motion(self, double* dist, double dtheta, double* r) noexcept nogil

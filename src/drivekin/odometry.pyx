@@ -13,8 +13,8 @@ from cpython.mem cimport PyMem_Free, PyMem_Malloc
 
 from drivekin._types cimport pose2_t, rot2_t
 from drivekin._wheels cimport _WheelValues
-from drivekin._kernels cimport (deadwheel_solve, forward_solve, mat_vec, odometry_move,
-                                odometry_move_cs, odometry_step, pose, rot_minus,
+from drivekin._kernels cimport (deadwheel_solve, forward_solve, gyro_turn, mat_vec,
+                                odometry_move, odometry_move_cs, odometry_step, pose,
                                 rot_radians, rot_xy, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.kinematics cimport SwerveDriveKinematics, SwerveModulePosition
@@ -124,21 +124,21 @@ cdef class SwerveDriveOdometry(_Odometry):
         cdef SwerveDriveKinematics k = self.kin
         if not self.ready:
             uninitialised(self)
+        cdef double r[3]
         k._read(modulePositions, SwerveModulePosition, "modulePositions")
-        self._advance(k.s0, k.s1, k.s2, gyroAngle.r)
+        self._motion(k.s0, k.s1, k.s2, r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyroAngle.r)
         return 0
 
-    cdef void _advance(self, double* dist, const double* c, const double* s,
-                       rot2_t gyro) noexcept nogil:
+    cdef void _motion(self, double* dist, const double* c, const double* s,
+                      double* r) noexcept nogil:
         cdef Py_ssize_t i
         cdef double d
-        cdef double r[3]
         for i in range(self.kin.n):
             d = dist[i]
             dist[i] = d - self.prev[i]
             self.prev[i] = d
         forward_solve(3, self.kin.n, self.kin.f1, dist, c, s, r)
-        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro)
 
 
 cdef class MecanumDriveOdometry(_Odometry):
@@ -176,19 +176,19 @@ cdef class MecanumDriveOdometry(_Odometry):
     cdef int _step(self, Rotation2d gyroAngle, MecanumDriveWheelPositions wheelPositions) except -1:
         if not self.ready:
             uninitialised(self)
-        self._advance((<_WheelValues>wheelPositions).w, gyroAngle.r)
+        cdef double r[3]
+        self._motion((<_WheelValues>wheelPositions).w, r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyroAngle.r)
         return 0
 
-    cdef void _advance(self, const double* w, rot2_t gyro) noexcept nogil:
+    cdef void _motion(self, const double* w, double* r) noexcept nogil:
         cdef double d[4]
-        cdef double r[3]
         cdef Py_ssize_t i
         for i in range(4):
             d[i] = w[i] - self.prev[i]
         for i in range(4):
             self.prev[i] = w[i]
         mat_vec(3, 4, self.kin.f, d, r)
-        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro)
 
 
 cdef class DifferentialDriveOdometry(_Odometry):
@@ -227,15 +227,18 @@ cdef class DifferentialDriveOdometry(_Odometry):
                    double rightDistance) except -1:
         if not self.ready:
             uninitialised(self)
-        self._advance(leftDistance, rightDistance, gyroAngle.r)
+        cdef double r[3]
+        self._motion(leftDistance, rightDistance, r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyroAngle.r)
         return 0
 
-    cdef void _advance(self, double leftDistance, double rightDistance,
-                       rot2_t gyro) noexcept nogil:
+    cdef void _motion(self, double leftDistance, double rightDistance,
+                      double* r) noexcept nogil:
         cdef double dl = leftDistance - self.prev_l, dr = rightDistance - self.prev_r
         self.prev_l = leftDistance
         self.prev_r = rightDistance
-        odometry_step(&self.pose, &self.prev_gyro, &self.twist, (dl + dr) / 2.0, 0.0, gyro)
+        r[0] = (dl + dr) / 2.0
+        r[1] = 0.0
 
 
 cdef class TwoDeadWheelOdometry(_Odometry):
@@ -283,18 +286,20 @@ cdef class TwoDeadWheelOdometry(_Odometry):
     cdef int _step(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle) except -1:
         if not self.ready:
             uninitialised(self)
-        self._advance(xWheelPos, yWheelPos, gyroAngle.r)
+        cdef double r[3]
+        cdef rot2_t turn = gyro_turn(gyroAngle.r, &self.prev_gyro)
+        cdef double dtheta = rot_radians(turn)
+        self._motion(xWheelPos, yWheelPos, dtheta, r)
+        odometry_move_cs(&self.pose, &self.twist, r[0], r[1], dtheta, turn.c, turn.s)
         return 0
 
-    cdef void _advance(self, double xWheelPos, double yWheelPos, rot2_t gyro) noexcept nogil:
-        cdef rot2_t turn = rot_minus(gyro, self.prev_gyro)
-        cdef double dtheta = rot_radians(turn)
-        cdef double dx = xWheelPos - self.prev_x + dtheta * self.x_wheel_y
-        cdef double dy = yWheelPos - self.prev_y - dtheta * self.y_wheel_x
+    cdef void _motion(self, double xWheelPos, double yWheelPos, double dtheta,
+                      double* r) noexcept nogil:
+        # The wheels' readings minus the arcs the heading change dtheta swept them through.
+        r[0] = xWheelPos - self.prev_x + dtheta * self.x_wheel_y
+        r[1] = yWheelPos - self.prev_y - dtheta * self.y_wheel_x
         self.prev_x = xWheelPos
         self.prev_y = yWheelPos
-        self.prev_gyro = gyro
-        odometry_move_cs(&self.pose, &self.twist, dx, dy, dtheta, turn.c, turn.s)
 
     def toChassisVelocities(self, double vx, double vy, double omega):
         """Return the robot velocity from the forward wheel's and left wheel's surface
@@ -386,26 +391,25 @@ cdef class DeadWheelOdometry(_Odometry):
             uninitialised(self)
         self._gyro_arg(gyroAngle, "update")
         k._read(wheelPositions, k.s, "wheelPositions")
-        self._advance(k.s, (<Rotation2d>gyroAngle).r if self.gyro else self.prev_gyro)
-        return 0
-
-    cdef void _advance(self, double* dist, rot2_t gyro) noexcept nogil:
-        # Without a gyro, ``gyro`` is ignored.
-        cdef Py_ssize_t i
-        cdef double d
         cdef double r[3]
         cdef rot2_t turn
+        if self.gyro:
+            turn = gyro_turn((<Rotation2d>gyroAngle).r, &self.prev_gyro)
+            self._motion(k.s, rot_radians(turn), r)
+            odometry_move_cs(&self.pose, &self.twist, r[0], r[1], r[2], turn.c, turn.s)
+        else:
+            self._motion(k.s, 0.0, r)
+            odometry_move(&self.pose, &self.twist, r[0], r[1], r[2])
+        return 0
+
+    cdef void _motion(self, double* dist, double dtheta, double* r) noexcept nogil:
+        # r = (dx, dy, dθ); with a gyro dθ is the given dtheta, without one it is fitted
+        # from the wheels (dtheta is ignored).
+        cdef Py_ssize_t i
+        cdef double d
         for i in range(self.kin.n):
             d = dist[i]
             dist[i] = d - self.prev[i]
             self.prev[i] = d
-        if self.gyro:
-            turn = rot_minus(gyro, self.prev_gyro)
-            self.prev_gyro = gyro
-            deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, True,
-                            rot_radians(turn), r)
-            odometry_move_cs(&self.pose, &self.twist, r[0], r[1], r[2], turn.c, turn.s)
-        else:
-            deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, False,
-                            0.0, r)
-            odometry_move(&self.pose, &self.twist, r[0], r[1], r[2])
+        deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, self.gyro,
+                        dtheta, r)
