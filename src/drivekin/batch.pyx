@@ -842,7 +842,8 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                     for j in range(n):
                         dist[j] = x[2 * j]
                     so._motion(dist, mc + n * i, ms + n * i, r)
-                    odometry_move_cs(&so.pose, &so.twist, r[0], r[1], dth[i], tc[i], ts[i])
+                    odometry_move_cs(&so.pose, &so.twist, r[0], r[1], dth[i], tc[i], ts[i],
+                                     True)
                     keep_pose(i, px, py, pc, ps, so.pose)
                 store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     elif kind is MecanumDriveOdometry:
@@ -854,7 +855,8 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 gyro_turns(kk, g.data + i0, &mo.prev_gyro, gc, gs, tc, ts, dth)
                 for i in range(kk):
                     mo._motion(p.data + 4 * (i0 + i), r)
-                    odometry_move_cs(&mo.pose, &mo.twist, r[0], r[1], dth[i], tc[i], ts[i])
+                    odometry_move_cs(&mo.pose, &mo.twist, r[0], r[1], dth[i], tc[i], ts[i],
+                                     True)
                     keep_pose(i, px, py, pc, ps, mo.pose)
                 store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     elif kind is DifferentialDriveOdometry:
@@ -867,7 +869,8 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 for i in range(kk):
                     x = p.data + 2 * (i0 + i)
                     do._motion(x[0], x[1], r)
-                    odometry_move_cs(&do.pose, &do.twist, r[0], r[1], dth[i], tc[i], ts[i])
+                    odometry_move_cs(&do.pose, &do.twist, r[0], r[1], dth[i], tc[i], ts[i],
+                                     True)
                     keep_pose(i, px, py, pc, ps, do.pose)
                 store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     elif kind is TwoDeadWheelOdometry:
@@ -880,7 +883,8 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 for i in range(kk):
                     x = p.data + 2 * (i0 + i)
                     to._motion(x[0], x[1], dth[i], r)
-                    odometry_move_cs(&to.pose, &to.twist, r[0], r[1], dth[i], tc[i], ts[i])
+                    odometry_move_cs(&to.pose, &to.twist, r[0], r[1], dth[i], tc[i], ts[i],
+                                     True)
                     keep_pose(i, px, py, pc, ps, to.pose)
                 store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     else:
@@ -904,7 +908,9 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 if not wo.gyro:
                     dk_sincos_n(kk, dth, ts, tc)
                 for i in range(kk):
-                    odometry_move_cs(&wo.pose, &wo.twist, gc[i], gs[i], dth[i], tc[i], ts[i])
+                    # With a gyro (tc, ts) is the normalised turn; without, libm's cos/sin.
+                    odometry_move_cs(&wo.pose, &wo.twist, gc[i], gs[i], dth[i], tc[i], ts[i],
+                                     wo.gyro)
                     keep_pose(i, px, py, pc, ps, wo.pose)
                 store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     PyMem_Free(buf)

@@ -290,7 +290,7 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         cdef rot2_t turn = gyro_turn(gyroAngle.r, &self.prev_gyro)
         cdef double dtheta = rot_radians(turn)
         self._motion(xWheelPos, yWheelPos, dtheta, r)
-        odometry_move_cs(&self.pose, &self.twist, r[0], r[1], dtheta, turn.c, turn.s)
+        odometry_move_cs(&self.pose, &self.twist, r[0], r[1], dtheta, turn.c, turn.s, True)
         return 0
 
     cdef void _motion(self, double xWheelPos, double yWheelPos, double dtheta,
@@ -396,7 +396,8 @@ cdef class DeadWheelOdometry(_Odometry):
         if self.gyro:
             turn = gyro_turn((<Rotation2d>gyroAngle).r, &self.prev_gyro)
             self._motion(k.s, rot_radians(turn), r)
-            odometry_move_cs(&self.pose, &self.twist, r[0], r[1], r[2], turn.c, turn.s)
+            odometry_move_cs(&self.pose, &self.twist, r[0], r[1], r[2], turn.c, turn.s,
+                             True)
         else:
             self._motion(k.s, 0.0, r)
             odometry_move(&self.pose, &self.twist, r[0], r[1], r[2])
