@@ -94,7 +94,7 @@ class SwerveDrivePoseEstimator:
     def getEstimatedPosition(self) -> Pose2d:
         """Return the current pose estimate (field frame, m)."""
 
-    def sampleAt(self, timestamp: float) -> Pose2d | None:
+    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
         """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
         history) with the vision corrections known for that time, or None before the
         first update after construction or a reset."""
@@ -162,7 +162,7 @@ class MecanumDrivePoseEstimator:
     def getEstimatedPosition(self) -> Pose2d:
         """Return the current pose estimate (field frame, m)."""
 
-    def sampleAt(self, timestamp: float) -> Pose2d | None:
+    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
         """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
         history) with the vision corrections known for that time, or None before the
         first update after construction or a reset."""
@@ -254,7 +254,7 @@ class DifferentialDrivePoseEstimator:
     def getEstimatedPosition(self) -> Pose2d:
         """Return the current pose estimate (field frame, m)."""
 
-    def sampleAt(self, timestamp: float) -> Pose2d | None:
+    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
         """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
         history) with the vision corrections known for that time, or None before the
         first update after construction or a reset."""
@@ -324,7 +324,7 @@ class TwoDeadWheelPoseEstimator:
     def getEstimatedPosition(self) -> Pose2d:
         """Return the current pose estimate (field frame, m)."""
 
-    def sampleAt(self, timestamp: float) -> Pose2d | None:
+    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
         """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
         history) with the vision corrections known for that time, or None before the
         first update after construction or a reset."""
@@ -398,7 +398,7 @@ class DeadWheelPoseEstimator:
     def getEstimatedPosition(self) -> Pose2d:
         """Return the current pose estimate (field frame, m)."""
 
-    def sampleAt(self, timestamp: float) -> Pose2d | None:
+    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
         """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
         history) with the vision corrections known for that time, or None before the
         first update after construction or a reset."""

@@ -16,8 +16,9 @@ After warm-up, ``update``/``updateWithTime`` and ``addVisionMeasurement`` make n
 calls: the pose history and the vision records live in arrays that grow only when the
 history needs more room, and returned poses come from the Pose2d freelist.
 """
+cimport cython
 from cpython.mem cimport PyMem_Free, PyMem_Malloc, PyMem_Realloc
-from libc.math cimport fabs, isfinite, sqrt
+from libc.math cimport cos, fabs, isfinite, sin, sqrt
 from libc.string cimport memmove
 cimport numpy as cnp
 
@@ -26,7 +27,7 @@ import time
 from drivekin._types cimport pose2_t, rot2_t, twist2_t
 from drivekin._numbers cimport read_floats
 from drivekin._kernels cimport (pose, pose_interpolate, pose_relative_to, pose_transform_by,
-                                rot_times, transform_inverse, twist_exp, vec)
+                                rot_cs, rot_times, transform_inverse, twist_exp_cs, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.kinematics cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
@@ -133,9 +134,17 @@ cdef inline pose2_t interpolate_samples(const sample_t* a, const sample_t* b,
     # the log of b relative to a is that step's twist (to rounding), which saves an atan2
     # and two normalisations. Near ±π the log's wrapped angle may differ from the step's,
     # so there, and for any other pair, the general form runs.
+    cdef double theta = b.tw.dtheta * f, c, s
+    cdef pose2_t step
     if f <= 0.0 or f >= 1.0 or not b.joined or not fabs(b.tw.dtheta) < 3.0:
         return pose_interpolate(a.p, b.p, f)
-    return pose_transform_by(a.p, twist_exp(b.tw.dx * f, b.tw.dy * f, b.tw.dtheta * f))
+    c = cos(theta)
+    s = sin(theta)
+    step = twist_exp_cs(b.tw.dx * f, b.tw.dy * f, theta, c, s)
+    # libm's (cos, sin) is unit to an ulp and the composition below normalises its
+    # rotation product anyway: a normalisation less on the sampling path.
+    step.r = rot_cs(c, s)
+    return pose_transform_by(a.p, step)
 
 
 # ---------------------------------------------------------------------------------------
@@ -320,6 +329,7 @@ cdef class _PoseEstimator:
         self._check()
         return new_pose(self.estimate)
 
+    @cython.always_allow_keywords(False)   # METH_O: the 1-argument fast call
     def sampleAt(self, double timestamp):
         """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
         history) with the vision corrections known for that time, or None before the
