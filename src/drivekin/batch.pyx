@@ -498,9 +498,16 @@ cdef object _forward(object kinematics, object wheels, object gyro_arg, object o
     buf[5 * n] = dk.g[0]
     buf[5 * n + 1] = dk.g[1]
     with nogil:
-        for i in range(count):
-            deadwheel_solve(n, buf, buf + 3 * n, buf + 5 * n, w.data + n * i, gyro, g.data[i],
-                            o.data + 3 * i)
+        if n == 3 and not gyro:
+            # The common three-wheel layout with a literal size: the same kernel, unrolled
+            # by the compiler (same operations in the same order, so the same bits).
+            for i in range(count):
+                deadwheel_solve(3, buf, buf + 9, buf + 15, w.data + 3 * i, False, 0.0,
+                                o.data + 3 * i)
+        else:
+            for i in range(count):
+                deadwheel_solve(n, buf, buf + 3 * n, buf + 5 * n, w.data + n * i, gyro,
+                                g.data[i], o.data + 3 * i)
     PyMem_Free(buf)
     return o.array
 
