@@ -803,122 +803,91 @@ cdef inline void gyro_turns(Py_ssize_t k, const double* g, rot2_t* prev,   # IN/
     dk_atan2_n(k, ts, tc, dth)
 
 
+cdef enum:
+    SWERVE, MECANUM, DIFFERENTIAL, TWO_DEAD_WHEELS, DEAD_WHEELS
+
+
 cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) except -1:
-    # The odometry step (each class's _motion plus the gyro turn and the pose move, as in
-    # its update), restaged per chunk: the transcendental functions of every sample first
+    # The odometry step (the class's _motion, the gyro turn and the pose move, as in its
+    # update), restaged per chunk: the transcendental functions of every sample first
     # (gyro turns; swerve module cos/sin; dead wheels without a gyro, the cos/sin of the
     # solved dθ), then the pose updates in order, then the headings. Each sample sees
     # exactly the operations of update (tests/test_batch.py compares the bits).
     cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = p.width
     cdef const double* x
     cdef double r[3]
-    cdef double* buf = _scratch(10 * CHUNK + n + 3 * CHUNK * n)
-    cdef double* gc = buf
+    cdef _Odometry odo = odometry
+    cdef SwerveDriveOdometry so = odometry if kind is SwerveDriveOdometry else None
+    cdef MecanumDriveOdometry mo = odometry if kind is MecanumDriveOdometry else None
+    cdef DifferentialDriveOdometry do = odometry if kind is DifferentialDriveOdometry else None
+    cdef TwoDeadWheelOdometry to = odometry if kind is TwoDeadWheelOdometry else None
+    cdef DeadWheelOdometry wo = odometry if kind is DeadWheelOdometry else None
+    cdef int drive = (SWERVE if so is not None else MECANUM if mo is not None else
+                      DIFFERENTIAL if do is not None else TWO_DEAD_WHEELS if to is not None
+                      else DEAD_WHEELS)
+    # Without a gyro (dead wheels only) the heading change is solved with (dx, dy).
+    cdef bint gyro = wo is None or wo.gyro
+    if drive == SWERVE:
+        n = so.kin.n
+    cdef double* buf = _scratch(10 * CHUNK + 3 * n + 3 * CHUNK * n)
+    cdef double* gc = buf                   # gyro cos, sin; without a gyro the fitted dx, dy
     cdef double* gs = buf + CHUNK
-    cdef double* tc = buf + 2 * CHUNK
+    cdef double* tc = buf + 2 * CHUNK       # the heading change: cos, sin, angle
     cdef double* ts = buf + 3 * CHUNK
     cdef double* dth = buf + 4 * CHUNK
-    cdef double* px = buf + 5 * CHUNK
+    cdef double* px = buf + 5 * CHUNK       # the poses of the chunk
     cdef double* py = buf + 6 * CHUNK
     cdef double* pc = buf + 7 * CHUNK
     cdef double* ps = buf + 8 * CHUNK
     cdef double* hd = buf + 9 * CHUNK
-    cdef double* dist = buf + 10 * CHUNK
-    cdef double* ang = dist + n             # swerve: a chunk's module angles, cos, sin
+    cdef double* dist = buf + 10 * CHUNK    # one sample's wheel or module distances
+    cdef double* ang = dist + 3 * n         # swerve: a chunk's module angles, cos, sin
     cdef double* mc = ang + CHUNK * n
     cdef double* ms = mc + CHUNK * n
-    cdef SwerveDriveOdometry so
-    cdef MecanumDriveOdometry mo
-    cdef DifferentialDriveOdometry do
-    cdef TwoDeadWheelOdometry to
-    cdef DeadWheelOdometry wo
-    if kind is SwerveDriveOdometry:
-        so = odometry
-        n = so.kin.n
-        with nogil:
-            for ch in range((count + CHUNK - 1) // CHUNK):
-                i0 = ch * CHUNK
-                kk = chunk_len(i0, count)
+    with nogil:
+        for ch in range((count + CHUNK - 1) // CHUNK):
+            i0 = ch * CHUNK
+            kk = chunk_len(i0, count)
+            if gyro:
+                gyro_turns(kk, g.data + i0, &odo.prev_gyro, gc, gs, tc, ts, dth)
+            if drive == SWERVE:
                 x = p.data + 2 * n * i0
                 for j in range(kk * n):
                     ang[j] = x[2 * j + 1]
                 dk_sincos_n(kk * n, ang, ms, mc)
-                gyro_turns(kk, g.data + i0, &so.prev_gyro, gc, gs, tc, ts, dth)
-                for i in range(kk):
+            for i in range(kk):
+                x = p.data + n * (i0 + i)
+                if drive == SWERVE:
                     x = p.data + 2 * n * (i0 + i)
                     for j in range(n):
                         dist[j] = x[2 * j]
                     so._motion(dist, mc + n * i, ms + n * i, r)
-                    odometry_move_cs(&so.pose, &so.twist, r[0], r[1], dth[i], tc[i], ts[i],
-                                     True)
-                    keep_pose(i, px, py, pc, ps, so.pose)
-                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
-    elif kind is MecanumDriveOdometry:
-        mo = odometry
-        with nogil:
-            for ch in range((count + CHUNK - 1) // CHUNK):
-                i0 = ch * CHUNK
-                kk = chunk_len(i0, count)
-                gyro_turns(kk, g.data + i0, &mo.prev_gyro, gc, gs, tc, ts, dth)
-                for i in range(kk):
-                    mo._motion(p.data + 4 * (i0 + i), r)
-                    odometry_move_cs(&mo.pose, &mo.twist, r[0], r[1], dth[i], tc[i], ts[i],
-                                     True)
-                    keep_pose(i, px, py, pc, ps, mo.pose)
-                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
-    elif kind is DifferentialDriveOdometry:
-        do = odometry
-        with nogil:
-            for ch in range((count + CHUNK - 1) // CHUNK):
-                i0 = ch * CHUNK
-                kk = chunk_len(i0, count)
-                gyro_turns(kk, g.data + i0, &do.prev_gyro, gc, gs, tc, ts, dth)
-                for i in range(kk):
-                    x = p.data + 2 * (i0 + i)
+                elif drive == MECANUM:
+                    mo._motion(x, r)
+                elif drive == DIFFERENTIAL:
                     do._motion(x[0], x[1], r)
-                    odometry_move_cs(&do.pose, &do.twist, r[0], r[1], dth[i], tc[i], ts[i],
-                                     True)
-                    keep_pose(i, px, py, pc, ps, do.pose)
-                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
-    elif kind is TwoDeadWheelOdometry:
-        to = odometry
-        with nogil:
-            for ch in range((count + CHUNK - 1) // CHUNK):
-                i0 = ch * CHUNK
-                kk = chunk_len(i0, count)
-                gyro_turns(kk, g.data + i0, &to.prev_gyro, gc, gs, tc, ts, dth)
-                for i in range(kk):
-                    x = p.data + 2 * (i0 + i)
+                elif drive == TWO_DEAD_WHEELS:
                     to._motion(x[0], x[1], dth[i], r)
-                    odometry_move_cs(&to.pose, &to.twist, r[0], r[1], dth[i], tc[i], ts[i],
-                                     True)
-                    keep_pose(i, px, py, pc, ps, to.pose)
-                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
-    else:
-        wo = odometry
-        with nogil:
-            for ch in range((count + CHUNK - 1) // CHUNK):
-                i0 = ch * CHUNK
-                kk = chunk_len(i0, count)
-                if wo.gyro:
-                    gyro_turns(kk, g.data + i0, &wo.prev_gyro, gc, gs, tc, ts, dth)
-                for i in range(kk):
-                    x = p.data + n * (i0 + i)
+                else:
                     for j in range(n):
                         dist[j] = x[j]
-                    # Without a gyro the solve gives dθ too; its cos/sin wait for the pass
-                    # below, so (dx, dy, dθ) are kept in (gc, gs, dth).
-                    wo._motion(dist, dth[i] if wo.gyro else 0.0, r)
+                    wo._motion(dist, dth[i] if gyro else 0.0, r)
+                if gyro:
+                    odometry_move_cs(&odo.pose, &odo.twist, r[0], r[1], dth[i], tc[i], ts[i],
+                                     True)
+                    keep_pose(i, px, py, pc, ps, odo.pose)
+                else:
+                    # The solved dθ's cos/sin wait for the pass below.
                     gc[i] = r[0]
                     gs[i] = r[1]
                     dth[i] = r[2]
-                if not wo.gyro:
-                    dk_sincos_n(kk, dth, ts, tc)
+            if not gyro:
+                dk_sincos_n(kk, dth, ts, tc)
                 for i in range(kk):
-                    # With a gyro (tc, ts) is the normalised turn; without, libm's cos/sin.
-                    odometry_move_cs(&wo.pose, &wo.twist, gc[i], gs[i], dth[i], tc[i], ts[i],
-                                     wo.gyro)
-                    keep_pose(i, px, py, pc, ps, wo.pose)
-                store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
+                    # libm's cos/sin: normalised as update's exp does.
+                    odometry_move_cs(&odo.pose, &odo.twist, gc[i], gs[i], dth[i], tc[i], ts[i],
+                                     False)
+                    keep_pose(i, px, py, pc, ps, odo.pose)
+            store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     PyMem_Free(buf)
     return 0
