@@ -138,6 +138,34 @@ def np_swerve_fk(states, f):
     return w.reshape(n, 2 * m) @ f.T
 
 
+def np_desaturate(speeds, limit):
+    """Scale each row so its largest |speed| is at most limit (v / max * limit, WPILib's
+    order of operations); speeds (N, W) -> (N, W)."""
+    top = np.abs(speeds).max(axis=1, keepdims=True)
+    return np.where(top > limit, speeds / np.where(top > limit, top, 1.0) * limit, speeds)
+
+
+def np_swerve_desaturate(states, limit):
+    out = states.copy()
+    out[..., 0] = np_desaturate(states[..., 0], limit)
+    return out
+
+
+def np_swerve_ik_accel(a, omega):
+    """(N, 3) [ax, ay, alpha] and (N,) omega -> (N, M, 2) [m/s², rad]: a + α × r − ω² r;
+    an exactly zero chassis acceleration gives zeros, a module under 1e-6 m/s² angle 0."""
+    mods = np.array(INPUTS.modules)
+    w2 = (omega * omega)[:, None]
+    x = a[:, 0:1] - mods[:, 0] * w2 - mods[:, 1] * a[:, 2:3]
+    y = a[:, 1:2] - mods[:, 1] * w2 + mods[:, 0] * a[:, 2:3]
+    mag = np.hypot(x, y)
+    out = np.empty(x.shape + (2,))
+    out[..., 0] = mag
+    out[..., 1] = np.where(mag > 1e-6, np.arctan2(y, x), 0.0)
+    out[(a == 0.0).all(axis=1)] = 0.0
+    return out
+
+
 def np_differential_ik(v, trackwidth):
     half = trackwidth / 2.0
     return np.column_stack([v[:, 0] - half * v[:, 2], v[:, 0] + half * v[:, 2]])
@@ -385,6 +413,27 @@ def build_rows(o: Objects, d: dict, n_loop: int) -> list:
     add("dead-wheel (3) FK toChassisVelocities",
         lambda: B.toChassisVelocities(o.wkin, ww), lambda: ww @ f_dead.T,
         loop=lambda f=o.wkin.toChassisVelocities: [f(w) for w in wwd])
+
+    limit = 2.5
+    add("swerve desaturateWheelVelocities(states, max)",
+        lambda: B.desaturateWheelVelocities(modules, limit),
+        lambda: np_swerve_desaturate(modules, limit),
+        robotpy=lambda f=rk.SwerveDrive4Kinematics.desaturateWheelSpeeds: [
+            f(s, limit) for s in rstates],
+        loop=lambda f=dk.SwerveDriveKinematics.desaturateWheelVelocities: [
+            f(s, limit) for s in dstates],
+        rp_values=lambda res: np.array([[[m.speed, m.angle.radians()] for m in r]
+                                        for r in res]), angles="modules")
+    add("mecanum desaturate(max)",
+        lambda: B.desaturate(mw, limit), lambda: np_desaturate(mw, limit),
+        loop=lambda: [w.desaturate(limit) for w in mwd])
+    omega = d["angles"] * 0.3
+    cas = [dk.ChassisAccelerations(*r) for r in v[L].tolist()]
+    add("swerve IK toSwerveModuleAccelerations(a, omega)",
+        lambda: B.toSwerveModuleAccelerations(kin, v, omega),
+        lambda: np_swerve_ik_accel(v, omega),
+        loop=lambda f=kin.toSwerveModuleAccelerations: [
+            f(c, w) for c, w in zip(cas, omega[L].tolist())], angles="modules")
 
     add("discretize",
         lambda: B.discretize(v, dt), lambda: np_discretize(v, dt),
