@@ -339,30 +339,24 @@ cdef inline void mat_vec(Py_ssize_t rows, Py_ssize_t cols, const double* m, cons
             acc = acc + m[r * cols + c] * x[c]
         out[r] = acc
 
-cdef inline pose2_t odometry_step_transform(double dx, double dy, double dtheta,
-                                            double ct, double st, bint unit) noexcept nogil:
-    # The transform of one odometry step: the twist (dx, dy, dtheta) exponentiated, given
-    # cos and sin of dtheta. ``unit``: they come from a normalised rotation (the gyro turn)
-    # and become the step's rotation as they are; otherwise (libm values) they are
-    # normalised, as WPILib's exp does through the Rotation2d(x, y) constructor.
-    # Normalising a unit pair again would move only the last bit, and it sits on the
-    # update's critical path (about 12 ns here).
-    cdef pose2_t step = twist_exp_cs(dx, dy, dtheta, ct, st)
-    if unit:
-        step.r = rot_cs(ct, st)
-    return step
-
 cdef inline void odometry_move_cs(pose2_t* p,                          # IN/OUT
                                   twist2_t* tw,                        # OUT
                                   double dx, double dy, double dtheta,
                                   double ct, double st, bint unit) noexcept nogil:
-    # Move p by one odometry step (odometry_step_transform). The twist is kept: it is the
-    # log of the new pose relative to the old one, which the pose estimators'
-    # interpolation would otherwise recompute with an atan2.
+    # Move p by the twist (dx, dy, dtheta), given cos and sin of dtheta. ``unit``: they come
+    # from a normalised rotation (the gyro turn) and become the step's rotation as they
+    # are; otherwise (libm values) they are normalised, as WPILib's exp does through the
+    # Rotation2d(x, y) constructor. Normalising a unit pair again would move only the last
+    # bit, and it sits on the update's critical path (about 12 ns here).
+    # The twist is kept: it is the log of the new pose relative to the old one, which the
+    # pose estimators' interpolation would otherwise recompute with an atan2.
+    cdef pose2_t step = twist_exp_cs(dx, dy, dtheta, ct, st)
+    if unit:
+        step.r = rot_cs(ct, st)
     tw.dx = dx
     tw.dy = dy
     tw.dtheta = dtheta
-    p[0] = pose_transform_by(p[0], odometry_step_transform(dx, dy, dtheta, ct, st, unit))
+    p[0] = pose_transform_by(p[0], step)
 
 cdef inline void odometry_move(pose2_t* p,                             # IN/OUT
                                twist2_t* tw,                           # OUT

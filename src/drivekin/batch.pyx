@@ -51,9 +51,9 @@ import numpy as np
 from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 from drivekin._kernels cimport (chassis_discretize_cs, deadwheel_reading, deadwheel_solve,
                                 desaturate_factors, forward_solve, gyro_turn, mat_vec, max_abs,
-                                odometry_step_transform, pose, pose_transform_by, rot_cs,
-                                rot_neg, swerve_ik, swerve_ik_accel, transform_log_angle,
-                                twist_exp_cs, vec, vec_rotate, wheels_desaturate)
+                                odometry_move_cs, pose, rot_cs, rot_neg,
+                                swerve_ik, swerve_ik_accel, transform_log_angle, twist_exp_cs,
+                                vec, vec_rotate, wheels_desaturate)
 from drivekin.geometry cimport Translation2d
 from drivekin.kinematics cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics
@@ -816,7 +816,6 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
     cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = p.width
     cdef const double* x
     cdef double r[3]
-    cdef pose2_t step
     cdef _Odometry odo = odometry
     cdef SwerveDriveOdometry so = odometry if kind is SwerveDriveOdometry else None
     cdef MecanumDriveOdometry mo = odometry if kind is MecanumDriveOdometry else None
@@ -856,8 +855,6 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                 for j in range(kk * n):
                     ang[j] = x[2 * j + 1]
                 dk_sincos_n(kk * n, ang, ms, mc)
-            # The motion of every sample: (dx, dy) into (gc, gs); without a gyro the
-            # solved dθ too, whose cos/sin follow.
             for i in range(kk):
                 x = p.data + n * (i0 + i)
                 if drive == SWERVE:
@@ -875,25 +872,22 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
                     for j in range(n):
                         dist[j] = x[j]
                     wo._motion(dist, dth[i] if gyro else 0.0, r)
-                gc[i] = r[0]
-                gs[i] = r[1]
-                if not gyro:
+                if gyro:
+                    odometry_move_cs(&odo.pose, &odo.twist, r[0], r[1], dth[i], tc[i], ts[i],
+                                     True)
+                    keep_pose(i, px, py, pc, ps, odo.pose)
+                else:
+                    # The solved dθ's cos/sin wait for the pass below.
+                    gc[i] = r[0]
+                    gs[i] = r[1]
                     dth[i] = r[2]
             if not gyro:
                 dk_sincos_n(kk, dth, ts, tc)
-            # Every step's transform (independent of the poses; with a gyro the turn is a
-            # unit rotation, without one libm's cos/sin are normalised as update's exp
-            # does), then the poses in order, each step read before its pose is written.
-            for i in range(kk):
-                step = odometry_step_transform(gc[i], gs[i], dth[i], tc[i], ts[i], gyro)
-                keep_pose(i, px, py, pc, ps, step)
-            for i in range(kk):
-                step = pose(vec(px[i], py[i]), rot_cs(pc[i], ps[i]))
-                odo.pose = pose_transform_by(odo.pose, step)
-                keep_pose(i, px, py, pc, ps, odo.pose)
-            odo.twist.dx = gc[kk - 1]
-            odo.twist.dy = gs[kk - 1]
-            odo.twist.dtheta = dth[kk - 1]
+                for i in range(kk):
+                    # libm's cos/sin: normalised as update's exp does.
+                    odometry_move_cs(&odo.pose, &odo.twist, gc[i], gs[i], dth[i], tc[i], ts[i],
+                                     False)
+                    keep_pose(i, px, py, pc, ps, odo.pose)
             store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     PyMem_Free(buf)
     return 0
