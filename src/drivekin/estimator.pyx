@@ -24,7 +24,7 @@ cimport numpy as cnp
 
 import time
 
-from drivekin._types cimport pose2_t, rot2_t, twist2_t
+from drivekin._types cimport pose2_t, rot2_t
 from drivekin._numbers cimport read_floats
 from drivekin._kernels cimport (pose, pose_interpolate, pose_relative_to, pose_transform_by,
                                 rot_cs, rot_times, transform_inverse, twist_exp_cs, vec)
