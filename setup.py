@@ -38,9 +38,11 @@ if trace:
     directives["linetrace"] = True
     macros.append(("CYTHON_TRACE_NOGIL", "1"))
 
-# -fno-math-errno lets gcc inline sqrt; no -ffast-math, because NaN/inf must propagate
-# exactly as in WPILib.
-compile_args = ["-O3", "-fno-math-errno"] if os.name != "nt" else []
+# -fno-math-errno lets gcc inline sqrt. -fno-trapping-math lets it turn a selection after a
+# comparison (Rotation2d's "shorter than 1e-6 gives the identity") into a blend, so loops
+# over rotations vectorise; Python runs with floating-point traps off, and every value is
+# computed as before. No -ffast-math, because NaN/inf must propagate exactly as in WPILib.
+compile_args = ["-O3", "-fno-math-errno", "-fno-trapping-math"] if os.name != "nt" else []
 
 modules = ["geometry", "kinematics", "_wheels", "differential", "mecanum", "deadwheel",
            "diffswerve", "odometry", "estimator", "batch", "_alloccount"]

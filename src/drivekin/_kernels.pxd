@@ -47,14 +47,13 @@ cdef inline double feet_to_meters(double feet) noexcept nogil:
 
 cdef inline rot2_t rot_scaled(double x, double y, double m) noexcept nogil:
     # (x, y) / m with m = |(x, y)|; a vector shorter than 1e-6 (or NaN) gives the identity,
-    # as the Rotation2d(x, y) constructor does.
+    # as the Rotation2d(x, y) constructor does. The quotients are computed either way and
+    # then selected, so loops over rotations (the batch replay's gyro turns) vectorise.
     cdef rot2_t r
-    if m > 1e-6:
-        r.c = x / m
-        r.s = y / m
-    else:
-        r.c = 1.0
-        r.s = 0.0
+    cdef double c = x / m, s = y / m
+    cdef bint ok = m > 1e-6
+    r.c = c if ok else 1.0
+    r.s = s if ok else 0.0
     return r
 
 cdef inline rot2_t rot_xy(double x, double y) noexcept nogil:
@@ -296,6 +295,36 @@ cdef inline void forward_solve(Py_ssize_t rows, Py_ssize_t n, const double* f,
         for k in range(rows):
             out[k] = out[k] + f[k * 2 * n + 2 * i] * wx + f[k * 2 * n + 2 * i + 1] * wy
 
+cdef inline void forward_solve_many(Py_ssize_t rows, Py_ssize_t n, Py_ssize_t count,
+                                    const double* f, const double* mag, const double* c,
+                                    const double* s,
+                                    double* out                 # OUT, rows x count values
+                                    ) noexcept nogil:
+    # forward_solve for count samples stored module-major (module i of sample t at
+    # [i * count + t]; row k of sample t goes to out[k * count + t]), for the batch replay.
+    # Each sample gets forward_solve's operations in its order (tests/test_batch.py compares
+    # the bits), but the innermost loop runs over the independent samples, so it vectorises.
+    # forward_solve itself stays separate: with count = 1 this form recomputes the products
+    # for every row (out may alias them), about 3 % more instructions per call.
+    cdef Py_ssize_t k, i, t
+    cdef double fx, fy
+    cdef const double* mi
+    cdef const double* ci
+    cdef const double* si
+    cdef double* ok
+    for k in range(rows * count):
+        out[k] = 0.0
+    for i in range(n):
+        mi = mag + i * count
+        ci = c + i * count
+        si = s + i * count
+        for k in range(rows):
+            fx = f[k * 2 * n + 2 * i]
+            fy = f[k * 2 * n + 2 * i + 1]
+            ok = out + k * count
+            for t in range(count):
+                ok[t] = ok[t] + fx * (mi[t] * ci[t]) + fy * (mi[t] * si[t])
+
 cdef inline double max_abs(Py_ssize_t n, const double* v, Py_ssize_t stride) noexcept nogil:
     # max |v_i| from 0 with Java Math.max semantics (a NaN speed makes the result NaN).
     cdef Py_ssize_t i
@@ -339,24 +368,31 @@ cdef inline void mat_vec(Py_ssize_t rows, Py_ssize_t cols, const double* m, cons
             acc = acc + m[r * cols + c] * x[c]
         out[r] = acc
 
+cdef inline pose2_t odometry_motion(double dx, double dy, double dtheta,
+                                    double ct, double st, bint unit) noexcept nogil:
+    # The pose change of an odometry step with the twist (dx, dy, dtheta), given cos and sin
+    # of dtheta. ``unit``: they come from a normalised rotation (the gyro turn) and become
+    # the step's rotation as they are; otherwise (libm values) they are normalised, as
+    # WPILib's exp does through the Rotation2d(x, y) constructor. Normalising a unit pair
+    # again would move only the last bit, and it sits on the update's critical path (about
+    # 12 ns here). It does not depend on the pose, so the batch replay computes it for a
+    # whole chunk ahead of the sequential compositions.
+    cdef pose2_t step = twist_exp_cs(dx, dy, dtheta, ct, st)
+    if unit:
+        step.r = rot_cs(ct, st)
+    return step
+
 cdef inline void odometry_move_cs(pose2_t* p,                          # IN/OUT
                                   twist2_t* tw,                        # OUT
                                   double dx, double dy, double dtheta,
                                   double ct, double st, bint unit) noexcept nogil:
-    # Move p by the twist (dx, dy, dtheta), given cos and sin of dtheta. ``unit``: they come
-    # from a normalised rotation (the gyro turn) and become the step's rotation as they
-    # are; otherwise (libm values) they are normalised, as WPILib's exp does through the
-    # Rotation2d(x, y) constructor. Normalising a unit pair again would move only the last
-    # bit, and it sits on the update's critical path (about 12 ns here).
+    # Move p by the twist (dx, dy, dtheta) (see odometry_motion).
     # The twist is kept: it is the log of the new pose relative to the old one, which the
     # pose estimators' interpolation would otherwise recompute with an atan2.
-    cdef pose2_t step = twist_exp_cs(dx, dy, dtheta, ct, st)
-    if unit:
-        step.r = rot_cs(ct, st)
     tw.dx = dx
     tw.dy = dy
     tw.dtheta = dtheta
-    p[0] = pose_transform_by(p[0], step)
+    p[0] = pose_transform_by(p[0], odometry_motion(dx, dy, dtheta, ct, st, unit))
 
 cdef inline void odometry_move(pose2_t* p,                             # IN/OUT
                                twist2_t* tw,                           # OUT

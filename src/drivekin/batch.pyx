@@ -50,9 +50,9 @@ import numpy as np
 
 from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 from drivekin._kernels cimport (chassis_discretize_cs, deadwheel_reading, deadwheel_solve,
-                                desaturate_factors, forward_solve, gyro_turn, mat_vec, max_abs,
-                                odometry_move_cs, pose, rot_cs, rot_neg,
-                                swerve_ik, swerve_ik_accel, transform_log_angle, twist_exp_cs,
+                                desaturate_factors, forward_solve, forward_solve_many,
+                                gyro_turn, mat_vec, max_abs, odometry_motion, pose,
+                                pose_transform_by, rot_cs, rot_neg, swerve_ik, swerve_ik_accel, transform_log_angle, twist_exp_cs,
                                 vec, vec_rotate, wheels_desaturate)
 from drivekin.geometry cimport Translation2d
 from drivekin.kinematics cimport SwerveDriveKinematics
@@ -792,14 +792,20 @@ cdef inline void gyro_turns(Py_ssize_t k, const double* g, rot2_t* prev,   # IN/
                             ) noexcept nogil:
     # gyro_turn for k samples: each gyro reading's change from the one before (prev before
     # the first; left at the last), as a rotation (tc, ts) and its angle dth. None of it
-    # depends on the poses, so it runs ahead of the sequential pose updates.
+    # depends on the poses, so it runs ahead of the sequential pose updates, and with each
+    # reading's predecessor read from the arrays (gc[i] is the reading before sample i) the
+    # loop vectorises. gc and gs hold k + 1 values.
     cdef Py_ssize_t i
-    cdef rot2_t d
-    dk_sincos_n(k, g, gs, gc)
+    cdef rot2_t d, before
+    gc[0] = prev.c
+    gs[0] = prev.s
+    dk_sincos_n(k, g, gs + 1, gc + 1)
     for i in range(k):
-        d = gyro_turn(rot_cs(gc[i], gs[i]), prev)
+        before = rot_cs(gc[i], gs[i])
+        d = gyro_turn(rot_cs(gc[i + 1], gs[i + 1]), &before)
         tc[i] = d.c
         ts[i] = d.s
+    prev[0] = rot_cs(gc[k], gs[k])
     dk_atan2_n(k, ts, tc, dth)
 
 
@@ -829,65 +835,82 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
     cdef bint gyro = wo is None or wo.gyro
     if drive == SWERVE:
         n = so.kin.n
-    cdef double* buf = _scratch(10 * CHUNK + 3 * n + 3 * CHUNK * n)
-    cdef double* gc = buf                   # gyro cos, sin; without a gyro the fitted dx, dy
-    cdef double* gs = buf + CHUNK
-    cdef double* tc = buf + 2 * CHUNK       # the heading change: cos, sin, angle
-    cdef double* ts = buf + 3 * CHUNK
-    cdef double* dth = buf + 4 * CHUNK
-    cdef double* px = buf + 5 * CHUNK       # the poses of the chunk
-    cdef double* py = buf + 6 * CHUNK
-    cdef double* pc = buf + 7 * CHUNK
-    cdef double* ps = buf + 8 * CHUNK
-    cdef double* hd = buf + 9 * CHUNK
-    cdef double* dist = buf + 10 * CHUNK    # one sample's wheel or module distances
-    cdef double* ang = dist + 3 * n         # swerve: a chunk's module angles, cos, sin
-    cdef double* mc = ang + CHUNK * n
+    cdef double* buf = _scratch(12 * CHUNK + 2 + 3 * n + 4 * CHUNK * n)
+    cdef double* gc = buf                   # the gyro's cos and sin (CHUNK + 1 each)
+    cdef double* gs = gc + CHUNK + 1
+    cdef double* tc = gs + CHUNK + 1        # the heading change: cos, sin, angle
+    cdef double* ts = tc + CHUNK
+    cdef double* dth = ts + CHUNK
+    cdef double* mx = dth + CHUNK           # each sample's motion dx, then dy (kk apart)
+    cdef double* my
+    cdef double* px = mx + 2 * CHUNK        # the pose changes, then the poses of the chunk
+    cdef double* py = px + CHUNK
+    cdef double* pc = py + CHUNK
+    cdef double* ps = pc + CHUNK
+    cdef double* hd = ps + CHUNK
+    cdef double* dist = hd + CHUNK          # one sample's wheel or module distances
+    cdef double* ang = dist + 3 * n         # swerve: a chunk's module angles, cos, sin and
+    cdef double* mc = ang + CHUNK * n       # distance changes, module-major
     cdef double* ms = mc + CHUNK * n
+    cdef double* md = ms + CHUNK * n
+    cdef double d, last
+    cdef pose2_t step, cur
     with nogil:
         for ch in range((count + CHUNK - 1) // CHUNK):
             i0 = ch * CHUNK
             kk = chunk_len(i0, count)
+            my = mx + kk
             if gyro:
                 gyro_turns(kk, g.data + i0, &odo.prev_gyro, gc, gs, tc, ts, dth)
             if drive == SWERVE:
+                # SwerveDriveOdometry._motion for the whole chunk at once, vectorised across
+                # samples: the distance changes, the modules' cos/sin, the solve for (dx, dy)
+                # (its dθ row is not needed: the gyro gives dθ).
                 x = p.data + 2 * n * i0
-                for j in range(kk * n):
-                    ang[j] = x[2 * j + 1]
+                for j in range(n):
+                    last = so.prev[j]
+                    for i in range(kk):
+                        d = x[2 * (n * i + j)]
+                        md[kk * j + i] = d - last
+                        last = d
+                        ang[kk * j + i] = x[2 * (n * i + j) + 1]
+                    so.prev[j] = last
                 dk_sincos_n(kk * n, ang, ms, mc)
-            for i in range(kk):
-                x = p.data + n * (i0 + i)
-                if drive == SWERVE:
-                    x = p.data + 2 * n * (i0 + i)
-                    for j in range(n):
-                        dist[j] = x[2 * j]
-                    so._motion(dist, mc + n * i, ms + n * i, r)
-                elif drive == MECANUM:
-                    mo._motion(x, r)
-                elif drive == DIFFERENTIAL:
-                    do._motion(x[0], x[1], r)
-                elif drive == TWO_DEAD_WHEELS:
-                    to._motion(x[0], x[1], dth[i], r)
-                else:
-                    for j in range(n):
-                        dist[j] = x[j]
-                    wo._motion(dist, dth[i] if gyro else 0.0, r)
-                if gyro:
-                    odometry_move_cs(&odo.pose, &odo.twist, r[0], r[1], dth[i], tc[i], ts[i],
-                                     True)
-                    keep_pose(i, px, py, pc, ps, odo.pose)
-                else:
-                    # The solved dθ's cos/sin wait for the pass below.
-                    gc[i] = r[0]
-                    gs[i] = r[1]
-                    dth[i] = r[2]
+                forward_solve_many(2, n, kk, so.kin.f1, md, mc, ms, mx)
+            else:
+                for i in range(kk):
+                    x = p.data + n * (i0 + i)
+                    if drive == MECANUM:
+                        mo._motion(x, r)
+                    elif drive == DIFFERENTIAL:
+                        do._motion(x[0], x[1], r)
+                    elif drive == TWO_DEAD_WHEELS:
+                        to._motion(x[0], x[1], dth[i], r)
+                    else:
+                        for j in range(n):
+                            dist[j] = x[j]
+                        wo._motion(dist, dth[i] if gyro else 0.0, r)
+                        if not gyro:
+                            dth[i] = r[2]
+                    mx[i] = r[0]
+                    my[i] = r[1]
             if not gyro:
                 dk_sincos_n(kk, dth, ts, tc)
-                for i in range(kk):
-                    # libm's cos/sin: normalised as update's exp does.
-                    odometry_move_cs(&odo.pose, &odo.twist, gc[i], gs[i], dth[i], tc[i], ts[i],
-                                     False)
-                    keep_pose(i, px, py, pc, ps, odo.pose)
+            # The pose changes (vectorised), then the compositions, the only sequential part.
+            for i in range(kk):
+                step = odometry_motion(mx[i], my[i], dth[i], tc[i], ts[i], gyro)
+                px[i] = step.t.x
+                py[i] = step.t.y
+                pc[i] = step.r.c
+                ps[i] = step.r.s
+            cur = odo.pose                  # a local, which the stores below cannot alias
+            for i in range(kk):
+                cur = pose_transform_by(cur, pose(vec(px[i], py[i]), rot_cs(pc[i], ps[i])))
+                keep_pose(i, px, py, pc, ps, cur)
+            odo.pose = cur
+            odo.twist.dx = mx[kk - 1]
+            odo.twist.dy = my[kk - 1]
+            odo.twist.dtheta = dth[kk - 1]
             store_poses(kk, o.data + 3 * i0, px, py, pc, ps, hd)
     PyMem_Free(buf)
     return 0
