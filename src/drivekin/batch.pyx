@@ -83,10 +83,11 @@ if not dk_cpu_ok():
 
 # Samples per pass: the loops below first compute every sample's sines, cosines and
 # angles of a chunk (independent of each other, so four at a time in the SIMD build), then
-# run the per-sample arithmetic, and write angles out in a last pass. 256 samples of
-# scratch stay in L1.
+# run the per-sample arithmetic, and write angles out in a last pass. 32 samples keep a
+# swerve replay's scratch well inside L1; in the SIMD build that measured about 9 % faster
+# than 256 (replay and swerve IK), in the default build the same.
 cdef enum:
-    CHUNK = 256
+    CHUNK = 32
 
 __all__ = ["desaturate", "desaturateWheelVelocities", "discretize", "exp", "log", "replay",
            "toChassisAccelerations", "toChassisVelocities", "toFieldRelative",
