@@ -310,6 +310,13 @@ cdef object _swerve_inverse(SwerveDriveKinematics k, object chassis, object omeg
     return o.array
 
 
+cdef inline void deadwheel_readings(Py_ssize_t w, const double* rows, const double* x,
+                                    double* y) noexcept nogil:
+    cdef Py_ssize_t j
+    for j in range(w):
+        y[j] = deadwheel_reading(rows + 3 * j, x[0], x[1], x[2])
+
+
 cdef object _wheels_inverse(object kinematics, object chassis, object centerOfRotation,
                             object out, str name):
     """Mecanum, differential or dead-wheel readings for a chassis stack (the same map
@@ -349,11 +356,14 @@ cdef object _wheels_inverse(object kinematics, object chassis, object centerOfRo
     for j in range(3 * w):
         rows[j] = dk.m[j]
     with nogil:
-        for i in range(count):
-            x = v.data + 3 * i
-            y = o.data + w * i
-            for j in range(w):
-                y[j] = deadwheel_reading(rows + 3 * j, x[0], x[1], x[2])
+        if w == 3:
+            # The common three-wheel layout with a literal size, which the compiler unrolls
+            # (as in the forward direction).
+            for i in range(count):
+                deadwheel_readings(3, rows, v.data + 3 * i, o.data + 3 * i)
+        else:
+            for i in range(count):
+                deadwheel_readings(w, rows, v.data + 3 * i, o.data + w * i)
     PyMem_Free(rows)
     return o.array
 
