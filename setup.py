@@ -4,7 +4,8 @@ Environment switches:
   DRIVEKIN_CYTHON_DEBUG=1  turn bounds/wraparound checks back on (debug CI job)
   DRIVEKIN_CYTHON_TRACE=1  add line tracing and the annotated HTML
   DRIVEKIN_SIMD=1          drivekin.batch takes sin, cos and atan2 four at a time from glibc's
-                           libmvec (AVX2; x86_64 Linux with glibc >= 2.35 only): faster, but
+                           libmvec (AVX2; x86_64 Linux with glibc >= 2.35 only), and its
+                           replay renormalises headings with a Newton step: faster, but
                            no longer bit-identical to the per-call API (error bound in
                            drivekin.batch's docstring). Other modules are unaffected.
 """

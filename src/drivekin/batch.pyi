@@ -60,8 +60,9 @@ from drivekin.odometry import (
 _Array = npt.NDArray[np.float64]
 
 SIMD: bool
-"""True in a ``DRIVEKIN_SIMD=1`` build (libmvec sin/cos/atan2: results within the
-module's documented bound instead of bit-identical to the per-call API)."""
+"""True in a ``DRIVEKIN_SIMD=1`` build (libmvec sin/cos/atan2 and the replay's Newton-step
+renormalisation: results within the module's documented bound instead of bit-identical to
+the per-call API)."""
 
 __all__ = ["desaturate", "desaturateWheelVelocities", "discretize", "exp", "log", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
 
