@@ -54,8 +54,9 @@ from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 from drivekin._kernels cimport (chassis_discretize_cs, deadwheel_reading, deadwheel_solve,
                                 desaturate_factors, forward_solve, forward_solve_many,
                                 gyro_turn, mat_vec, max_abs, odometry_motion, pose,
-                                pose_transform_by, rot_cs, rot_neg, swerve_ik, swerve_ik_accel, transform_log_angle, twist_exp_cs,
-                                vec, vec_rotate, wheels_desaturate)
+                                pose_transform_by, rot_cs, rot_neg, swerve_ik, swerve_ik_accel,
+                                transform_log_angle, twist_exp_cs, vec, vec_rotate,
+                                wheels_desaturate)
 from drivekin.geometry cimport Translation2d
 from drivekin.kinematics cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics
@@ -848,11 +849,13 @@ cdef enum:
 
 
 cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) except -1:
-    # The odometry step (the class's _motion, the gyro turn and the pose move, as in its
-    # update), restaged per chunk: the transcendental functions of every sample first
-    # (gyro turns; swerve module cos/sin; dead wheels without a gyro, the cos/sin of the
-    # solved dθ), then the pose updates in order, then the headings. Each sample sees
-    # exactly the operations of update (tests/test_batch.py compares the bits).
+    # The odometry step (the drivetrain's motion, the gyro turn, the pose change and its
+    # composition, as in update), restaged per chunk as passes over all its samples: the
+    # gyro turns; the motions (swerve's vectorised, module-major; the other drivetrains
+    # through the class's _motion); for dead wheels without a gyro, the cos/sin of the
+    # solved dθ; the pose changes; then, the only sequential pass, the compositions; then
+    # the headings. Each sample sees exactly the operations of update (tests/test_batch.py
+    # compares the bits; the SIMD build differs as its docstring says).
     cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = p.width
     cdef const double* x
     cdef double r[3]
