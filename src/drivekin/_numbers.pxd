@@ -1,7 +1,8 @@
-# Reading a fixed number of floats from a list, tuple or float64 array into C memory
-# without running Python code (no __float__, no iteration protocol), so nothing can run
-# between reading the values and using them. Shared by the dead-wheel readings and the
-# estimators' standard deviations.
+# The numpy argument rules (dtype, alignment, contiguity, writeability), shared by every
+# module that takes arrays; and reading a fixed number of floats from a list, tuple or
+# float64 array into C memory without running Python code (no __float__, no iteration
+# protocol), so nothing can run between reading the values and using them (the dead-wheel
+# readings and the estimators' standard deviations).
 cimport numpy as cnp
 from cpython.list cimport PyList_CheckExact
 from cpython.ref cimport PyObject
@@ -27,19 +28,37 @@ cdef extern from *:
     int read_number "drivekin_read_number"(PyObject* o, double* out) noexcept
 
 
+# The rules every numpy argument in drivekin follows (callers have checked PyArray_Check).
+
+cdef inline int check_float64(cnp.ndarray a, str what) except -1:
+    # float64 in native byte order, never converted: object arrays would run __float__
+    # code, ints hide a caller's mistake, and the kernels read the bytes as C doubles.
+    if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
+        raise TypeError(f"{what} must have dtype float64 (native byte order), got {a.dtype}")
+    return 0
+
+
+cdef inline int check_memory(cnp.ndarray a, str what, bint contiguous, bint writable,
+                             str hint='') except -1:
+    # Read (or written) through C pointers: aligned, C-contiguous where the caller walks it
+    # without strides, writeable for results.
+    if (contiguous and not cnp.PyArray_IS_C_CONTIGUOUS(a)) or not cnp.PyArray_ISALIGNED(a):
+        raise ValueError(f"{what} must be {'C-contiguous and ' if contiguous else ''}"
+                         f"aligned{hint}")
+    if writable and not cnp.PyArray_ISWRITEABLE(a):
+        raise ValueError(f"{what} must be writeable")
+    return 0
+
+
 cdef inline char* vector_data(object arr, Py_ssize_t n, bint writable, str what,
                               Py_ssize_t* stride) except NULL:
     """Validate a 1-D float64 array of n values (any stride; callers have checked
     PyArray_Check) and return its data, with its stride in ``stride[0]``."""
     cdef cnp.ndarray a = <cnp.ndarray>arr
-    if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
-        raise TypeError(f"{what} must have dtype float64 (native byte order), got {a.dtype}")
+    check_float64(a, what)
     if cnp.PyArray_NDIM(a) != 1 or a.shape[0] != n:
         raise ValueError(f"{what} must have shape ({n},), got {arr.shape}")
-    if not cnp.PyArray_ISALIGNED(a):
-        raise ValueError(f"{what} must be aligned")
-    if writable and not cnp.PyArray_ISWRITEABLE(a):
-        raise ValueError(f"{what} must be writeable")
+    check_memory(a, what, False, writable)
     stride[0] = cnp.PyArray_STRIDES(a)[0]
     return <char*>cnp.PyArray_DATA(a)
 

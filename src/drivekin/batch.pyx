@@ -51,6 +51,7 @@ cimport numpy as cnp
 import numpy as np
 
 from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
+from drivekin._numbers cimport check_float64, check_memory
 from drivekin._kernels cimport (chassis_discretize_cs, deadwheel_reading, deadwheel_solve,
                                 desaturate_factors, forward_solve, forward_solve_many,
                                 gyro_turn, mat_vec, max_abs, odometry_motion, pose,
@@ -123,8 +124,7 @@ cdef _Stack _stack(object x, tuple inner, str name, bint single_ok=True):
     if not cnp.PyArray_Check(x):
         raise TypeError(f"{name} must be a float64 numpy array, got {type_name(x)}")
     a = <cnp.ndarray>x
-    if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
-        raise TypeError(f"{name} must have dtype float64 (native byte order), got {a.dtype}")
+    check_float64(a, name)
     shape = (<object>a).shape
     if single_ok and shape == inner:
         s.single, s.n = True, 1
@@ -135,9 +135,7 @@ cdef _Stack _stack(object x, tuple inner, str name, bint single_ok=True):
         if single_ok:
             want = f"{_shape_text(inner)} or {want}"
         raise ValueError(f"{name} must have shape {want}, got {shape}")
-    if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
-        raise ValueError(f"{name} must be C-contiguous and aligned "
-                         "(np.ascontiguousarray makes a copy that is)")
+    check_memory(a, name, True, False, " (np.ascontiguousarray makes a copy that is)")
     s.width = 1
     for d in inner:
         s.width *= d

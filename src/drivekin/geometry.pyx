@@ -11,6 +11,7 @@ from libc.math cimport M_PI, fabs, hypot
 import numpy as np
 
 from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t
+from drivekin._numbers cimport check_float64
 from drivekin._kernels cimport (
     feet_to_meters, pose, pose_interpolate, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
     rot_neg, rot_plus, rot_rad, rot_radians, rot_times, rot_xy, transform_inverse,
@@ -36,18 +37,9 @@ cdef int refuse_reinit(bint frozen, object self) except -1:
     return 0
 
 
-cdef int float64_array(object a, str what) except -1:
-    # One rule for every numpy argument in drivekin: float64, never silently converted
-    # (object arrays would run arbitrary __float__ code, ints hide a caller's mistake).
-    if a.dtype != np.float64:
-        raise TypeError(f"{what} must be a float64 numpy array, got dtype {a.dtype} "
-                        "(convert with .astype(float))")
-    return 0
-
-
 cdef vec2_t vector2(object a) except *:
     # Translation2d(vector): a float64 numpy array of shape (2,), read by value.
-    float64_array(a, "Translation2d(vector)")
+    check_float64(a, "Translation2d(vector)")
     if a.shape != (2,):
         raise ValueError(f"Translation2d(vector) needs shape (2,), got {a.shape}")
     return vec(a[0], a[1])
@@ -413,7 +405,7 @@ cdef class Rotation2d:
 
 
 cdef rot2_t _rot_matrix(object m) except *:
-    float64_array(m, "a rotation matrix")
+    check_float64(m, "a rotation matrix")
     if m.shape != (2, 2):
         raise ValueError(f"a rotation matrix must have shape (2, 2), got {m.shape}")
     if np.linalg.norm(m @ m.T - np.eye(2)) > 1e-9:
@@ -427,7 +419,7 @@ cdef rot2_t _rot_matrix(object m) except *:
 
 
 cdef pose2_t _pose_matrix(object m) except *:
-    float64_array(m, "an affine transformation matrix")
+    check_float64(m, "an affine transformation matrix")
     if m.shape != (3, 3):
         raise ValueError(f"an affine transformation matrix must have shape (3, 3), got {m.shape}")
     if m[2, 0] != 0.0 or m[2, 1] != 0.0 or m[2, 2] != 1.0:

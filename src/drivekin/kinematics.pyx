@@ -20,6 +20,7 @@ from libc.math cimport M_PI, atan2, cos, fabs, isfinite, signbit, sin
 import numpy as np
 
 from drivekin._types cimport desat_t, rot2_t, vec2_t, vec3_t
+from drivekin._numbers cimport check_float64, check_memory
 from drivekin._kernels cimport (
     chassis_discretize, clamp01, desaturate_factors, feet_to_meters, forward_solve, jmax, max_abs, rot_eq,
     rot_interp, rot_minus, rot_neg, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
@@ -545,17 +546,13 @@ cdef double* float64_data(object arr, Py_ssize_t rows, Py_ssize_t cols, bint wri
     cdef cnp.ndarray a = <cnp.ndarray>arr
     cdef int ndim = 1 if cols == 0 else 2
     cdef str n
-    if cnp.PyArray_TYPE(a) != cnp.NPY_DOUBLE or not cnp.PyArray_ISNOTSWAPPED(a):
-        raise TypeError(f"{name} must have dtype float64 (native byte order), got {a.dtype}")
+    check_float64(a, name)
     if (cnp.PyArray_NDIM(a) != ndim or (rows >= 0 and a.shape[0] != rows)
             or (cols > 0 and a.shape[1] != cols)):
         n = str(rows) if rows >= 0 else "N"
         raise ValueError(f"{name} must have shape {f'({n},)' if cols == 0 else f'({n}, {cols})'}, "
                          f"got {(<object>a).shape}")
-    if not cnp.PyArray_IS_C_CONTIGUOUS(a) or not cnp.PyArray_ISALIGNED(a):
-        raise ValueError(f"{name} must be C-contiguous and aligned")
-    if writable and not cnp.PyArray_ISWRITEABLE(a):
-        raise ValueError(f"{name} must be writeable")
+    check_memory(a, name, True, writable)
     return <double*>cnp.PyArray_DATA(a)
 
 
