@@ -45,8 +45,8 @@ if trace:
 # computed as before. No -ffast-math, because NaN/inf must propagate exactly as in WPILib.
 compile_args = ["-O3", "-fno-math-errno", "-fno-trapping-math"] if os.name != "nt" else []
 
-modules = ["geometry", "kinematics", "_wheels", "differential", "mecanum", "deadwheel",
-           "diffswerve", "odometry", "estimator", "batch", "_alloccount"]
+modules = ["geometry", "chassis", "swerve", "_core.wheels", "differential", "mecanum",
+           "deadwheel", "diffswerve", "odometry", "estimator", "batch", "_core.alloccount"]
 
 
 def simd_options(name):
@@ -65,7 +65,7 @@ def simd_options(name):
 extensions = [
     Extension(
         f"drivekin.{name}",
-        [f"src/drivekin/{name}.pyx"],
+        [f"src/drivekin/{name.replace('.', '/')}.pyx"],
         **{
             "include_dirs": [numpy.get_include()],
             "define_macros": macros,

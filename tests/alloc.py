@@ -15,7 +15,7 @@ Then start tracemalloc and run the body ``calls`` times with the cyclic GC disab
   with tracemalloc hooks) pushes it up, even when it is freed again within the same call;
 * the traced size must not have grown at the end (nothing kept);
 * ``gc.get_count()[0]`` (GC-tracked allocations minus deallocations) must not grow;
-* in a second pass, drivekin's allocator hooks (``drivekin._alloccount``) must count zero
+* in a second pass, drivekin's allocator hooks (``drivekin._core.alloccount``) must count zero
   malloc/calloc/realloc calls in the RAW, MEM and OBJ domains.
 
 Objects drawn from a freelist (drivekin's Cython freelists, CPython's float and tuple
@@ -90,7 +90,7 @@ def count_allocator_calls(loop, calls=CALLS, warmup=WARMUP):
     over ``calls`` items, counted by drivekin's allocator hooks (``_alloccount``) after
     the same warm-ups as :func:`measure_loop`. tracemalloc sees bytes; this sees calls,
     so a block freed and reallocated within one iteration cannot hide."""
-    from drivekin._alloccount import AllocationCounter
+    from drivekin._core.alloccount import AllocationCounter
 
     loop(itertools.repeat(None, warmup))
     it = itertools.repeat(None, calls)

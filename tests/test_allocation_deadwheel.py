@@ -3,7 +3,7 @@ TwoDeadWheelOdometry), in the style of ``test_allocation_drivetrains.py``.
 
 After a warm-up, 10 000 iterations of each loop body must make no allocator calls at all:
 tracemalloc's peak and traced size and ``gc.get_count()[0]`` unchanged, and zero
-malloc/calloc/realloc calls counted by ``drivekin._alloccount.AllocationCounter`` (harness:
+malloc/calloc/realloc calls counted by ``drivekin._core.alloccount.AllocationCounter`` (harness:
 ``tests/alloc.py``). Readings are passed as the list of floats a robot loop would build
 once and refill, or as a float64 array (contiguous and strided); ``pose = odo.update(...)``
 and ``toTwist2d`` return objects from drivekin's freelists, which are not allocator calls.

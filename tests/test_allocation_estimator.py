@@ -4,7 +4,7 @@ measurement every third step, ``sampleAt``, and every estimator's ``updateWithTi
 The harness is ``tests/alloc.py`` (see ``test_allocation_drivetrains.py``): after a
 warm-up, the measured iterations must make no allocator calls at all (traced peak,
 traced size and ``gc.get_count()[0]`` unchanged, and zero calls counted by
-``drivekin._alloccount``). Time advances through every warm-up and measured run (a
+``drivekin._core.alloccount``). Time advances through every warm-up and measured run (a
 closure variable, so the 1.5 s pose history fills, then slides, and the ring buffer's
 compaction and the vision records' clean-up run many times over); each float made per
 step comes from CPython's float freelist.

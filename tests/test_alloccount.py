@@ -3,7 +3,7 @@ where freelists serve every request."""
 import pytest
 
 from drivekin import ChassisVelocities, Pose2d, Rotation2d, Twist2d
-from drivekin._alloccount import AllocationCounter
+from drivekin._core.alloccount import AllocationCounter
 
 
 def _calls(fn, n=1000):
@@ -60,7 +60,7 @@ _PACKAGE_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(drivekin.__file_
 
 _PRELUDE = """
 import tracemalloc
-from drivekin._alloccount import AllocationCounter
+from drivekin._core.alloccount import AllocationCounter
 
 def misuse(counter):
     try:

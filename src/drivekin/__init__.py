@@ -26,9 +26,8 @@ from drivekin.estimator import (
 )
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.interpolation import TimeInterpolatableBuffer
-from drivekin.kinematics import (
-    ChassisAccelerations,
-    ChassisVelocities,
+from drivekin.chassis import ChassisAccelerations, ChassisVelocities
+from drivekin.swerve import (
     SwerveDriveKinematics,
     SwerveModuleAcceleration,
     SwerveModulePosition,

@@ -50,27 +50,27 @@ cimport numpy as cnp
 
 import numpy as np
 
-from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
-from drivekin._numbers cimport check_float64, check_memory
-from drivekin._kernels cimport (chassis_discretize_cs, deadwheel_reading, deadwheel_solve,
+from drivekin._core.types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
+from drivekin._core.args cimport check_float64, check_memory
+from drivekin._core.kernels cimport (chassis_discretize_cs, deadwheel_reading, deadwheel_solve,
                                 desaturate_factors, forward_solve, forward_solve_many,
                                 gyro_turn, mat_vec, max_abs, odometry_motion, pose,
                                 pose_transform_by, rot_cs, rot_neg, swerve_ik, swerve_ik_accel,
                                 transform_log_angle, twist_exp_cs, vec, vec_rotate,
                                 wheels_desaturate)
 from drivekin.geometry cimport Translation2d
-from drivekin.kinematics cimport SwerveDriveKinematics
+from drivekin.swerve cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics
 from drivekin.differential cimport DifferentialDriveKinematics
 from drivekin.deadwheel cimport DeadWheelKinematics
 from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
                                 MecanumDriveOdometry, SwerveDriveOdometry,
                                 TwoDeadWheelOdometry, _Odometry)
-from drivekin._errors import type_name
+from drivekin._core.errors import type_name
 
 cnp.import_array()
 
-cdef extern from "_simd.h" nogil:
+cdef extern from "_core/simd.h" nogil:
     # Array sin/cos and atan2: libm loops by default, libmvec four at a time in the
     # DRIVEKIN_SIMD=1 build (see _simd.h). Every transcendental call of this module goes
     # through these two, so both builds run the same code path.

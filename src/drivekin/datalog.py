@@ -86,7 +86,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from drivekin import wpistruct
-from drivekin._errors import type_name
+from drivekin._core.errors import type_name
 from drivekin.kinematics import SwerveDriveKinematics
 
 __all__ = ["DataLogError", "EntryInfo", "LogData", "Writer", "listEntries", "read"]

@@ -1,6 +1,6 @@
 # Dead-wheel (tracking-wheel) kinematics over any number of wheels at any poses.
 cimport cython
-from drivekin.kinematics cimport _ChassisVector
+from drivekin.chassis cimport _ChassisVector
 
 
 @cython.final

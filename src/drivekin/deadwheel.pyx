@@ -23,12 +23,13 @@ from libc.math cimport M_PI, atan2, fabs, isfinite
 
 import numpy as np
 
-from drivekin._kernels cimport deadwheel_reading, deadwheel_solve
-from drivekin._numbers cimport read_floats, vector_data
+from drivekin._core.kernels cimport deadwheel_reading, deadwheel_solve
+from drivekin._core.args cimport read_floats, vector_data
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_twist
-from drivekin.kinematics cimport (ChassisAccelerations, ChassisVelocities, _ChassisVector,
-                                  new_chassis_velocities, snapshot)
-from drivekin._errors import type_name
+from drivekin._core.args cimport snapshot
+from drivekin.chassis cimport (ChassisAccelerations, ChassisVelocities, _ChassisVector,
+                               new_chassis_velocities)
+from drivekin._core.errors import type_name
 
 cnp.import_array()
 

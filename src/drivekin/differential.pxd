@@ -1,6 +1,6 @@
 # Differential (tank) drive kinematics and its wheel values (w[0] = left, w[1] = right).
 cimport cython
-from drivekin._wheels cimport _WheelValues
+from drivekin._core.wheels cimport _WheelValues
 
 
 cdef class _Wheel2(_WheelValues):

@@ -9,7 +9,7 @@ Units: m, m/s, m/s², rad, rad/s, rad/s². The model is the same as Road Runner'
 # that they match the runtime ``__doc__`` and that no public name is missing on either side.
 #
 # At runtime the three wheel-value classes derive from the private bases _Wheel2 (this
-# module) and drivekin._wheels._WheelValues; the inherited members are declared on each
+# module) and drivekin._core.wheels._WheelValues; the inherited members are declared on each
 # public class instead, so they carry the precise types.
 
 from collections.abc import Iterator

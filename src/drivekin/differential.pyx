@@ -6,11 +6,11 @@ Units: m, m/s, m/s², rad, rad/s, rad/s². The model is the same as Road Runner'
 cimport cython
 from libc.math cimport isfinite
 
-from drivekin._wheels cimport _WheelValues, install_bare_new
-from drivekin._kernels cimport clamp01, feet_to_meters, wheels_desaturate
+from drivekin._core.wheels cimport _WheelValues, install_bare_new
+from drivekin._core.kernels cimport clamp01, feet_to_meters, wheels_desaturate
 from drivekin.geometry cimport new_twist
-from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
-from drivekin._errors import type_name
+from drivekin.chassis cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+from drivekin._core.errors import type_name
 
 
 cdef class _Wheel2(_WheelValues):

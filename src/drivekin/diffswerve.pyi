@@ -19,7 +19,7 @@ rounding (quail's ``calculateModuleAngle`` does not: it is off by a factor 2·R_
 # that they match the runtime ``__doc__`` and that no public name is missing on either side.
 #
 # At runtime the two value classes derive from the private base
-# drivekin._wheels._WheelValues; the inherited members are declared on each public class
+# drivekin._core.wheels._WheelValues; the inherited members are declared on each public class
 # instead, so they carry the precise types.
 
 from collections.abc import Iterator, Sequence

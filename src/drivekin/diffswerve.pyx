@@ -16,22 +16,21 @@ rounding (quail's ``calculateModuleAngle`` does not: it is off by a factor 2·R_
 cimport cython
 cimport numpy as cnp
 from cpython.float cimport PyFloat_AsDouble
-from cpython.list cimport PyList_CheckExact
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from cpython.buffer cimport PyObject_CheckBuffer
 from cpython.ref cimport PyObject
-from cpython.sequence cimport PySequence_Fast, PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
-from cpython.tuple cimport PyTuple_CheckExact
+from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from libc.math cimport atan2, isfinite
 
-from drivekin._types cimport rot2_t
-from drivekin._wheels cimport _WheelValues, install_bare_new
-from drivekin._kernels cimport clamp01, rot_rad
+from drivekin._core.types cimport rot2_t
+from drivekin._core.wheels cimport _WheelValues, install_bare_new
+from drivekin._core.args cimport as_fast, float64_data, is_array
+from drivekin._core.kernels cimport (clamp01, dswerve_desaturate, dswerve_drive_factor,
+                                     dswerve_module, dswerve_motors, rot_rad)
 from drivekin.geometry cimport Rotation2d, new_rotation
-from drivekin.kinematics cimport (SwerveModulePosition, SwerveModuleVelocity, _ModuleVector,
-                                  float64_data, new_module_position)
-from drivekin._errors import type_name
-from drivekin._format import f2
+from drivekin.swerve cimport (SwerveModulePosition, SwerveModuleVelocity, _ModuleVector,
+                              new_module_position)
+from drivekin._core.errors import type_name
+from drivekin._core.format import f2
 
 cnp.import_array()
 
@@ -197,23 +196,6 @@ cdef int uninitialised() except -1:
     raise RuntimeError("DifferentialSwerveModuleKinematics.__init__ has not completed")
 
 
-cdef inline bint is_array(object x) noexcept:
-    return not (PyTuple_CheckExact(x) or PyList_CheckExact(x)) and cnp.PyArray_Check(x)
-
-
-cdef object as_fast(object seq, str what):
-    """A list/tuple view of ``seq`` (no copy for lists and tuples)."""
-    if PyTuple_CheckExact(seq) or PyList_CheckExact(seq):
-        return seq
-    if PyObject_CheckBuffer(seq) or isinstance(seq, str):
-        raise TypeError(f"{what} must be a sequence or a float64 numpy array, "
-                        f"got {type_name(seq)}")
-    try:
-        return PySequence_Fast(seq, "")
-    except TypeError:
-        raise TypeError(f"{what} must be a sequence, got {type_name(seq)}") from None
-
-
 cdef Py_ssize_t read_rates(object rates, double* stack, double** buf) except -1:
     """Read the pods' steering rates (a sequence of numbers or a float64 (N,) array) into
     C memory: ``buf[0]`` becomes ``stack`` (room for STACK_MODULES) or a PyMem block of
@@ -231,7 +213,8 @@ cdef Py_ssize_t read_rates(object rates, double* stack, double** buf) except -1:
         n = cnp.PyArray_DIM(<cnp.ndarray>rates, 0)
         fast = None
     else:
-        fast = as_fast(rates, "azimuthVelocities")
+        fast = as_fast(rates, "azimuthVelocities", "a sequence or a float64 numpy array", "",
+                       True)
         n = PySequence_Fast_GET_SIZE(fast)
     if n > STACK_MODULES:
         buf[0] = <double*>PyMem_Malloc(sizeof(double) * 2 * n)
@@ -534,7 +517,8 @@ cdef class DifferentialSwerveModuleKinematics:
                     for i in range(n):
                         d[2 * i] = d[2 * i] * k
                 return k
-            fast = as_fast(moduleVelocities, "moduleVelocities")
+            fast = as_fast(moduleVelocities, "moduleVelocities",
+                           "a sequence or a float64 numpy array", "", True)
             if PySequence_Fast_GET_SIZE(fast) != n:
                 raise ValueError(f"moduleVelocities has {PySequence_Fast_GET_SIZE(fast)} "
                                  f"entries but azimuthVelocities has {n} values (one per "

@@ -1,6 +1,6 @@
 # Pose estimators: odometry fused with vision measurements (WPILib 2027's PoseEstimator).
 cimport cython
-from drivekin._types cimport pose2_t, rot2_t, twist2_t
+from drivekin._core.types cimport pose2_t, rot2_t, twist2_t
 from drivekin.geometry cimport Pose2d, Rotation2d
 from drivekin.mecanum cimport MecanumDriveWheelPositions
 from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,

@@ -24,20 +24,20 @@ cimport numpy as cnp
 
 import time
 
-from drivekin._types cimport pose2_t, rot2_t
-from drivekin._numbers cimport read_floats
-from drivekin._kernels cimport (pose, pose_interpolate, pose_relative_to, pose_transform_by,
+from drivekin._core.types cimport pose2_t, rot2_t
+from drivekin._core.args cimport read_floats
+from drivekin._core.kernels cimport (pose, pose_interpolate, pose_relative_to, pose_transform_by,
                                 rot_cs, rot_times, transform_inverse, twist_exp_cs, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
-from drivekin.kinematics cimport SwerveDriveKinematics
+from drivekin.swerve cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
 from drivekin.deadwheel cimport DeadWheelKinematics
 from drivekin.differential cimport DifferentialDriveWheelPositions
-from drivekin._wheels cimport _WheelValues
+from drivekin._core.wheels cimport _WheelValues
 from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
                                 MecanumDriveOdometry, SwerveDriveOdometry,
                                 TwoDeadWheelOdometry, _Odometry)
-from drivekin._errors import type_name
+from drivekin._core.errors import type_name
 
 cnp.import_array()
 

@@ -2,7 +2,7 @@
 # cimport these declarations and build results with the inline factories below, which
 # skip __init__ and draw from the freelists.
 cimport cython
-from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t
+from drivekin._core.types cimport pose2_t, rot2_t, twist2_t, vec2_t
 
 
 @cython.final

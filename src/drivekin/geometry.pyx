@@ -10,16 +10,16 @@ from libc.math cimport M_PI, fabs, hypot
 
 import numpy as np
 
-from drivekin._types cimport pose2_t, rot2_t, twist2_t, vec2_t
-from drivekin._numbers cimport check_float64
-from drivekin._kernels cimport (
+from drivekin._core.types cimport pose2_t, rot2_t, twist2_t, vec2_t
+from drivekin._core.args cimport check_float64
+from drivekin._core.kernels cimport (
     feet_to_meters, pose, pose_interpolate, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
     rot_neg, rot_plus, rot_rad, rot_radians, rot_times, rot_xy, transform_inverse,
     transform_log, twist_exp, vec, vec_eq, vec_rotate,
 )
-from drivekin._errors import refuse_delete, type_name
-from drivekin._format import f2
-from drivekin._typedict cimport drivekin_set_type_attr
+from drivekin._core.errors import refuse_delete, type_name
+from drivekin._core.format import f2
+from drivekin._core.typedict cimport drivekin_set_type_attr
 
 
 cdef double DEG = 180.0 / M_PI

@@ -12,7 +12,7 @@ import math
 import threading
 from typing import Any, Callable, Generic, List, Optional, Tuple, TypeVar
 
-from drivekin._errors import type_name
+from drivekin._core.errors import type_name
 
 __all__ = ["TimeInterpolatableBuffer"]
 

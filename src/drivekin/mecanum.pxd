@@ -1,8 +1,8 @@
 # Mecanum drive kinematics and its wheel values. Wheel order everywhere: front left,
 # front right, rear left, rear right (WPILib's; Road Runner uses a different order).
 cimport cython
-from drivekin._types cimport vec2_t
-from drivekin._wheels cimport _WheelValues
+from drivekin._core.types cimport vec2_t
+from drivekin._core.wheels cimport _WheelValues
 
 
 cdef class _Wheel4(_WheelValues):

@@ -10,7 +10,7 @@ inverse rows are FL/RR ``[1, −1, −(x + y)]`` and FR/RL ``[1, 1, x − y]``.
 # they match the runtime ``__doc__`` and that no public name is missing on either side.
 #
 # At runtime the three wheel-value classes derive from the private bases _Wheel4 (this
-# module) and drivekin._wheels._WheelValues; the inherited members are declared on each
+# module) and drivekin._core.wheels._WheelValues; the inherited members are declared on each
 # public class instead, so they carry the precise types.
 
 from collections.abc import Iterator

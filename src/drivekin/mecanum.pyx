@@ -9,12 +9,12 @@ from libc.math cimport isfinite
 
 import numpy as np
 
-from drivekin._types cimport vec2_t
-from drivekin._wheels cimport _WheelValues, install_bare_new
-from drivekin._kernels cimport clamp01, feet_to_meters, mat_vec, vec, vec_eq, wheels_desaturate
+from drivekin._core.types cimport vec2_t
+from drivekin._core.wheels cimport _WheelValues, install_bare_new
+from drivekin._core.kernels cimport clamp01, feet_to_meters, mat_vec, vec, vec_eq, wheels_desaturate
 from drivekin.geometry cimport Translation2d, new_twist
-from drivekin.kinematics cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
-from drivekin._errors import type_name
+from drivekin.chassis cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+from drivekin._core.errors import type_name
 
 cdef Translation2d ORIGIN = Translation2d()
 cdef tuple LABELS = ("Front Left", "Front Right", "Rear Left", "Rear Right")

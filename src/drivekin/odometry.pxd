@@ -6,9 +6,9 @@
 # the stored readings), shared with the batch replay (drivekin.batch), which handles the
 # gyro for many samples at once.
 cimport cython
-from drivekin._types cimport pose2_t, rot2_t, twist2_t
+from drivekin._core.types cimport pose2_t, rot2_t, twist2_t
 from drivekin.geometry cimport Rotation2d
-from drivekin.kinematics cimport SwerveDriveKinematics
+from drivekin.swerve cimport SwerveDriveKinematics
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
 from drivekin.deadwheel cimport DeadWheelKinematics
 

@@ -11,17 +11,17 @@ cimport cython
 from libc.math cimport isfinite
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 
-from drivekin._types cimport pose2_t, rot2_t
-from drivekin._wheels cimport _WheelValues
-from drivekin._kernels cimport (deadwheel_solve, forward_solve, gyro_turn, mat_vec,
+from drivekin._core.types cimport pose2_t, rot2_t
+from drivekin._core.wheels cimport _WheelValues
+from drivekin._core.kernels cimport (deadwheel_solve, forward_solve, gyro_turn, mat_vec,
                                 odometry_move, odometry_move_cs, odometry_step, pose,
                                 rot_radians, rot_xy, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
-from drivekin.kinematics cimport SwerveDriveKinematics, SwerveModulePosition
+from drivekin.swerve cimport SwerveDriveKinematics, SwerveModulePosition
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
 from drivekin.deadwheel cimport DeadWheelKinematics
-from drivekin.kinematics cimport new_chassis_velocities
-from drivekin._errors import type_name
+from drivekin.chassis cimport new_chassis_velocities
+from drivekin._core.errors import type_name
 
 
 cdef pose2_t initial(object p) except *:

@@ -77,7 +77,7 @@ import threading
 from collections.abc import Callable
 from typing import Any, TypeVar, Union
 
-from drivekin._errors import type_name
+from drivekin._core.errors import type_name
 from drivekin.differential import (
     DifferentialDriveKinematics,
     DifferentialDriveWheelAccelerations,

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import final
 
-from drivekin._errors import type_name
+from drivekin._core.errors import type_name
 
 __all__ = ["Units"]
 

@@ -89,7 +89,7 @@ import sys
 from collections.abc import Callable, Iterable
 from typing import Any, TypeVar, Union
 
-from drivekin._errors import type_name
+from drivekin._core.errors import type_name
 from drivekin.differential import (
     DifferentialDriveKinematics,
     DifferentialDriveWheelAccelerations,

@@ -27,7 +27,7 @@ def test_bad_seconds_get_one_clear_line(seconds):
 def test_allocation_counter_misuse_raises_and_never_hangs():
     script = textwrap.dedent("""
         import tracemalloc
-        from drivekin._alloccount import AllocationCounter
+        from drivekin._core.alloccount import AllocationCounter
         raised = []
         def step(f):
             try:

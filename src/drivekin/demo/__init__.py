@@ -41,7 +41,7 @@ Measurement, in two passes over identical fresh simulations (so the poses must a
    distort the timings): traced bytes are read once before the loop, the peak is reset,
    and after the loop the peak and current traced bytes are compared with the start;
    ``sys.getallocatedblocks()`` before and after gives the net change in live blocks.
-   Around the loop, ``drivekin._alloccount.AllocationCounter`` hooks CPython's RAW, MEM
+   Around the loop, ``drivekin._core.alloccount.AllocationCounter`` hooks CPython's RAW, MEM
    and OBJ allocator domains and counts every malloc/calloc/realloc call: 0 calls means
    the steady-state loop is served entirely by freelists (floats, drivekin value
    objects) and preallocated objects. The tracemalloc figures are a second opinion.

@@ -11,7 +11,7 @@ import tracemalloc
 from array import array
 
 from drivekin import ChassisVelocities
-from drivekin._alloccount import AllocationCounter
+from drivekin._core.alloccount import AllocationCounter
 from drivekin.demo.drivetrains import _pose_dict, drivetrain_class
 from drivekin.demo.script import BUDGET_NS, DT, JoystickScript
 

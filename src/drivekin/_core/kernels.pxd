@@ -3,8 +3,8 @@
 # Output parameters come last and are marked OUT. Formulas follow WPILib 2027
 # (see ../shared/reference/wpilib-kinematics.md); the comments say where they are subtle.
 
-from libc.math cimport atan2, cos, fabs, hypot, sin, sqrt
-from drivekin._types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
+from libc.math cimport atan2, cos, fabs, hypot, signbit, sin, sqrt
+from drivekin._core.types cimport desat_t, dswerve_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 
 # ---------------------------------------------------------------------------------------
 # Java Math.max/min: NaN wins (C fmax/fmin would drop it and change which branch runs).
@@ -22,6 +22,12 @@ cdef inline double jmin(double a, double b) noexcept nogil:
     if b != b:
         return b
     return a if a <= b else b
+
+cdef inline bint java_equals(double a, double b) noexcept nogil:
+    # Double.compare(a, b) == 0: NaN equals NaN, 0.0 differs from -0.0.
+    if a != a or b != b:
+        return a != a and b != b
+    return a == b and signbit(a) == signbit(b)
 
 cdef inline double clamp01(double t) noexcept nogil:
     # MathUtil.clamp(t, 0, 1); NaN stays NaN.
@@ -450,3 +456,84 @@ cdef inline void deadwheel_solve(Py_ssize_t n, const double* p3, const double* p
 cdef inline double deadwheel_reading(const double* row, double x, double y, double z) noexcept nogil:
     # One wheel's reading for the chassis vector (x, y, z): the inverse map, row by row.
     return row[0] * x + row[1] * y + row[2] * z
+
+
+# ---------------------------------------------------------------------------------------
+# Differential swerve pods: two motors drive one pod through a differential. Their sum
+# turns the pod, their difference spins the wheel:
+#     R_A·ω_pod = ω_m1 + ω_m2,    R_L·ω_wheel = ω_m1 − ω_m2,    ω_wheel = v / r
+# (R = motor turns per output turn). A reversed motor 2 reads and takes −ω_m2.
+
+cdef inline void dswerve_motors(const dswerve_t* g, double v, double w,
+                                double* m1, double* m2       # OUT, rad/s as the motors read
+                                ) noexcept nogil:
+    # Halves taken before the sum so that large finite inputs cannot overflow in between.
+    cdef double a = 0.5 * g.ra * w, b = 0.5 * g.kv * v
+    m1[0] = a + b
+    m2[0] = g.s2 * (a - b)
+
+cdef inline void dswerve_module(const dswerve_t* g, double m1, double m2,
+                                double* v, double* w         # OUT, m/s and rad/s
+                                ) noexcept nogil:
+    cdef double w2 = g.s2 * m2
+    w[0] = (m1 + w2) * g.ira
+    v[0] = (m1 - w2) * g.ikv
+
+cdef inline double clamp_abs(double x, double limit) noexcept nogil:
+    # Rounding in a + (limit − |a|) can land one ulp past the limit; this puts it back.
+    if x > limit:
+        return limit
+    if x < -limit:
+        return -limit
+    return x
+
+cdef inline void dswerve_desaturate(double s2, double m1, double m2, double limit,
+                                    bint proportional,
+                                    double* o1, double* o2   # OUT (may alias the inputs)
+                                    ) noexcept nogil:
+    # Java Math.max: a NaN motor makes peak NaN and the comparison false, so the pair
+    # passes unchanged (as a NaN wheel speed does in WPILib's desaturation).
+    cdef double peak = jmax(fabs(m1), fabs(m2))
+    cdef double a, b, w2
+    if not peak > limit:
+        o1[0] = m1
+        o2[0] = m2
+        return
+    if proportional:
+        # WPILib's order of operations (m / peak * limit): the fastest lands on the limit.
+        o1[0] = m1 / peak * limit
+        o2[0] = m2 / peak * limit
+        return
+    # Steering part a (the pod's rate) and wheel part b: ω1 = a + b, ω2 = a − b, so the
+    # fastest motor is |a| + |b|. Shrink b first; only a steering part beyond the limit
+    # by itself is cut (and then the wheel stops).
+    w2 = s2 * m2
+    a = 0.5 * m1 + 0.5 * w2
+    b = 0.5 * m1 - 0.5 * w2
+    if fabs(a) >= limit:
+        a = limit if a > 0.0 else -limit
+        b = 0.0
+    else:
+        b = limit - fabs(a) if b > 0.0 else fabs(a) - limit
+    o1[0] = clamp_abs(a + b, limit)
+    o2[0] = s2 * clamp_abs(a - b, limit)
+
+cdef inline double dswerve_drive_factor(const dswerve_t* g, Py_ssize_t n,
+                                        const double* v, Py_ssize_t vstride,
+                                        const double* w, double limit) noexcept nogil:
+    # The largest k in [0, 1] with 0.5·|R_A·w_i| + k·0.5·|kv·v_i| <= limit for every pod.
+    # A pod whose steering alone exceeds the limit forces k = 0. A NaN anywhere returns
+    # 1 (no scaling), as a NaN wheel speed disables WPILib's desaturation.
+    cdef Py_ssize_t i
+    cdef double k = 1.0, a, b
+    for i in range(n):
+        a = fabs(0.5 * g.ra * w[i])
+        b = fabs(0.5 * g.kv * v[i * vstride])
+        if a != a or b != b:
+            return 1.0
+        if a + b > limit:
+            if a >= limit:
+                k = 0.0
+            elif (limit - a) / b < k:
+                k = (limit - a) / b
+    return k

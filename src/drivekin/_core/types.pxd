@@ -34,3 +34,13 @@ cdef struct desat_t:
     double max_module           # attainableMaxModuleSpeed, m/s
     double max_trans            # attainableMaxTranslationalSpeed, m/s
     double max_rot              # attainableMaxRotationalVelocity, rad/s
+
+# A differential swerve pod's gearing (drivekin.diffswerve).
+cdef struct dswerve_t:
+    double ra                    # azimuth gear ratio R_A, motor turns per pod turn
+    double rl                    # wheel gear ratio R_L, motor turns per wheel turn
+    double r                     # wheel radius, m
+    double kv                    # R_L / r: motor rad per m of wheel travel
+    double s2                    # +1, or -1 when motor 2 is mounted reversed
+    double ira                   # 1 / R_A, for the inverse map
+    double ikv                   # 1 / kv, m of wheel travel per motor rad

@@ -1,4 +1,4 @@
-"""Chassis velocities/accelerations and N-module swerve kinematics (WPILib 2027).
+"""Swerve module values and N-module swerve kinematics (WPILib 2027).
 
 Units: m, m/s, m/s², rad, rad/s, rad/s², s. Robot frame: x forward, y left, CCW positive.
 
@@ -10,25 +10,25 @@ owned by the caller. Kinematics objects carry heading memory and are not thread-
 cimport cython
 cimport numpy as cnp
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from cpython.ref cimport Py_DECREF, Py_INCREF, PyObject
-from cpython.sequence cimport PySequence_Fast, PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
-from cpython.list cimport PyList_CheckExact, PyList_GET_ITEM, PyList_GET_SIZE
-from cpython.buffer cimport PyObject_CheckBuffer
+from cpython.ref cimport Py_INCREF, PyObject
+from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
+from cpython.list cimport PyList_CheckExact
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, atan2, cos, fabs, isfinite, signbit, sin
 
 import numpy as np
 
-from drivekin._types cimport desat_t, rot2_t, vec2_t, vec3_t
-from drivekin._numbers cimport check_float64, check_memory
-from drivekin._kernels cimport (
-    chassis_discretize, clamp01, desaturate_factors, feet_to_meters, forward_solve, jmax, max_abs, rot_eq,
-    rot_interp, rot_minus, rot_neg, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
-    vec, vec_eq, vec_rotate,
+from drivekin._core.types cimport desat_t, rot2_t, vec2_t, vec3_t
+from drivekin._core.args cimport as_fast, exact_type, float64_data, snapshot
+from drivekin._core.kernels cimport (
+    clamp01, desaturate_factors, forward_solve, java_equals, jmax, max_abs, rot_eq,
+    rot_interp, rot_minus, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
+    vec, vec_eq,
 )
 from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
-from drivekin._errors import refuse_delete, type_name
-from drivekin._format import f2
+from drivekin.chassis cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+from drivekin._core.errors import refuse_delete, type_name
+from drivekin._core.format import f2
 
 cnp.import_array()
 
@@ -39,282 +39,6 @@ cdef Translation2d ORIGIN = Translation2d()
 # Module counts up to this are handled in stack memory by the static desaturation façade.
 cdef enum:
     STACK_MODULES = 16
-
-
-cdef inline bint java_equals(double a, double b) noexcept:
-    # Double.compare(a, b) == 0: NaN equals NaN, 0.0 differs from -0.0.
-    if a != a or b != b:
-        return a != a and b != b
-    return a == b and signbit(a) == signbit(b)
-
-
-# ---------------------------------------------------------------------------------------
-# Chassis vectors
-
-# Freelists live on the two base classes: Cython only lets the base manage them, and the
-# subclasses add no fields, so they share it.
-@cython.freelist(64)
-cdef class _ChassisVector:
-    """Shared arithmetic of ChassisVelocities and ChassisAccelerations (x, y, angular)."""
-
-    cdef _ChassisVector _new(self, double x, double y, double z):
-        raise TypeError("_ChassisVector is an abstract base; use ChassisVelocities or "
-                        "ChassisAccelerations")
-
-    cdef _rotated_into(self, rot2_t r, _ChassisVector out):
-        cdef vec2_t t = vec_rotate(vec(self.v.x, self.v.y), r)
-        out.v.x = t.x
-        out.v.y = t.y
-        out.v.z = self.v.z
-
-    def toRobotRelative(self, Rotation2d robotAngle not None):
-        """Convert field-relative values to robot-relative ones.
-
-        ``robotAngle`` is the robot heading on the field; x and y are rotated by
-        −robotAngle, the angular component is unchanged."""
-        out = self._new(0.0, 0.0, 0.0)
-        self._rotated_into(rot_neg(robotAngle.r), out)
-        return out
-
-    def toFieldRelative(self, Rotation2d robotAngle not None):
-        """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
-        out = self._new(0.0, 0.0, 0.0)
-        self._rotated_into(robotAngle.r, out)
-        return out
-
-    def toRobotRelativeInto(self, Rotation2d robotAngle not None, _ChassisVector out not None):
-        """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
-        same class; may be ``self``)."""
-        if type(out) is not type(self):
-            raise TypeError(f"out must be a {type(self).__name__}, got {type_name(out)}")
-        self._rotated_into(rot_neg(robotAngle.r), out)
-
-    def toFieldRelativeInto(self, Rotation2d robotAngle not None, _ChassisVector out not None):
-        """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
-        same class; may be ``self``)."""
-        if type(out) is not type(self):
-            raise TypeError(f"out must be a {type(self).__name__}, got {type_name(out)}")
-        self._rotated_into(robotAngle.r, out)
-
-    def plus(self, _ChassisVector other not None):
-        """Return the component-wise sum."""
-        self._check(other)
-        return self._new(self.v.x + other.v.x, self.v.y + other.v.y, self.v.z + other.v.z)
-
-    def minus(self, _ChassisVector other not None):
-        """Return the component-wise difference."""
-        self._check(other)
-        return self._new(self.v.x - other.v.x, self.v.y - other.v.y, self.v.z - other.v.z)
-
-    def unaryMinus(self):
-        """Return the negation of every component."""
-        return self._new(-self.v.x, -self.v.y, -self.v.z)
-
-    def times(self, double scalar):
-        """Return every component multiplied by ``scalar``."""
-        return self._new(self.v.x * scalar, self.v.y * scalar, self.v.z * scalar)
-
-    def div(self, double scalar):
-        """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
-        return self._new(self.v.x / scalar, self.v.y / scalar, self.v.z / scalar)
-
-    def interpolate(self, _ChassisVector endValue not None, double t):
-        """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
-        ``endValue`` (the objects themselves, as WPILib does)."""
-        self._check(endValue)
-        if t <= 0.0:
-            return self
-        if t >= 1.0:
-            return endValue
-        return self._new(self.v.x + t * (endValue.v.x - self.v.x),
-                         self.v.y + t * (endValue.v.y - self.v.y),
-                         self.v.z + t * (endValue.v.z - self.v.z))
-
-    cdef _check(self, _ChassisVector other):
-        if type(other) is not type(self):
-            raise TypeError(f"expected a {type(self).__name__}, got {type_name(other)}")
-
-    def __add__(self, other):
-        if type(other) is type(self):
-            return self.plus(other)
-        return NotImplemented
-
-    def __sub__(self, other):
-        if type(other) is type(self):
-            return self.minus(other)
-        return NotImplemented
-
-    def __neg__(self):
-        return self.unaryMinus()
-
-    def __mul__(self, other):
-        try:
-            return self.times(other)
-        except TypeError:
-            return NotImplemented
-
-    def __rmul__(self, other):
-        return self.__mul__(other)
-
-    def __truediv__(self, other):
-        try:
-            return self.div(other)
-        except TypeError:
-            return NotImplemented
-
-    __hash__ = None  # mutable
-
-    def __reduce__(self):
-        return (type(self), (self.v.x, self.v.y, self.v.z))
-
-    def __delattr__(self, name):
-        refuse_delete(self, name)
-
-
-cdef class ChassisVelocities(_ChassisVector):
-    """ChassisVelocities(vx=0.0, vy=0.0, omega=0.0)
-
-    Robot velocity: ``vx`` forward and ``vy`` left in m/s, ``omega`` counter-clockwise in
-    rad/s. Robot-relative unless stated otherwise. Fields are mutable; ``==`` compares
-    each field exactly (0.0 == −0.0, NaN != NaN), as WPILib does.
-    """
-
-    def __init__(self, double vx=0.0, double vy=0.0, double omega=0.0):
-        self.v.x = vx
-        self.v.y = vy
-        self.v.z = omega
-
-    cdef _ChassisVector _new(self, double x, double y, double z):
-        return new_chassis_velocities(x, y, z)
-
-    @staticmethod
-    def fromFeet(double vx=0.0, double vy=0.0, double omega=0.0):
-        """Return the velocity ``vx`` forward and ``vy`` left given in ft/s, ``omega`` in
-        rad/s, in m/s (the same bits as robotpy-wpimath's ``ChassisSpeeds.fromFeet``)."""
-        return new_chassis_velocities(feet_to_meters(vx), feet_to_meters(vy), omega)
-
-    @property
-    def vx(self):
-        """Forward velocity, m/s."""
-        return self.v.x
-
-    @vx.setter
-    def vx(self, double value):
-        self.v.x = value
-
-    @property
-    def vy(self):
-        """Leftward velocity, m/s."""
-        return self.v.y
-
-    @vy.setter
-    def vy(self, double value):
-        self.v.y = value
-
-    @property
-    def omega(self):
-        """Angular velocity, rad/s, counter-clockwise positive."""
-        return self.v.z
-
-    @omega.setter
-    def omega(self, double value):
-        self.v.z = value
-
-    def toTwist2d(self, double dt):
-        """Return the Twist2d ``(vx·dt, vy·dt, omega·dt)`` travelled in ``dt`` seconds."""
-        return new_twist(self.v.x * dt, self.v.y * dt, self.v.z * dt)
-
-    def discretize(self, double dt):
-        """Return the velocities that, held constant for ``dt`` s along a straight line in
-        the rotating frame, end at the pose this constant twist would reach.
-
-        This removes the drift of swerve/mecanum drives that translate while turning.
-        ``omega·dt`` passes through a Rotation2d, so it is wrapped to [−π, π]
-        (omega = 4, dt = 1 gives omega' = 4 − 2π); ``dt = 0`` divides by zero (NaN/inf),
-        as in WPILib."""
-        cdef vec3_t d = chassis_discretize(self.v.x, self.v.y, self.v.z, dt)
-        return new_chassis_velocities(d.x, d.y, d.z)
-
-    def discretizeInto(self, double dt, ChassisVelocities out not None):
-        """Allocation-free :meth:`discretize`: write the result into ``out`` (may be self)."""
-        out.v = chassis_discretize(self.v.x, self.v.y, self.v.z, dt)
-
-    def __eq__(self, other):
-        cdef ChassisVelocities o
-        if isinstance(other, ChassisVelocities):
-            o = <ChassisVelocities>other
-            return self.v.x == o.v.x and self.v.y == o.v.y and self.v.z == o.v.z
-        return NotImplemented
-
-    def __repr__(self):
-        return f"ChassisVelocities(vx={self.v.x!r}, vy={self.v.y!r}, omega={self.v.z!r})"
-
-    def __str__(self):
-        return (f"ChassisVelocities(Vx: {f2(self.v.x)} m/s, Vy: {f2(self.v.y)} m/s, "
-                f"Omega: {f2(self.v.z)} rad/s)")
-
-
-cdef class ChassisAccelerations(_ChassisVector):
-    """ChassisAccelerations(ax=0.0, ay=0.0, alpha=0.0)
-
-    Robot acceleration: ``ax`` forward and ``ay`` left in m/s², ``alpha`` counter-clockwise
-    in rad/s². Fields are mutable; ``==`` follows Java ``Double.compare`` (NaN == NaN,
-    0.0 != −0.0).
-    """
-
-    def __init__(self, double ax=0.0, double ay=0.0, double alpha=0.0):
-        self.v.x = ax
-        self.v.y = ay
-        self.v.z = alpha
-
-    cdef _ChassisVector _new(self, double x, double y, double z):
-        cdef ChassisAccelerations o = ChassisAccelerations.__new__(ChassisAccelerations)
-        o.v.x = x
-        o.v.y = y
-        o.v.z = z
-        return o
-
-    @property
-    def ax(self):
-        """Forward acceleration, m/s²."""
-        return self.v.x
-
-    @ax.setter
-    def ax(self, double value):
-        self.v.x = value
-
-    @property
-    def ay(self):
-        """Leftward acceleration, m/s²."""
-        return self.v.y
-
-    @ay.setter
-    def ay(self, double value):
-        self.v.y = value
-
-    @property
-    def alpha(self):
-        """Angular acceleration, rad/s², counter-clockwise positive."""
-        return self.v.z
-
-    @alpha.setter
-    def alpha(self, double value):
-        self.v.z = value
-
-    def __eq__(self, other):
-        cdef ChassisAccelerations o
-        if isinstance(other, ChassisAccelerations):
-            o = <ChassisAccelerations>other
-            return (java_equals(self.v.x, o.v.x) and java_equals(self.v.y, o.v.y)
-                    and java_equals(self.v.z, o.v.z))
-        return NotImplemented
-
-    def __repr__(self):
-        return f"ChassisAccelerations(ax={self.v.x!r}, ay={self.v.y!r}, alpha={self.v.z!r})"
-
-    def __str__(self):
-        return (f"ChassisAccelerations(Ax: {f2(self.v.x)} m/s², Ay: {f2(self.v.y)} m/s², "
-                f"Alpha: {f2(self.v.z)} rad/s²)")
 
 
 # ---------------------------------------------------------------------------------------
@@ -535,85 +259,9 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
                 f"Angle: {new_rotation(self.a)})")
 
 
+
 # ---------------------------------------------------------------------------------------
-# Argument helpers shared by the kinematics classes
-
-cdef double* float64_data(object arr, Py_ssize_t rows, Py_ssize_t cols, bint writable,
-                          str name) except NULL:
-    """Validate a float64 C-contiguous aligned native-endian numpy array of shape (rows,)
-    (cols = 0) or (rows, cols) (rows = -1: any) and return its data. Callers have checked
-    PyArray_Check(arr)."""
-    cdef cnp.ndarray a = <cnp.ndarray>arr
-    cdef int ndim = 1 if cols == 0 else 2
-    cdef str n
-    check_float64(a, name)
-    if (cnp.PyArray_NDIM(a) != ndim or (rows >= 0 and a.shape[0] != rows)
-            or (cols > 0 and a.shape[1] != cols)):
-        n = str(rows) if rows >= 0 else "N"
-        raise ValueError(f"{name} must have shape {f'({n},)' if cols == 0 else f'({n}, {cols})'}, "
-                         f"got {(<object>a).shape}")
-    check_memory(a, name, True, writable)
-    return <double*>cnp.PyArray_DATA(a)
-
-
-cdef extern from *:
-    """
-    static inline int drivekin_exact(PyObject *o, PyObject *t) {
-        return Py_TYPE(o) == (PyTypeObject *)t;
-    }
-    """
-    # Exact type test on a borrowed pointer: no reference counting on the hot loops.
-    bint exact_type "drivekin_exact"(PyObject* o, PyObject* t) noexcept
-
-
-cdef inline object as_fast(object seq, str what):
-    """Return a list/tuple view of ``seq`` (no copy for lists and tuples)."""
-    if PyTuple_CheckExact(seq) or PyList_CheckExact(seq):
-        return seq
-    if PyObject_CheckBuffer(seq):
-        # Iterating a buffer yields numbers (or, for a 2-D memoryview, raises
-        # NotImplementedError), never value objects.
-        raise TypeError(f"{what} must be a sequence of objects, got {type_name(seq)}; "
-                        "where an (N, 2) array is accepted, pass a float64 numpy array")
-    try:
-        return PySequence_Fast(seq, "")
-    except TypeError:
-        raise TypeError(f"{what} must be a sequence, got {type_name(seq)}") from None
-
-
-cdef tuple snapshot(object seq, str what):
-    """Return a tuple of the items of ``seq`` that owns a reference to each.
-
-    ``tuple(a_list)`` is not enough: CPython allocates the tuple before copying the list's
-    item pointers, and that allocation can run a finalizer that empties the list, leaving
-    the copy reading freed items. Here the references are taken first, in memory whose
-    allocation never runs the garbage collector."""
-    cdef Py_ssize_t i, n
-    cdef PyObject** refs
-    cdef tuple t
-    if PyTuple_CheckExact(seq):
-        return <tuple>seq
-    if not PyList_CheckExact(seq):
-        return tuple(as_fast(seq, what))        # a fresh list or tuple: no one else sees it
-    n = PyList_GET_SIZE(seq)
-    refs = <PyObject**>PyMem_Malloc(sizeof(PyObject*) * (n + 1))
-    if refs == NULL:
-        raise MemoryError()
-    for i in range(n):
-        refs[i] = PyList_GET_ITEM(seq, i)
-        Py_INCREF(<object>refs[i])
-    try:
-        t = PyTuple_New(n)
-    except BaseException:
-        for i in range(n):
-            Py_DECREF(<object>refs[i])
-        PyMem_Free(refs)
-        raise
-    for i in range(n):
-        PyTuple_SET_ITEM(t, i, <object>refs[i])    # steals the reference taken above
-    PyMem_Free(refs)
-    return t
-
+# Argument helpers of the swerve classes
 
 cdef object varargs(object first, tuple more, type cls):
     """WPILib methods take Java varargs: accept f(a, b, c) or f([a, b, c]). Taking the
@@ -1196,3 +844,4 @@ cdef int desat_objects(PyObject** items, Py_ssize_t n, const desat_t* p,
         r = jmax(r, fabs((<_ModuleVector>items[i]).m))
     desaturate_factors(r, p, div, mul)
     return 0
+

@@ -1,24 +1,10 @@
-# Chassis-level and swerve value types, and SwerveDriveKinematics. The value classes hold
-# C doubles by value (the angle of a module value is a rot2_t, not a Rotation2d object),
-# so results can be written in place without creating Python objects.
+# Swerve module values and SwerveDriveKinematics. The module values hold C doubles by
+# value (the angle is a rot2_t, not a Rotation2d object), so results can be written in
+# place without creating Python objects.
 cimport cython
-from drivekin._types cimport rot2_t, vec2_t, vec3_t
+from drivekin._core.types cimport rot2_t, vec2_t
+from drivekin.chassis cimport ChassisVelocities
 from drivekin.geometry cimport Translation2d
-
-
-cdef class _ChassisVector:
-    cdef vec3_t v                # (vx, vy, omega) or (ax, ay, alpha)
-    cdef _ChassisVector _new(self, double x, double y, double z)
-    cdef _rotated_into(self, rot2_t r, _ChassisVector out)
-    cdef _check(self, _ChassisVector other)
-
-@cython.final
-cdef class ChassisVelocities(_ChassisVector):
-    pass
-
-@cython.final
-cdef class ChassisAccelerations(_ChassisVector):
-    pass
 
 
 cdef class _ModuleVector:
@@ -39,13 +25,6 @@ cdef class SwerveModulePosition(_ModuleVector):
 cdef class SwerveModuleAcceleration(_ModuleVector):
     pass
 
-
-cdef inline ChassisVelocities new_chassis_velocities(double vx, double vy, double omega):
-    cdef ChassisVelocities o = ChassisVelocities.__new__(ChassisVelocities)
-    o.v.x = vx
-    o.v.y = vy
-    o.v.z = omega
-    return o
 
 cdef inline SwerveModuleVelocity new_module_velocity(double v, rot2_t a):
     cdef SwerveModuleVelocity o = SwerveModuleVelocity.__new__(SwerveModuleVelocity)
@@ -84,9 +63,3 @@ cdef class SwerveDriveKinematics:
     cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1
     cdef int _deltas(self, object start, object end) except -1
     cdef int _read(self, object states, type cls, str what) except -1
-
-
-# Argument helpers shared with the other drivetrain modules (see kinematics.pyx).
-cdef tuple snapshot(object seq, str what)
-cdef double* float64_data(object arr, Py_ssize_t rows, Py_ssize_t cols, bint writable,
-                          str name) except NULL

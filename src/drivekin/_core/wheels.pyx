@@ -2,9 +2,9 @@
 cimport cython
 from libc.math cimport fabs
 
-from drivekin._errors import refuse_delete, type_name
-from drivekin._format import f2
-from drivekin._typedict cimport drivekin_set_type_attr, drivekin_slot_new
+from drivekin._core.errors import refuse_delete, type_name
+from drivekin._core.format import f2
+from drivekin._core.typedict cimport drivekin_set_type_attr, drivekin_slot_new
 
 
 @cython.freelist(64)

@@ -1,0 +1,26 @@
+# Chassis-level value types: (vx, vy, omega) and (ax, ay, alpha) held by value as a vec3_t.
+cimport cython
+from drivekin._core.types cimport rot2_t, vec3_t
+
+
+cdef class _ChassisVector:
+    cdef vec3_t v                # (vx, vy, omega) or (ax, ay, alpha)
+    cdef _ChassisVector _new(self, double x, double y, double z)
+    cdef _rotated_into(self, rot2_t r, _ChassisVector out)
+    cdef _check(self, _ChassisVector other)
+
+@cython.final
+cdef class ChassisVelocities(_ChassisVector):
+    pass
+
+@cython.final
+cdef class ChassisAccelerations(_ChassisVector):
+    pass
+
+
+cdef inline ChassisVelocities new_chassis_velocities(double vx, double vy, double omega):
+    cdef ChassisVelocities o = ChassisVelocities.__new__(ChassisVelocities)
+    o.v.x = vx
+    o.v.y = vy
+    o.v.z = omega
+    return o
