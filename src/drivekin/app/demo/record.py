@@ -37,8 +37,8 @@ from typing import Any
 import numpy as np
 
 from drivekin import Pose2d, SwerveDriveKinematics, Twist2d
-from drivekin.demo.measure import Simulation
-from drivekin.demo.script import DT
+from drivekin.app.demo.measure import Simulation
+from drivekin.app.demo.script import DT
 
 _DT_US = round(DT * 1e6)
 
