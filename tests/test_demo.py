@@ -1,5 +1,5 @@
-"""End-to-end tests of the ``python -m drivekin`` demo (src/drivekin/demo/, command line in
-src/drivekin/__main__.py).
+"""End-to-end tests of the ``python -m drivekin`` demo (src/drivekin/app/demo/, command line
+in src/drivekin/app/cli.py).
 
 Each test runs the demo in a subprocess with the interpreter running the tests, so the
 demo is exercised exactly as a newcomer would start it. The subprocess gets this

@@ -18,8 +18,8 @@ pytest.importorskip("matplotlib")
 import drivekin                                                # noqa: E402
 from drivekin import Pose2d, Rotation2d, SwerveDriveKinematics, Translation2d  # noqa: E402
 from drivekin import SwerveDriveOdometry, datalog, replay     # noqa: E402
-from drivekin.__main__ import main                             # noqa: E402
-from drivekin.demo.drivetrains import DeadWheelDrive           # noqa: E402
+from drivekin.app.cli import main                              # noqa: E402
+from drivekin.app.demo.drivetrains import DeadWheelDrive       # noqa: E402
 import wpilog_logs as W                                        # noqa: E402
 
 _PACKAGE_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(drivekin.__file__)))

@@ -1,5 +1,5 @@
 """Log replay: recompute a robot's odometry from a WPILib DataLog and compare it with the
-pose the robot logged (``python -m drivekin replay``; command line in ``__main__.py``).
+pose the robot logged (``python -m drivekin replay``; command line in ``app/replay_cli.py``).
 
 Steps, for one ``.wpilog`` file (read with :mod:`drivekin.datalog`):
 

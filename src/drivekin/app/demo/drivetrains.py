@@ -32,7 +32,7 @@ from drivekin import (
     Translation2d,
     Twist2d,
 )
-from drivekin.demo.script import DT
+from drivekin.app.demo.script import DT
 
 _cos = math.cos
 _hypot = math.hypot

@@ -37,8 +37,8 @@ from typing import Any
 import numpy as np
 
 from drivekin import Pose2d, SwerveDriveKinematics, Twist2d
-from drivekin.demo.measure import Simulation
-from drivekin.demo.script import DT
+from drivekin.app.demo.measure import Simulation
+from drivekin.app.demo.script import DT
 
 _DT_US = round(DT * 1e6)
 
@@ -132,10 +132,20 @@ def write_log(path: str, rec: dict[str, Any]) -> int:
     return len(rec["series"]) + (rec["kinematics"] is not None)
 
 
+def _matplotlib() -> Any:
+    """matplotlib.pyplot on the Agg backend (as :func:`drivekin.replay.plotReplay` draws)."""
+    try:
+        import matplotlib
+    except ImportError as e:
+        raise ImportError('matplotlib is needed to draw the plot: pip install '
+                          '"drivekin[plot]"') from e
+    matplotlib.use("Agg", force=True)
+    import matplotlib.pyplot as plt
+    return plt
+
+
 def plot_run(path: str, rec: dict[str, Any], title: str) -> None:
     """The demo's PNG: the true and odometry paths, and the odometry's position error."""
-    from drivekin.replay import _matplotlib
-
     plt = _matplotlib()
     series = rec["series"]
     truth = series["/Sim/TruePose"][1]

@@ -12,8 +12,8 @@ from array import array
 
 from drivekin import ChassisVelocities
 from drivekin._core.alloccount import AllocationCounter
-from drivekin.demo.drivetrains import _pose_dict, drivetrain_class
-from drivekin.demo.script import BUDGET_NS, DT, JoystickScript
+from drivekin.app.demo.drivetrains import _pose_dict, drivetrain_class
+from drivekin.app.demo.script import BUDGET_NS, DT, JoystickScript
 
 
 class Simulation:

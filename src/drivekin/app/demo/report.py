@@ -2,8 +2,8 @@
 from __future__ import annotations
 
 import drivekin
-from drivekin.demo.drivetrains import drivetrain_class
-from drivekin.demo.script import BUDGET_NS, DT, JoystickScript
+from drivekin.app.demo.drivetrains import drivetrain_class
+from drivekin.app.demo.script import BUDGET_NS, DT, JoystickScript
 
 
 def header(args, steps: int) -> str:

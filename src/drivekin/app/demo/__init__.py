@@ -1,5 +1,5 @@
 """The ``python -m drivekin`` demo: a simulated 50 Hz drivetrain control loop on the
-allocation-free path (the command line itself is in ``drivekin/__main__.py``).
+allocation-free path (the command line itself is in ``drivekin/app/cli.py``).
 
 The demo drives a swerve, mecanum or differential robot (``--drivetrain``) through a
 scripted joystick sequence for a few minutes of robot time and reports how long each
@@ -63,9 +63,9 @@ Only the standard library and drivekin are used. Drivetrains plug in through
 :data:`DRIVETRAINS`: a :class:`Drivetrain` subclass with ``pose``, ``distance``,
 ``describe()``, ``step(command)`` and optionally ``results()``.
 """
-from drivekin.demo.drivetrains import DRIVETRAINS, VISION_DRIVETRAINS
-from drivekin.demo.measure import run
-from drivekin.demo.report import header, table
-from drivekin.demo.script import DT
+from drivekin.app.demo.drivetrains import DRIVETRAINS, VISION_DRIVETRAINS
+from drivekin.app.demo.measure import run
+from drivekin.app.demo.report import header, table
+from drivekin.app.demo.script import DT
 
 __all__ = ["DRIVETRAINS", "DT", "VISION_DRIVETRAINS", "header", "run", "table"]

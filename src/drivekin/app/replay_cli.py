@@ -1,0 +1,199 @@
+"""``python -m drivekin replay LOG.wpilog ...``: the command line of the log replay in
+:mod:`drivekin.replay` (:mod:`drivekin.app.cli` hands it the arguments after ``replay``).
+
+This module only parses and validates the arguments, reports progress and prints the
+reports; the replay itself is :func:`drivekin.replay.replayLog`.
+"""
+from __future__ import annotations
+
+import argparse
+import importlib.util
+import json
+import math
+import os
+import sys
+import time
+
+from drivekin.app.options import need_extras, number_option
+
+
+def _point(option: str, n: int):
+    """An argparse ``type`` for ``n`` comma-separated finite numbers."""
+    what = {2: "X,Y in m", 3: "X,Y,DEG (m, m, degrees)"}[n]
+
+    def parse(text: str):
+        parts = text.split(",")
+        try:
+            values = tuple(float(p) for p in parts)
+        except ValueError:
+            values = ()
+        if len(values) != n or not all(math.isfinite(v) for v in values):
+            shown = text if len(text) <= 32 else text[:29] + "..."
+            raise argparse.ArgumentTypeError(f"expected {what}, got {shown!r}")
+        return values
+    return parse
+
+
+def build_parser() -> argparse.ArgumentParser:
+    from drivekin.replay import DRIVETRAINS
+
+    p = argparse.ArgumentParser(
+        prog="python -m drivekin replay",
+        description=(
+            "Recompute a robot's odometry from WPILib DataLogs (.wpilog): the gyro and "
+            "wheel or module positions the robot logged go through drivekin's odometry, "
+            "optionally with corrected geometry, and the result is compared with the pose "
+            "the robot logged. Entries are found by type (struct:SwerveModulePosition[], "
+            "struct:MecanumDriveWheelPositions, struct:DifferentialDriveWheelPositions; "
+            "gyro struct:Rotation2d; pose struct:Pose2d) unless named. The odometry is "
+            "updated at every wheel-position sample with the latest gyro sample at or "
+            "before it (or the gyro interpolated, --gyro-align interpolate). For each log "
+            "it prints the drift statistics and writes LOG-replay.wpilog (the original "
+            "entries plus /drivekin/ReplayPose and /drivekin/ReplayError); --plot also "
+            "draws LOG-replay.png. Progress goes to stderr. Exit status: 0 if every log "
+            "was replayed, 1 if any failed, 2 for bad options."),
+        epilog="Example: python -m drivekin replay match.wpilog --wheel-scale 1.02 --plot")
+    p.add_argument("logs", nargs="+", metavar="LOG.wpilog", help="DataLog files to replay")
+    p.add_argument("--drivetrain", choices=("auto",) + DRIVETRAINS, default="auto",
+                   help="drivetrain (default: from the type of the positions entry)")
+    p.add_argument("--positions", metavar="NAME",
+                   help="entry of wheel or module positions (a double[] entry for dead "
+                        "wheels or [left, right])")
+    p.add_argument("--gyro", metavar="NAME",
+                   help="gyro entry: struct:Rotation2d, or double with --gyro-units")
+    p.add_argument("--gyro-units", choices=("rad", "deg"),
+                   help="units of a double gyro entry")
+    p.add_argument("--pose", metavar="NAME", help="the robot's logged pose (struct:Pose2d)")
+    p.add_argument("--truth", metavar="NAME",
+                   help="a second struct:Pose2d entry to compare with (e.g. a simulation's "
+                        "true pose)")
+    p.add_argument("--module", type=_point("--module", 2), action="append", metavar="X,Y",
+                   help="module (swerve) or wheel (mecanum: FL, FR, RL, RR) offset from the "
+                        "robot centre in m, once per module in the log's order; default: "
+                        "the log's SwerveDriveKinematics/MecanumDriveKinematics entry")
+    p.add_argument("--dead-wheel", type=_point("--dead-wheel", 3), action="append",
+                   metavar="X,Y,DEG",
+                   help="dead wheel pose (contact point in m, rolling direction in degrees), "
+                        "once per wheel in the order of the positions array")
+    p.add_argument("--trackwidth", type=number_option(0.0, 100.0, "m", False),
+                   metavar="M", help="differential trackwidth, for --heading wheels")
+    p.add_argument("--heading", choices=("gyro", "wheels"), default="gyro",
+                   help="heading source; 'wheels' (differential only) ignores the gyro")
+    p.add_argument("--wheel-scale", type=number_option(0.0, 10.0, "", False), default=1.0,
+                   metavar="K",
+                   help="multiply every wheel distance by K (true wheel radius / the radius "
+                        "the robot used; default 1)")
+    p.add_argument("--gyro-align", choices=("latest", "interpolate"), default="latest",
+                   help="gyro sample used at each wheel sample (default: latest)")
+    p.add_argument("--start", choices=("logged", "origin"), default="logged",
+                   help="start pose: the logged pose at the first sample (default) or the "
+                        "origin")
+    p.add_argument("--compare", choices=("hold", "interpolate"), default="hold",
+                   help="replayed pose at a logged pose's timestamp: the latest one at or "
+                        "before it, as the robot's getPose() (default), or interpolated")
+    p.add_argument("--ragged", choices=("error", "drop"), default="error",
+                   help="arrays that change length between records: stop (default) or drop "
+                        "the records of other lengths")
+    p.add_argument("--allow-truncated", action="store_true",
+                   help="replay the complete records of a truncated log instead of stopping")
+    p.add_argument("--out-dir", metavar="DIR",
+                   help="folder for the outputs (default: beside each log)")
+    p.add_argument("--no-write", action="store_true",
+                   help="do not write LOG-replay.wpilog")
+    p.add_argument("--plot", action="store_true",
+                   help='draw LOG-replay.png (needs matplotlib: pip install "drivekin[plot]")')
+    p.add_argument("--json", action="store_true",
+                   help="print the results as a JSON list instead of text")
+    return p
+
+
+def _progress(text: str) -> None:
+    print(text, file=sys.stderr, flush=True)
+
+
+def _join_negative_points(argv):
+    """``--module -0.3,0.3``: argparse takes a value starting with '-' for an option, so
+    the value is attached (``--module=-0.3,0.3``) before parsing."""
+    out = []
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        if a in ("--module", "--dead-wheel") and i + 1 < len(argv) \
+                and argv[i + 1].startswith("-") and "," in argv[i + 1]:
+            out.append(f"{a}={argv[i + 1]}")
+            i += 2
+            continue
+        out.append(a)
+        i += 1
+    return out
+
+
+def main(argv) -> int:
+    parser = build_parser()
+    args = parser.parse_args(_join_negative_points(list(argv)))
+    if args.out_dir is not None and not os.path.isdir(args.out_dir):
+        parser.error(f"argument --out-dir: {args.out_dir!r} is not a folder")
+    if args.heading == "wheels" and args.trackwidth is None:
+        parser.error("--heading wheels needs --trackwidth")
+    if importlib.util.find_spec("wpiutil") is None:
+        parser.error('reading .wpilog files needs robotpy-wpiutil: pip install "drivekin[log]"')
+    need_extras(parser, False, args.plot, "", "--plot")
+    from drivekin import datalog, replay
+
+    config = replay.ReplayConfig(
+        drivetrain=args.drivetrain, positions=args.positions, gyro=args.gyro,
+        pose=args.pose, truth=args.truth, gyroUnits=args.gyro_units, modules=args.module,
+        deadWheels=args.dead_wheel, trackwidth=args.trackwidth, heading=args.heading,
+        wheelScale=args.wheel_scale, gyroAlign=args.gyro_align, start=args.start,
+        compare=args.compare,
+        ragged=args.ragged, allowTruncated=args.allow_truncated)
+    failed = 0
+    results = []
+    total = len(args.logs)
+    for i, path in enumerate(args.logs, 1):
+        tag = f"[{i}/{total}] {path}"
+        t0 = time.perf_counter()
+        try:
+            _progress(f"{tag}: reading")
+            log = datalog.read(path, allowTruncated=args.allow_truncated)
+            _progress(f"{tag}: replaying")
+            result = replay.replayLog(log, config)
+            stem = os.path.splitext(os.path.basename(path))[0]
+            folder = args.out_dir if args.out_dir is not None else (os.path.dirname(path) or ".")
+            outputs = []
+            if not args.no_write:
+                out = os.path.join(folder, stem + "-replay.wpilog")
+                _progress(f"{tag}: writing {out}")
+                replay.writeReplayLog(result, out)
+                outputs.append(out)
+            if args.plot:
+                png = os.path.join(folder, stem + "-replay.png")
+                _progress(f"{tag}: plotting {png}")
+                replay.plotReplay(result, png)
+                outputs.append(png)
+        except (datalog.DataLogError, OSError, ValueError, TypeError, ImportError) as e:
+            failed += 1
+            message = str(e) if isinstance(e, datalog.DataLogError) else (
+                f"{e}" if isinstance(e, (OSError, ImportError)) else f"{type(e).__name__}: {e}")
+            if isinstance(e, OSError) and e.filename and str(e.filename) not in message:
+                message = f"{e.filename}: {message}"
+            first = message if message.startswith(path) else f"{path}: {message}"
+            print(f"python -m drivekin replay: error: {first}", file=sys.stderr)
+            continue
+        _progress(f"{tag}: done in {time.perf_counter() - t0:.2f} s "
+                  f"({len(result.t)} samples)")
+        if args.json:
+            d = result.asdict()
+            d["outputs"] = outputs
+            results.append(d)
+        else:
+            if results:
+                print()
+            results.append(result)
+            print(replay.report(result, tuple(outputs)))
+    if args.json:
+        print(json.dumps(results, indent=2))
+    if total > 1:
+        _progress(f"replayed {total - failed} of {total} logs")
+    return 1 if failed else 0
+
