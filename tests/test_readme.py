@@ -1,25 +1,114 @@
-"""Every Python example in the README runs as written."""
+"""Every Python example in README.md and in the docs/*.md pages runs as written; the pages
+link only to files of the repository, and the README's test command is the one CI runs."""
 import pathlib
 import re
 
 import pytest
 
-README = pathlib.Path(__file__).resolve().parents[1] / "README.md"
-BLOCKS = re.findall(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), re.S) \
-    if README.exists() else []
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+DOCS = ROOT / "docs"
+FENCE = re.compile(r"^```python\n(.*?)^```", re.S | re.M)
+
+
+def _pages():
+    pages = [README] if README.exists() else []
+    return pages + (sorted(DOCS.glob("*.md")) if DOCS.is_dir() else [])
+
+
+def _blocks(page):
+    """(first line number, code) of every ```python block of a page."""
+    text = page.read_text(encoding="utf-8")
+    return [(text.count("\n", 0, m.start(1)), m.group(1)) for m in FENCE.finditer(text)]
+
+
+PAGES = _pages()
+CASES = [pytest.param(page, line, code, id=f"{page.relative_to(ROOT).as_posix()}-block{i}")
+         for page in PAGES for i, (line, code) in enumerate(_blocks(page))]
+
+
+def _needs_pages():
+    if not README.exists():
+        pytest.skip("README.md is not next to the tests (installed from an sdist?)")
 
 
 def test_readme_has_examples():
-    if not README.exists():
-        pytest.skip("README.md is not next to the tests (installed from an sdist?)")
-    assert len(BLOCKS) >= 4
+    _needs_pages()
+    assert len(_blocks(README)) >= 4
 
 
-@pytest.mark.parametrize("code", BLOCKS, ids=[f"block{i}" for i in range(len(BLOCKS))])
-def test_readme_example_runs(code):
+def test_docs_have_examples():
+    _needs_pages()
+    docs = [code for page in PAGES if page != README for _, code in _blocks(page)]
+    assert len(docs) >= 9
+
+
+def test_control_loop_example_is_checked():
+    # test_example_runs calls `periodic`; make sure some page still defines it.
+    _needs_pages()
+    assert any(re.search(r"^def periodic\(", code, re.M) for _, _, code in
+               (case.values for case in CASES))
+
+
+@pytest.mark.parametrize("page, line, code", CASES)
+def test_example_runs(page, line, code):
     namespace: dict = {}
-    exec(compile(code, str(README), "exec"), namespace)
+    # Padded so that a traceback names the page's own line numbers.
+    exec(compile("\n" * line + code, str(page), "exec"), namespace)
     if "periodic" in namespace:                      # the allocation-free loop example
         from drivekin import Rotation2d
         pose = namespace["periodic"](0.5, 0.2, 0.1, Rotation2d(0.3))
         assert type(pose).__name__ == "Pose2d"
+
+
+def _slug(heading):
+    """GitHub's anchor for a Markdown heading."""
+    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
+
+
+def _prose(page):
+    """A page's text without its fenced code blocks."""
+    return re.sub(r"^```.*?^```", "", page.read_text(encoding="utf-8"), flags=re.S | re.M)
+
+
+LINK = re.compile(r"\]\(([^)\s]+)\)")
+OUTSIDE = re.compile(r"shared/reference|\.\./\.\.|(?<![\w.~$])/(?:work|home|tmp|usr|root|opt)/")
+
+
+@pytest.mark.parametrize("page", PAGES, ids=[p.relative_to(ROOT).as_posix() for p in PAGES])
+def test_page_refers_only_into_the_repository(page):
+    text = page.read_text(encoding="utf-8")
+    assert not OUTSIDE.search(text), OUTSIDE.search(text).group(0)
+    if not (ROOT / ".git").exists():
+        pytest.skip("not a checkout: an sdist leaves out some linked files")
+    links = LINK.findall(_prose(page))
+    for target in links:
+        if re.match(r"[a-z]+:", target):             # https://…
+            continue
+        path, _, anchor = target.partition("#")
+        dest = (page.parent / path).resolve() if path else page
+        assert dest.is_relative_to(ROOT) and dest.exists(), f"{page.name}: {target}"
+        if anchor:
+            headings = re.findall(r"^#+ (.*)$", _prose(dest), re.M)
+            assert anchor in {_slug(h) for h in headings}, f"{page.name}: {target}"
+    if page.name == "README.md":                     # both READMEs are mostly links
+        assert len(links) >= 8
+
+
+def test_every_docs_page_is_indexed():
+    _needs_pages()
+    index = (DOCS / "README.md").read_text(encoding="utf-8")
+    readme = README.read_text(encoding="utf-8")
+    pages = {p.name for p in DOCS.glob("*.md")} - {"README.md"}
+    assert pages
+    assert [n for n in sorted(pages) if f"]({n})" not in index] == []
+    assert [n for n in sorted(pages) if f"](docs/{n})" not in readme] == []
+
+
+def test_readme_test_command_is_the_ci_command():
+    ci = ROOT / ".ci" / "run"
+    if not ci.exists():
+        pytest.skip(".ci/run is not next to the tests (installed from an sdist?)")
+    command = 'pip install ".[test]" && python -m pytest'
+    assert f"```sh\n{command}\n```" in README.read_text(encoding="utf-8")
+    assert f"\npython -m {command}\n" in ci.read_text(encoding="utf-8")
