@@ -1,5 +1,5 @@
-"""The README's "Coming from robotpy-wpimath" traps, checked against the installed
-robotpy-wpimath 2026 and drivekin: if robotpy changes, the README must change with it."""
+"""The traps of docs/porting.md ("Behaviour that changed"), checked against the installed
+robotpy-wpimath 2026 and drivekin: if robotpy changes, that page must change with it."""
 from __future__ import annotations
 
 import math

@@ -4,6 +4,8 @@ Cython kernels.
 Units are SI throughout (m, m/s, m/s², rad, rad/s, rad/s², s); x forward, y left,
 angles counter-clockwise positive.
 """
+from importlib import metadata as _metadata
+
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.differential import (
     DifferentialDriveKinematics,
@@ -47,7 +49,11 @@ from drivekin.odometry import (
     TwoDeadWheelOdometry,
 )
 
-__version__ = "0.1.0"
+try:
+    # Single source: the version in pyproject.toml, as installed.
+    __version__ = _metadata.version("drivekin")
+except _metadata.PackageNotFoundError:  # a source tree on sys.path without an install
+    __version__ = "0+unknown"
 
 __all__ = [
     "ChassisAccelerations",

@@ -134,7 +134,7 @@ def test_kinematics_pickle_round_trip():
 
 @pytest.mark.parametrize("value", VALUES, ids=IDS)
 def test_repr_is_constructor_like(value):
-    """repr() is constructor-like (README, "Naming"): evaluating it rebuilds the value."""
+    """repr() is constructor-like (docs/porting.md): evaluating it rebuilds the value."""
     r = repr(value)
     assert r.startswith(type(value).__name__ + "(")
     back = eval(r, dict(NAMESPACE))  # noqa: S307 - our own repr
