@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-import test_batch as exact
+from tests.behaviour import test_batch as exact
 from drivekin import (ChassisVelocities, Pose2d, Rotation2d, SwerveDriveKinematics,
                       SwerveDriveOdometry, SwerveModulePosition, SwerveModuleVelocity,
                       Transform2d, Translation2d, Twist2d, batch)

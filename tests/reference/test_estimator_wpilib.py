@@ -36,7 +36,7 @@ from drivekin import (
     Translation2d,
     TwoDeadWheelPoseEstimator,
 )
-from wpilib_port import EPS, JavaRandom, assert_close, trajectory_generator
+from tests._support.wpilib_port import EPS, JavaRandom, assert_close, trajectory_generator
 
 R = Rotation2d
 

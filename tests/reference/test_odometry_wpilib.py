@@ -39,8 +39,8 @@ from drivekin import (
     SwerveModulePosition,
     Translation2d,
 )
-from wpilib_port import (BL, BR, DT, EPS, FL, FR, JavaRandom, assert_close, assert_pose,
-                         trajectory_generator)
+from tests._support.wpilib_port import (BL, BR, DT, EPS, FL, FR, JavaRandom, assert_close,
+                                        assert_pose, trajectory_generator)
 
 
 

@@ -20,7 +20,7 @@ from drivekin import (
     Translation2d,
     TwoDeadWheelOdometry,
 )
-from wpilib_port import DT, JavaRandom, assert_close, trajectory_generator
+from tests._support.wpilib_port import DT, JavaRandom, assert_close, trajectory_generator
 
 X_WHEEL_Y_POS = 1.0
 Y_WHEEL_X_POS = 1.0

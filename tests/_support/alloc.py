@@ -1,8 +1,8 @@
 """The allocation-measuring harness shared by the allocation tests.
 
-Importable from any test module as ``import alloc`` / ``from alloc import ...``
-(``tests/conftest.py`` puts ``tests/`` on ``sys.path``). Its self-tests -- it reports zero for
-an empty loop and does see a deliberately allocating one -- are in ``tests/test_allocation.py``.
+Imported by the test modules as ``from tests._support.alloc import ...``. Its self-tests --
+it reports zero for an empty loop and does see a deliberately allocating one -- are in
+``tests/allocation/test_allocation.py``.
 
 Method: warm up (fills drivekin's freelists, numpy's buffer-info cache, method caches), run
 ``gc.collect()``, then warm up *again*, because ``gc.collect()`` empties CPython's own

@@ -1,8 +1,7 @@
 """Pieces shared by the WPILib JUnit tests restated for drivekin (``tests/reference/``) and
 by the API tests that use WPILib's test robot.
 
-Importable from any test module as ``from wpilib_port import ...`` (``tests/conftest.py``
-puts ``tests/`` on ``sys.path``).
+Imported by the test modules as ``from tests._support.wpilib_port import ...``.
 """
 from __future__ import annotations
 
