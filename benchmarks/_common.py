@@ -6,27 +6,27 @@ Used by ``registry.py`` and ``conftest.py`` for the ``bench_*.py`` files (pytest
 timer), so both measure exactly the same statements on exactly the same inputs. It imports
 none of the other benchmark modules.
 
-drivekin is imported from an installed copy if there is one, else from ``<repo>/src``
-(the in-tree build), so ``PYTHONPATH=src`` is optional when running from the repository.
+drivekin is imported from wherever ``python`` finds it: an installed copy, or the in-place
+build with ``PYTHONPATH=src`` (from the repository root). Nothing here edits ``sys.path``;
+the scripts find these modules because a script's own folder is on ``sys.path``, and pytest
+puts this folder there for ``conftest.py`` and the ``bench_*.py`` files.
 """
 from __future__ import annotations
 
 import itertools
 import os
 import platform
-import sys
 import time
 from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
 from types import SimpleNamespace
 
-REPO = Path(__file__).resolve().parent.parent
-
-try:  # prefer whatever the caller put on sys.path (PYTHONPATH=src, or an installed wheel)
+try:
     import drivekin  # noqa: F401
-except ImportError:  # pragma: no cover - depends on how the script is launched
-    sys.path.insert(0, str(REPO / "src"))
+except ImportError as e:  # pragma: no cover - depends on how the script is launched
+    raise ImportError("the benchmarks need drivekin: install it, or run them from the "
+                      "repository root with PYTHONPATH=src (the in-place build)") from e
 
 # Calls per benchmarked body. Every call under test is sub-microsecond, so each timed body
 # runs the statement INNER times in a local loop; the same count is used for every variant.
