@@ -1,31 +1,32 @@
 """Shared set-up for the drivekin benchmarks: the fixed robot, the fixed inputs, the
 prebuilt robotpy / drivekin argument objects, the loop compiler and the machine description.
 
-Used by ``conftest.py`` and the ``bench_*.py`` files (pytest-benchmark; :func:`bench_tests`
-writes their test functions) and by ``ratio_table.py`` (stand-alone timer), so both measure
-exactly the same statements on exactly the same inputs.
+Used by ``registry.py`` and ``conftest.py`` for the ``bench_*.py`` files (pytest-benchmark;
+``_bench.bench_tests`` writes their test functions) and by ``ratio_table.py`` (stand-alone
+timer), so both measure exactly the same statements on exactly the same inputs. It imports
+none of the other benchmark modules.
 
-drivekin is imported from an installed copy if there is one, else from ``<repo>/src``
-(the in-tree build), so ``PYTHONPATH=src`` is optional when running from the repository.
+drivekin is imported from wherever ``python`` finds it: an installed copy, or the in-place
+build with ``PYTHONPATH=src`` (from the repository root). Nothing here edits ``sys.path``;
+the scripts find these modules because a script's own folder is on ``sys.path``, and pytest
+puts this folder there for ``conftest.py`` and the ``bench_*.py`` files.
 """
 from __future__ import annotations
 
 import itertools
 import os
 import platform
-import sys
 import time
 from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
 from types import SimpleNamespace
 
-REPO = Path(__file__).resolve().parent.parent
-
-try:  # prefer whatever the caller put on sys.path (PYTHONPATH=src, or an installed wheel)
+try:
     import drivekin  # noqa: F401
-except ImportError:  # pragma: no cover - depends on how the script is launched
-    sys.path.insert(0, str(REPO / "src"))
+except ImportError as e:  # pragma: no cover - depends on how the script is launched
+    raise ImportError("the benchmarks need drivekin: install it, or run them from the "
+                      "repository root with PYTHONPATH=src (the in-place build)") from e
 
 # Calls per benchmarked body. Every call under test is sub-microsecond, so each timed body
 # runs the statement INNER times in a local loop; the same count is used for every variant.
@@ -248,40 +249,6 @@ def compile_timer(stmt: str, env: dict):
     ns = dict(env, _rep=itertools.repeat, _clock=time.perf_counter)
     exec(compile(src, f"<timer: {stmt}>", "exec"), ns)
     return ns["_timer"]
-
-
-# ---------------------------------------------------------------------------------------
-# The pytest-benchmark test functions of a bench_<suite>.py file
-
-def bench_tests(*suites: str):
-    """Return ``(test_bench, test_values_agree)`` for the registry suites ``suites``.
-
-    A bench file is then ``test_bench, test_values_agree = bench_tests("chassis")``.
-    ``test_bench`` has three benchmarks per operation in one pytest-benchmark group
-    (robotpy, drivekin façade, drivekin allocation-free path, plus any extra variants; the
-    cases live in registry.py), run by ``pytest benchmarks --benchmark-only`` from the
-    repository root. ``test_values_agree`` is not a benchmark: it is skipped under
-    --benchmark-only and run by a plain ``pytest benchmarks``. The fixtures ``bench_op`` and
-    ``check_op`` come from conftest.py. Each call makes new function objects, so the
-    parametrize marks of one file never leak into another.
-    """
-    import pytest
-
-    import registry
-
-    ops = [op for s in suites for op in registry.suite(s)]
-
-    @pytest.mark.parametrize(
-        "op, variant",
-        [pytest.param(op, v, id=f"{op.key}-{v}") for op in ops for v in op.variants()])
-    def test_bench(bench_op, op, variant):
-        bench_op(op, variant)
-
-    @pytest.mark.parametrize("op", [pytest.param(op, id=op.key) for op in ops])
-    def test_values_agree(check_op, op):
-        check_op(op)
-
-    return test_bench, test_values_agree
 
 
 # ---------------------------------------------------------------------------------------

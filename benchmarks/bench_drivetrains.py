@@ -3,8 +3,8 @@ drivetrains (swerve, mecanum, differential); cases in registry.py.
 
 For odometry, drivekin has one form, so the façade and allocation-free cases time the
 same statement. Run: `pytest benchmarks --benchmark-only` (from the repository root); see
-``_common.bench_tests`` for what is collected.
+``_bench.bench_tests`` for what is collected.
 """
-from _common import bench_tests
+from _bench import bench_tests
 
 test_bench, test_values_agree = bench_tests("mecanum", "differential", "odometry")

@@ -1,8 +1,8 @@
 """Geometry: pose + twist.exp() (cases in registry.py).
 
 Run: `pytest benchmarks --benchmark-only` (from the repository root); see
-``_common.bench_tests`` for what is collected.
+``_bench.bench_tests`` for what is collected.
 """
-from _common import bench_tests
+from _bench import bench_tests
 
 test_bench, test_values_agree = bench_tests("geometry")

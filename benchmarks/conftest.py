@@ -15,6 +15,7 @@ import pytest
 
 from _common import (INNER, INPUTS, build_drivekin, build_drivekin_geometry, build_robotpy,
                      compile_body, kinematics_available)
+from registry import baseline_of, evaluate, reference_value, values_agree
 
 KINEMATICS = kinematics_available()
 
@@ -62,8 +63,6 @@ def bench_op(benchmark, rp, dk):
 def check_op(rp, dk):
     """``check_op(op)``: every variant produces the robotpy baseline's numbers (for a
     drivekin-only operation: its ``expected`` numbers, else its façade's)."""
-    from registry import baseline_of, evaluate, reference_value, values_agree
-
     def run(op):
         _require(op)
         baseline_of(op)                      # a baseline must name a registered case

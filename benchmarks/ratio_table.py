@@ -47,13 +47,11 @@ import sys
 import tempfile
 from pathlib import Path
 
-HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE))
-
-from _common import (INNER, build_drivekin, build_drivekin_geometry, build_robotpy,  # noqa: E402
+# _common and registry are found next to this script (its folder is sys.path[0]).
+from _common import (INNER, build_drivekin, build_drivekin_geometry, build_robotpy,
                      compile_timer, kinematics_available, machine_description)
-from registry import (CALIBRATION, OPERATIONS, VARIANTS, baseline_of,  # noqa: E402
-                      evaluate, reference_value, values_agree, with_baselines)
+from registry import (CALIBRATION, OPERATIONS, VARIANTS, baseline_of, evaluate,
+                      reference_value, values_agree, with_baselines)
 
 
 ROBOTS = ("4-module swerve at (±0.3, ±0.3) m, mecanum with wheels at the same points, "

@@ -21,7 +21,7 @@ plus building ``rp.mkin`` (``wpimath.kinematics.MecanumDriveKinematics``), ``dk.
 ``dk.MecanumDriveWheelVelocities`` (``drivekin.mecanum``) in ``_common.build_robotpy`` /
 ``_add_drivetrains``, and a bench file that collects the suite (``bench_drivetrains.py``
 collects ``mecanum``, ``differential`` and ``odometry``; a new suite's file is
-``test_bench, test_values_agree = _common.bench_tests("<suite>")``). ``ratio_table.py``
+``test_bench, test_values_agree = _bench.bench_tests("<suite>")``). ``ratio_table.py``
 picks new entries up by itself.
 
 **drivekin-only operations** (no robotpy peer: ``robotpy=None``) report absolute times

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Build drivekin with DRIVEKIN_SIMD=1 (drivekin.batch on glibc's libmvec, see setup.py) in a
 # scratch copy of SRC_DIR (default: this repository) and run the batch tests against it:
-# tests/test_batch_simd.py (every SIMD-affected batch function against the per-call API,
-# within the documented bound) and the parts of tests/test_batch.py that do not compare
-# transcendental results bit for bit (argument rules, out=, refusals). Extra arguments go
-# to pytest.
+# tests/behaviour/test_batch_simd.py (every SIMD-affected batch function against the
+# per-call API, within the documented bound) and the parts of tests/behaviour/test_batch.py
+# that do not compare transcendental results bit for bit (argument rules, out=, refusals).
+# Extra arguments go to pytest.
 #   usage: scripts/simd_tests.sh [SRC_DIR [PYTEST_ARGS...]]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -24,7 +24,7 @@ check_import "${run_env[@]}"
 t0=$SECONDS
 status=0
 (cd "$work" && env "${run_env[@]}" "$PYTHON" -m pytest -p no:cacheprovider \
-    tests/test_batch_simd.py tests/test_batch.py -k "simd or bad_arguments or out_is or refusals or empty or wheel_inverse or desaturation" \
+    tests/behaviour/test_batch_simd.py tests/behaviour/test_batch.py -k "simd or bad_arguments or out_is or refusals or empty or wheel_inverse or desaturation" \
     "$@") || status=$?
 echo "batch tests on the SIMD build: $((SECONDS - t0)) s, pytest exit status $status"
 exit "$status"

@@ -5,26 +5,19 @@
   (random seeds, five times the examples: run it while developing to find new
   counter-examples, then pin each one with ``@example``). Pick one with the environment
   variable ``HYPOTHESIS_PROFILE``.
-* ``tests/`` is put on ``sys.path`` so test modules in sub-directories can import the
-  shared helper modules (there are no ``__init__.py`` files in the test tree):
-  ``strategies`` (hypothesis strategies, tolerances, reference models), ``alloc`` (the
-  allocation harness) and ``wpilib_port`` (kEpsilon, JUnit-style ``assert_close`` and
-  WPILib's (±12, ±12) test robot for the ported WPILib tests).
+* The shared helper modules live in the package ``tests._support`` (``strategies``,
+  ``alloc``, ``wpilib_port``, ``wpilog_logs``) and are imported from it by full name;
+  ``tests`` is a package, so nothing edits ``sys.path`` (see ``tests/README.md``).
 * The robotpy-wpimath oracle is optional: ``wpimath_kin`` / ``wpimath_geo`` fixtures and
   :func:`require_wpimath` skip cleanly when it is not installed.
 """
 from __future__ import annotations
 
 import os
-import sys
 import types
 
 import pytest
 from hypothesis import HealthCheck, settings
-
-_TESTS_DIR = os.path.dirname(os.path.abspath(__file__))
-if _TESTS_DIR not in sys.path:
-    sys.path.insert(0, _TESTS_DIR)
 
 # Layout strategies reject ill-conditioned module sets, and a few tests build many
 # objects per example; neither should trip hypothesis' speed heuristics.

@@ -33,7 +33,7 @@ from drivekin import (
     Translation2d,
     Twist2d,
 )
-from wpilib_port import BL, BR, FL, FR
+from tests._support.wpilib_port import BL, BR, FL, FR
 
 ZERO = Rotation2d.kZero
 

@@ -47,8 +47,8 @@ from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 from hypothesis.stateful import initialize
 
-import strategies as S
-import test_odometry_state_machine as base
+from tests._support import strategies as S
+from tests.properties import test_odometry_state_machine as base
 from drivekin import (
     ChassisAccelerations,
     ChassisVelocities,

@@ -16,7 +16,7 @@ import numpy as np
 from hypothesis import assume, example, given
 from hypothesis import strategies as st
 
-import strategies as S
+from tests._support import strategies as S
 from drivekin import (
     ChassisVelocities,
     DifferentialDriveKinematics,

@@ -13,7 +13,7 @@ import pytest
 from hypothesis import assume, example, given
 from hypothesis import strategies as st
 
-import strategies as S
+from tests._support import strategies as S
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 
 RT = 1e-12  # relative tolerance for round trips

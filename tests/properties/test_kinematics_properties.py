@@ -11,7 +11,7 @@ import pytest
 from hypothesis import assume, example, given
 from hypothesis import strategies as st
 
-import strategies as S
+from tests._support import strategies as S
 from drivekin.geometry import Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.kinematics import (
     ChassisVelocities,

@@ -26,7 +26,7 @@ from hypothesis import settings
 from hypothesis import strategies as st
 from hypothesis.stateful import RuleBasedStateMachine, initialize, invariant, rule
 
-import strategies as S
+from tests._support import strategies as S
 from drivekin import (
     DifferentialDriveOdometry,
     MecanumDriveKinematics,

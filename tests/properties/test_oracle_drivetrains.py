@@ -24,7 +24,7 @@ import pytest
 from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
-import strategies as S
+from tests._support import strategies as S
 from drivekin import (
     ChassisVelocities,
     DifferentialDriveKinematics,

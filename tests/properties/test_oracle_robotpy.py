@@ -28,7 +28,7 @@ rk = pytest.importorskip("wpimath.kinematics")
 from hypothesis import assume, example, given  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-import strategies as S  # noqa: E402
+from tests._support import strategies as S  # noqa: E402
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d  # noqa: E402
 from drivekin.kinematics import (  # noqa: E402
     ChassisVelocities,

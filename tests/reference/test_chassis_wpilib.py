@@ -17,7 +17,7 @@ from drivekin import (
     Rotation2d,
     Twist2d,
 )
-from wpilib_port import EPS, assert_close
+from tests._support.wpilib_port import EPS, assert_close
 
 
 def assert_same(expected, actual):

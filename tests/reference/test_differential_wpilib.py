@@ -31,7 +31,7 @@ from drivekin import (
     DifferentialDriveWheelVelocities,
     MecanumDriveWheelPositions,
 )
-from wpilib_port import assert_close
+from tests._support.wpilib_port import assert_close
 
 TRACKWIDTH = 0.381 * 2
 

@@ -6,9 +6,9 @@ at eaf4f0c3).
 
 Differences of form, not of numbers:
 - 2027's ``SplineSample.velocity`` is a robot-relative ChassisSpeeds; robotpy 2026's
-  trajectory state (the generator used here, see test_odometry_wpilib.py) carries speed and
-  curvature, so the chassis velocity is (v, 0, v·curvature), as the older Mecanum test
-  writes it.
+  trajectory state (the generator used here, ``wpilib_port.trajectory_generator``) carries
+  speed and curvature, so the chassis velocity is (v, 0, v·curvature), as the older
+  Mecanum test writes it.
 - 2027's DifferentialDrivePoseEstimator takes no kinematics; the test's kinematics
   (trackwidth 1 m) only turns the chassis velocity into wheel speeds.
 - Upstream's TwoDeadWheelPoseEstimator (after PR #9155) takes a TwoDeadWheelPositions and the
@@ -36,8 +36,7 @@ from drivekin import (
     Translation2d,
     TwoDeadWheelPoseEstimator,
 )
-from test_odometry_wpilib import JavaRandom, trajectory_generator
-from wpilib_port import EPS, assert_close
+from tests._support.wpilib_port import EPS, JavaRandom, assert_close, trajectory_generator
 
 R = Rotation2d
 

@@ -19,7 +19,7 @@ import math
 import numpy as np
 
 from drivekin import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
-from wpilib_port import assert_close
+from tests._support.wpilib_port import assert_close
 
 
 # =========================================================================================

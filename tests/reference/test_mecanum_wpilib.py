@@ -33,7 +33,7 @@ from drivekin import (
     MecanumDriveWheelVelocities,
     Translation2d,
 )
-from wpilib_port import BL, BR, EPS, FL, FR, WHEELS, assert_close
+from tests._support.wpilib_port import BL, BR, EPS, FL, FR, WHEELS, assert_close
 
 
 def assert_wheels(expected, wheels, tol=EPS):

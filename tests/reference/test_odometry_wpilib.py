@@ -12,9 +12,10 @@ The accuracy tests (``test_accuracy_facing_*``) need a spline trajectory as grou
 drivekin has no trajectory generator, so the ground truth comes from robotpy-wpimath 2026's
 ``TrajectoryGenerator.generateTrajectory`` -- the generator these Java tests used until the
 2027 trajectory rewrite (#8172), which renamed the calls but kept the waypoints, config,
-seeds and bounds. The noise is Java's ``java.util.Random(seed).nextGaussian()`` re-implemented
-below (same LCG and polar method; it can differ from Java in the last bit because Java uses
-fdlibm's StrictMath.log). Those tests skip when robotpy-wpimath is not installed.
+seeds and bounds. The noise is Java's ``java.util.Random(seed).nextGaussian()``
+re-implemented in ``wpilib_port.JavaRandom`` (same LCG and polar method; it can differ from
+Java in the last bit because Java uses fdlibm's StrictMath.log). Those tests skip when
+robotpy-wpimath is not installed.
 
 Closed form used by the edge cases: one odometry step from pose (x, y, theta) with twist
 (dx, dy, dtheta) moves by (dx*s - dy*c, dx*c + dy*s) rotated by theta, s = sin(dtheta)/dtheta,
@@ -38,7 +39,8 @@ from drivekin import (
     SwerveModulePosition,
     Translation2d,
 )
-from wpilib_port import BL, BR, EPS, FL, FR, assert_close, assert_pose
+from tests._support.wpilib_port import (BL, BR, DT, EPS, FL, FR, JavaRandom, assert_close,
+                                        assert_pose, trajectory_generator)
 
 
 
@@ -270,9 +272,6 @@ SWERVE_WAYPOINTS = [(0, 0, math.radians(45)), (3, 0, -math.pi / 2), (0, 0, math.
                     (-3, 0, -math.pi / 2), (0, 0, math.radians(45))]
 
 
-DT = 0.02  # s, the accuracy tests' time step
-
-
 def drive_along(odometry, waypoints, seed, step):
     """The accuracy tests' loop. Follows the trajectory through ``waypoints`` (max 0.5 m/s,
     2 m/s²) in steps of DT; at each step ``step(truth, rand)`` (``rand`` = JavaRandom(seed))
@@ -337,52 +336,6 @@ def swerve_accuracy(step):
         odometry, SWERVE_WAYPOINTS, 4915,
         lambda truth, rand: (step(truth, rand, kinematics, modules), modules))
     return odometry.getPose(), mean_error, max_error
-
-
-def trajectory_generator():
-    """Return generate(waypoints, maxV, maxA) backed by robotpy-wpimath, or skip."""
-    geometry = pytest.importorskip("wpimath.geometry")
-    trajectory = pytest.importorskip("wpimath.trajectory")
-
-    def generate(waypoints, max_velocity, max_acceleration):
-        poses = [geometry.Pose2d(x, y, geometry.Rotation2d(theta)) for x, y, theta in waypoints]
-        return trajectory.TrajectoryGenerator.generateTrajectory(
-            poses, trajectory.TrajectoryConfig(max_velocity, max_acceleration))
-
-    return generate
-
-
-class JavaRandom:
-    """java.util.Random: 48-bit LCG, nextDouble from 26 + 27 bits, polar-method Gaussian."""
-
-    _MULT = 0x5DEECE66D
-    _MASK = (1 << 48) - 1
-
-    def __init__(self, seed):
-        self._seed = (seed ^ self._MULT) & self._MASK
-        self._next_next_gaussian = None
-
-    def _next(self, bits):
-        self._seed = (self._seed * self._MULT + 0xB) & self._MASK
-        r = self._seed >> (48 - bits)
-        return r - (1 << 32) if r >= 1 << 31 else r
-
-    def next_double(self):
-        return ((self._next(26) << 27) + self._next(27)) * 2.0 ** -53
-
-    def next_gaussian(self):
-        if self._next_next_gaussian is not None:
-            g, self._next_next_gaussian = self._next_next_gaussian, None
-            return g
-        while True:
-            v1 = 2 * self.next_double() - 1
-            v2 = 2 * self.next_double() - 1
-            s = v1 * v1 + v2 * v2
-            if 0 < s < 1:
-                break
-        multiplier = math.sqrt(-2 * math.log(s) / s)
-        self._next_next_gaussian = v2 * multiplier
-        return v1 * multiplier
 
 
 def test_java_random_matches_jdk():

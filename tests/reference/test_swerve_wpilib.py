@@ -26,7 +26,7 @@ from drivekin import (
     SwerveModuleVelocity,
     Translation2d,
 )
-from wpilib_port import BL, BR, FL, FR, assert_close
+from tests._support.wpilib_port import BL, BR, FL, FR, assert_close
 
 
 @pytest.fixture

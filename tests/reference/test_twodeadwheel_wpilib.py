@@ -5,7 +5,8 @@ equivalent DeadWheelOdometry (forward wheel at (0, xWheelYPos) rolling along 0°
 wheel at (yWheelXPos, 0) rolling along 90°, with a gyro).
 
 The accuracy tests use the spline trajectory and java.util.Random noise of
-test_odometry_wpilib.py (robotpy-wpimath's generator; they skip without it).
+test_odometry_wpilib.py (``wpilib_port.trajectory_generator``, robotpy-wpimath's generator;
+they skip without it, and ``wpilib_port.JavaRandom``).
 """
 import math
 
@@ -19,8 +20,7 @@ from drivekin import (
     Translation2d,
     TwoDeadWheelOdometry,
 )
-from test_odometry_wpilib import DT, JavaRandom, trajectory_generator
-from wpilib_port import assert_close
+from tests._support.wpilib_port import DT, JavaRandom, assert_close, trajectory_generator
 
 X_WHEEL_Y_POS = 1.0
 Y_WHEEL_X_POS = 1.0

@@ -20,7 +20,7 @@ from drivekin import (
     TwoDeadWheelOdometry,
     Twist2d,
 )
-from wpilib_port import EPS, assert_close, assert_pose
+from tests._support.wpilib_port import EPS, assert_close, assert_pose
 
 IN = 0.0254
 SIX = 5e-7     # tolerance for values printed to six decimals

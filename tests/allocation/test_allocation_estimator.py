@@ -1,7 +1,7 @@
 """Allocation tests for the pose estimators' loop: ``updateWithTime`` at 50 Hz with a vision
 measurement every third step, ``sampleAt``, and every estimator's ``updateWithTime``.
 
-The harness is ``tests/alloc.py`` (see ``test_allocation_drivetrains.py``): after a
+The harness is ``tests/_support/alloc.py`` (see ``test_allocation_drivetrains.py``): after a
 warm-up, the measured iterations must make no allocator calls at all (traced peak,
 traced size and ``gc.get_count()[0]`` unchanged, and zero calls counted by
 ``drivekin._core.alloccount``). Time advances through every warm-up and measured run (a
@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from alloc import CALLS, assert_no_allocations
+from tests._support.alloc import CALLS, assert_no_allocations
 from drivekin import (
     DeadWheelKinematics,
     DeadWheelPoseEstimator,

@@ -4,7 +4,7 @@ TwoDeadWheelOdometry), in the style of ``test_allocation_drivetrains.py``.
 After a warm-up, 10 000 iterations of each loop body must make no allocator calls at all:
 tracemalloc's peak and traced size and ``gc.get_count()[0]`` unchanged, and zero
 malloc/calloc/realloc calls counted by ``drivekin._core.alloccount.AllocationCounter`` (harness:
-``tests/alloc.py``). Readings are passed as the list of floats a robot loop would build
+``tests/_support/alloc.py``). Readings are passed as the list of floats a robot loop would build
 once and refill, or as a float64 array (contiguous and strided); ``pose = odo.update(...)``
 and ``toTwist2d`` return objects from drivekin's freelists, which are not allocator calls.
 Each loop alternates two readings so every call integrates (or solves) something new.
@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from alloc import assert_no_allocations
+from tests._support.alloc import assert_no_allocations
 from drivekin import (
     ChassisVelocities,
     DeadWheelKinematics,

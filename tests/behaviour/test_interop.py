@@ -582,7 +582,8 @@ def test_a_broken_wpimath_says_so():
 
 def test_pyproject_has_the_wpimath_extra():
     tomllib = pytest.importorskip("tomllib")
-    path = os.path.join(os.path.dirname(os.path.dirname(__file__)), "pyproject.toml")
+    root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    path = os.path.join(root, "pyproject.toml")  # tests/behaviour/ -> the repository root
     if not os.path.exists(path):
         pytest.skip("not running from a source checkout")
     with open(path, "rb") as f:

@@ -1,5 +1,5 @@
 """drivekin.replay and ``python -m drivekin replay`` on logs written by robotpy-wpiutil
-(tests/wpilog_logs.py: a known simulated path, the robot's own odometry computed by
+(tests/_support/wpilog_logs.py: a known simulated path, the robot's own odometry computed by
 robotpy-wpimath) and by the demo's ``--log``; bad files and options."""
 from __future__ import annotations
 
@@ -20,7 +20,7 @@ from drivekin import Pose2d, Rotation2d, SwerveDriveKinematics, Translation2d  #
 from drivekin import SwerveDriveOdometry, datalog, replay     # noqa: E402
 from drivekin.app.cli import main                              # noqa: E402
 from drivekin.app.demo.drivetrains import DeadWheelDrive       # noqa: E402
-import wpilog_logs as W                                        # noqa: E402
+from tests._support import wpilog_logs as W                    # noqa: E402
 
 _PACKAGE_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(drivekin.__file__)))
 MODULES = [f"{x},{y}" for x, y in W.MODULES]

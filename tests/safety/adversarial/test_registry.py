@@ -9,7 +9,7 @@ import drivekin.protobuf as protobuf
 import drivekin.wpistruct as wpistruct
 import pytest
 
-import registry as reg
+from tests.safety.adversarial import registry as reg
 
 
 def _public_members(cls):

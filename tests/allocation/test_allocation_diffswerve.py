@@ -2,7 +2,7 @@
 
 After a warm-up, 10 000 iterations of each loop body must make no allocator calls at all:
 traced peak, traced size and ``gc.get_count()[0]`` unchanged, and zero
-malloc/calloc/realloc calls counted by ``drivekin._core.alloccount`` (harness: tests/alloc.py).
+malloc/calloc/realloc calls counted by ``drivekin._core.alloccount`` (harness: tests/_support/alloc.py).
 The object-returning façades are included: their results come from drivekin's freelists
 (and the drive-level factor from CPython's float freelist), so they are allocation-free too.
 """
@@ -11,7 +11,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from alloc import assert_no_allocations
+from tests._support.alloc import assert_no_allocations
 from drivekin import (
     DifferentialSwerveModuleKinematics,
     DifferentialSwerveModuleVelocities,

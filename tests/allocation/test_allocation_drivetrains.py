@@ -2,8 +2,8 @@
 
 After a warm-up, 10 000 iterations of each loop body must make no allocator calls at all
 (traced peak, traced size and ``gc.get_count()[0]`` unchanged). The harness is
-``tests/alloc.py`` (shared with ``test_allocation.py``, which also holds its self-tests): it
-warms up again after ``gc.collect()``, so bodies that return floats (``pose.getX()``) from
+``tests/_support/alloc.py`` (shared with ``test_allocation.py``, which also holds its
+self-tests): it warms up again after ``gc.collect()``, so bodies that return floats (``pose.getX()``) from
 CPython's float freelist measure as the zero they are. Objects drawn from a freelist
 (drivekin's Cython freelists, CPython's float freelist) are not allocator calls; that is how
 ``pose = odo.update(...)`` and ``pose.getX()`` stay free.
@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from alloc import assert_no_allocations
+from tests._support.alloc import assert_no_allocations
 from drivekin import (
     ChassisVelocities,
     DifferentialDriveKinematics,

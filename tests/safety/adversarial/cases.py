@@ -22,11 +22,13 @@ import numpy as np
 
 import drivekin
 import drivekin.wpistruct as wpistruct
-import registry as reg
-from registry import (Arr, Bytes, Const, Floats, Int, Num, Obj, Out, OutArr, OutBytes,
-                      OutRawArr, OutSeq, Prop, RawArr, Seq, Type)
-from support import (CLEAN, BadNumber, Boom, Fail, armed_gc, bound, describe, expect_clean,
-                     finite, is_module, label, member_specs, outcome, receiver, short, snap)
+from tests.safety.adversarial import registry as reg
+from tests.safety.adversarial.registry import (Arr, Bytes, Const, Floats, Int, Num, Obj, Out,
+                                               OutArr, OutBytes, OutRawArr, OutSeq, Prop,
+                                               RawArr, Seq, Type)
+from tests.safety.adversarial.support import (CLEAN, BadNumber, Boom, Fail, armed_gc, bound,
+                                              describe, expect_clean, finite, is_module, label,
+                                              member_specs, outcome, receiver, short, snap)
 
 try:
     import wpimath.geometry
@@ -875,7 +877,7 @@ def group_lifecycle():
     cases = {}
     for cls in reg.public_classes():
         if cls in reg.NAMESPACES:
-            continue  # no instances (Units: refused, see tests/test_units.py)
+            continue  # no instances (Units: refused, see tests/behaviour/test_units.py)
         n = cls.__name__
         cases[f"{n} re-init"] = functools.partial(check_reinit, cls, reg.VALID[cls])
         for cname, spec in reg.members(cls):

@@ -32,7 +32,7 @@ from drivekin import (                                         # noqa: E402
     datalog,
 )
 from drivekin.datalog import DataLogError                      # noqa: E402
-from wpilog_logs import robotpy_log                            # noqa: E402
+from tests._support.wpilog_logs import robotpy_log             # noqa: E402
 
 _PACKAGE_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(drivekin.__file__)))
 

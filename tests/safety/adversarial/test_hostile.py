@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-import cases
-import isolate
+from tests.safety.adversarial import cases, isolate
 
 GROUP_IDS = {g: list(make()) for g, make in cases.GROUPS.items()}
 

@@ -9,8 +9,8 @@ import math
 import numpy as np
 
 import drivekin
-import registry as reg
-from registry import ODOMETRY, Const, Prop
+from tests.safety.adversarial import registry as reg
+from tests.safety.adversarial.registry import ODOMETRY, Const, Prop
 
 CLEAN = (TypeError, ValueError)
 

@@ -17,7 +17,7 @@ import pytest
 
 import drivekin
 
-SCRIPT = Path(__file__).resolve().parents[1] / "scripts" / "leakcheck.py"
+SCRIPT = Path(__file__).resolve().parents[2] / "scripts" / "leakcheck.py"  # from tests/safety/
 _PACKAGE_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(drivekin.__file__)))
 
 pytestmark = pytest.mark.skipif(not SCRIPT.is_file(), reason="not a source checkout")

@@ -1,5 +1,5 @@
 """The allocation-free paths really allocate nothing in steady state, and the
-allocation harness (``tests/alloc.py``, shared with ``test_allocation_drivetrains.py``)
+allocation harness (``tests/_support/alloc.py``, shared with ``test_allocation_drivetrains.py``)
 is not vacuous: it reports zero for an empty body and sees deliberately allocating ones.
 
 Method (details in ``alloc.py``): warm up, ``gc.collect()``, warm up again, then start
@@ -13,8 +13,8 @@ import itertools
 import numpy as np
 import pytest
 
-from alloc import (assert_allocation_free, assert_no_allocations, calls_of, count_allocator_calls,
-                   measure, measure_loop)
+from tests._support.alloc import (assert_allocation_free, assert_no_allocations, calls_of,
+                                  count_allocator_calls, measure, measure_loop)
 from drivekin import (
     ChassisVelocities,
     Pose2d,

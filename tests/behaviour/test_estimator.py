@@ -21,7 +21,7 @@ from drivekin import (
     Rotation2d,
     Translation2d,
 )
-from wpilib_port import assert_close, assert_pose
+from tests._support.wpilib_port import assert_close, assert_pose
 
 R = Rotation2d
 

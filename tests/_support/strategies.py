@@ -1,7 +1,6 @@
 """Hypothesis strategies and tolerance helpers shared by the drivekin tests.
 
-Importable from any test module as ``import strategies`` (``tests/conftest.py`` puts
-``tests/`` on ``sys.path``).
+Imported by the test modules as ``from tests._support import strategies as S``.
 
 Raw-number strategies (``*_tuples``, :func:`swerve_layouts`) exist so that the same
 inputs can be fed to drivekin and to the robotpy oracle; the object strategies build

@@ -1,5 +1,5 @@
 """The DRIVEKIN_SIMD=1 build of drivekin.batch (libmvec sin, cos and atan2) against the
-per-call API: tests/test_batch.py's random-data tests run again with its bit-for-bit
+per-call API: tests/behaviour/test_batch.py's random-data tests run again with its bit-for-bit
 comparison replaced by the bound drivekin.batch documents, plus a larger sample with
 non-finite values. Skipped on the default build, where test_batch.py proves bit-identity
 (scripts/simd_tests.sh builds a SIMD copy and runs this file)."""
@@ -10,14 +10,14 @@ import math
 import numpy as np
 import pytest
 
-import test_batch as exact
+from tests.behaviour import test_batch as exact
 from drivekin import (ChassisVelocities, Pose2d, Rotation2d, SwerveDriveKinematics,
                       SwerveDriveOdometry, SwerveModulePosition, SwerveModuleVelocity,
                       Transform2d, Translation2d, Twist2d, batch)
 
 pytestmark = pytest.mark.skipif(
     not batch.SIMD, reason="default build: drivekin.batch is bit-identical to the per-call "
-    "API (tests/test_batch.py); run scripts/simd_tests.sh for the DRIVEKIN_SIMD=1 build")
+    "API (tests/behaviour/test_batch.py); run scripts/simd_tests.sh for the DRIVEKIN_SIMD=1 build")
 
 # The documented bound (drivekin.batch's docstring): a per-sample result differs from the
 # per-call API's by at most RTOL * max(|value|, 1); a replay's poses by at most that per

@@ -2,11 +2,12 @@
 case that caused it.
 
 Parent side: :func:`results` runs every case of a group (once per pytest session) and
-returns {case id: None if it passed, else a message}. The child (this file run as a
-script) reads the case indices to run from stdin and reports ``START <i>`` before case
-``i`` and a JSON result after it; when the child dies or a case exceeds
-``CASE_TIMEOUT``, the open case is recorded as crashed/hung (with the signal and the end
-of stderr) and a new child runs the cases still pending.
+returns {case id: None if it passed, else a message}. The child (this module run as
+``python -m tests.safety.adversarial.isolate`` in the directory that holds ``tests/``)
+reads the case indices to run from stdin and reports ``START <i>`` before case ``i`` and a
+JSON result after it; when the child dies or a case exceeds ``CASE_TIMEOUT``, the open
+case is recorded as crashed/hung (with the signal and the end of stderr) and a new child
+runs the cases still pending.
 """
 from __future__ import annotations
 
@@ -19,8 +20,11 @@ import sys
 import tempfile
 import time
 import traceback
+from pathlib import Path
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+# The directory that holds the ``tests`` package (three above tests/safety/adversarial/): the
+# child runs there, so ``python -m`` finds this module and ``cases`` by their package names.
+ROOT = Path(__file__).resolve().parents[3]
 CASE_TIMEOUT = 20.0
 _cache: dict[str, dict[str, str | None]] = {}
 
@@ -65,9 +69,9 @@ def _child_run(group, indices):
     its own file, so whatever a case prints cannot garble it."""
     with tempfile.NamedTemporaryFile("w+") as rep, tempfile.TemporaryFile("w+") as se:
         env = dict(os.environ, PYTHONFAULTHANDLER="1")
-        proc = subprocess.Popen([sys.executable, __file__, group, rep.name],
+        proc = subprocess.Popen([sys.executable, "-m", __name__, group, rep.name],
                                 stdin=subprocess.PIPE, stdout=se, stderr=se, env=env,
-                                cwd=HERE, text=True)
+                                cwd=ROOT, text=True)
         proc.stdin.write(json.dumps(indices))
         proc.stdin.close()
         current, began = None, time.monotonic()
@@ -95,9 +99,7 @@ def _tail(text, n=12):
 
 
 def _child(group, report, indices):
-    sys.path.insert(0, HERE)
-    sys.path.insert(0, os.path.dirname(HERE))
-    import cases
+    from tests.safety.adversarial import cases
 
     ids = list(cases.GROUPS[group]().items())
     gc.collect()

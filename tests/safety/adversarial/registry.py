@@ -739,7 +739,7 @@ API[DeadWheelPoseEstimator] = _estimator_api(
 class ClockSource(Kind):
     """MathSharedStore's timestamp source: the valid call restores the default clock
     (None); hostile sources are not generated, as a bad clock would only break the other
-    cases run in the same process (tests/test_estimator.py covers them)."""
+    cases run in the same process (tests/behaviour/test_estimator.py covers them)."""
 
     def valid(self):
         return None

@@ -66,7 +66,7 @@ from drivekin.mecanum import (  # noqa: E402
 )
 
 PI = math.pi
-PROTO_ROOT = Path(__file__).parent / "data" / "protobuf"
+PROTO_ROOT = Path(__file__).resolve().parents[1] / "data" / "protobuf"
 GEOMETRY = "wpimath/protobuf/geometry2d.proto"
 KINEMATICS = "wpimath/protobuf/kinematics.proto"
 

@@ -1,8 +1,8 @@
 """The allocation-measuring harness shared by the allocation tests.
 
-Importable from any test module as ``import alloc`` / ``from alloc import ...``
-(``tests/conftest.py`` puts ``tests/`` on ``sys.path``). Its self-tests -- it reports zero for
-an empty loop and does see a deliberately allocating one -- are in ``tests/test_allocation.py``.
+Imported by the test modules as ``from tests._support.alloc import ...``. Its self-tests --
+it reports zero for an empty loop and does see a deliberately allocating one -- are in
+``tests/allocation/test_allocation.py``.
 
 Method: warm up (fills drivekin's freelists, numpy's buffer-info cache, method caches), run
 ``gc.collect()``, then warm up *again*, because ``gc.collect()`` empties CPython's own
@@ -87,7 +87,7 @@ def measure_loop(loop, calls=CALLS, warmup=WARMUP):
 
 def count_allocator_calls(loop, calls=CALLS, warmup=WARMUP):
     """Exact number of PyMem/PyObject malloc/calloc/realloc calls made by ``loop(it)``
-    over ``calls`` items, counted by drivekin's allocator hooks (``_alloccount``) after
+    over ``calls`` items, counted by drivekin's allocator hooks (``drivekin._core.alloccount``) after
     the same warm-ups as :func:`measure_loop`. tracemalloc sees bytes; this sees calls,
     so a block freed and reallocated within one iteration cannot hide."""
     from drivekin._core.alloccount import AllocationCounter
