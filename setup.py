@@ -45,8 +45,9 @@ if trace:
 # computed as before. No -ffast-math, because NaN/inf must propagate exactly as in WPILib.
 compile_args = ["-O3", "-fno-math-errno", "-fno-trapping-math"] if os.name != "nt" else []
 
-modules = ["geometry", "chassis", "swerve", "_core.wheels", "differential", "mecanum",
-           "deadwheel", "diffswerve", "odometry", "estimator", "batch", "_core.alloccount"]
+modules = ["geometry", "chassis", "swerve", "_core.wheels", "_core.drivetrain", "differential",
+           "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "batch",
+           "_core.alloccount"]
 
 
 def simd_options(name):

@@ -52,20 +52,13 @@ import numpy as np
 
 from drivekin._core.types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 from drivekin._core.args cimport check_float64, check_memory
-from drivekin._core.kernels cimport (chassis_discretize_cs, deadwheel_reading, deadwheel_solve,
-                                desaturate_factors, forward_solve, forward_solve_many,
-                                gyro_turn, mat_vec, max_abs, odometry_motion, pose,
-                                pose_transform_by, rot_cs, rot_neg, swerve_ik, swerve_ik_accel,
-                                transform_log_angle, twist_exp_cs, vec, vec_rotate,
-                                wheels_desaturate)
+from drivekin._core.kernels cimport (chassis_discretize_cs, desaturate_factors, gyro_turn,
+                                     max_abs, odometry_motion, pose, pose_transform_by,
+                                     rot_cs, rot_neg, transform_log_angle, twist_exp_cs,
+                                     vec, vec_rotate, wheels_desaturate)
 from drivekin.geometry cimport Translation2d
-from drivekin.swerve cimport SwerveDriveKinematics
-from drivekin.mecanum cimport MecanumDriveKinematics
-from drivekin.differential cimport DifferentialDriveKinematics
-from drivekin.deadwheel cimport DeadWheelKinematics
-from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
-                                MecanumDriveOdometry, SwerveDriveOdometry,
-                                TwoDeadWheelOdometry, _Odometry)
+from drivekin._core.drivetrain cimport Drivetrain
+from drivekin.odometry cimport _Odometry
 from drivekin._core.errors import type_name
 
 cnp.import_array()
@@ -225,152 +218,67 @@ cdef inline void store_poses(Py_ssize_t k, double* o, const double* px, const do
         o[3 * i + 2] = heading[i]
 
 
-cdef int _ready(object k, tuple types, str call) except -1:
-    """Check that ``k`` is a complete object of one of ``types`` (exact types)."""
-    cdef type kind = type(k)
-    if kind is SwerveDriveKinematics and kind in types:
-        (<SwerveDriveKinematics>k)._ready()
-    elif kind is MecanumDriveKinematics and kind in types:
-        (<MecanumDriveKinematics>k)._ready()
-    elif kind is DifferentialDriveKinematics and kind in types:
-        (<DifferentialDriveKinematics>k)._ready()
-    elif kind is DeadWheelKinematics and kind in types:
-        (<DeadWheelKinematics>k)._ready()
-    elif kind in types and issubclass(kind, _Odometry):
-        if not (<_Odometry>k).ready:
-            raise RuntimeError(f"{kind.__name__}.__init__ has not completed")
-    else:
-        raise TypeError(f"{call} takes a drivekin " + ", ".join([t.__name__ for t in types]) +
-                        f" as its first argument, got {type_name(k)}")
-    return 0
+cdef Drivetrain _drivetrain(object k, str call, bint steered_only=False):
+    """``k`` as the drivetrain contract, checked complete (and steered, for the module
+    functions)."""
+    if not isinstance(k, Drivetrain) or (steered_only and not (<Drivetrain>k).steered):
+        from drivekin._core.catalog import names
+        raise TypeError(f"{call} takes a drivekin "
+                        + names("steered" if steered_only else "drivetrain")
+                        + f" as its first argument, got {type_name(k)}")
+    (<Drivetrain>k)._ready()
+    return <Drivetrain>k
+
+
+cdef inline tuple _sample_shape(Py_ssize_t w, bint steered):
+    if steered:
+        return (w, 2)
+    return (w,)
 
 
 # ---------------------------------------------------------------------------------------
 # Inverse kinematics
 
-cdef vec2_t _cor(object centerOfRotation) except *:
-    if centerOfRotation is None:
-        return vec(0.0, 0.0)
-    if not isinstance(centerOfRotation, Translation2d):
+cdef object _inverse(Drivetrain k, object chassis, object omega, object centerOfRotation,
+                     object out, bint accel, str name):
+    """Wheel samples for a chassis stack through the drivetrain contract: module
+    ``[magnitude, rad]`` pairs (steered; velocities use and leave the heading memory,
+    accelerations take ``omega``, the angular velocity) or wheel values."""
+    cdef _Stack v = _stack(chassis, (3,), name)
+    if centerOfRotation is not None and not isinstance(centerOfRotation, Translation2d):
         raise TypeError("centerOfRotation must be a drivekin Translation2d, got "
                         f"{type_name(centerOfRotation)}")
-    return (<Translation2d>centerOfRotation).v
-
-
-cdef object _swerve_inverse(SwerveDriveKinematics k, object chassis, object omega,
-                            object centerOfRotation, object out, bint accel, str name):
-    """Module velocities (accel False; heading memory) or accelerations (accel True;
-    ``omega`` the angular velocity) for a chassis stack, as ``[magnitude, rad]``."""
-    k._ready()
-    cdef _Stack v = _stack(chassis, (3,), name)
-    cdef vec2_t cor = _cor(centerOfRotation)
-    cdef _Stack w = _per_sample(omega, v.n, v.single, "angularVelocity")
-    cdef _Stack o = _result(out, v.n, v.single, (k.n, 2), (v, w), name)
-    cdef Py_ssize_t n = k.n, i, i0, ch, j, kk, count = v.n, m = CHUNK * n
-    # Private copies of the rows and the headings: another thread's call cannot change
-    # them under the loop, and the headings are written back once at the end.
-    cdef double* buf = _scratch(4 * n + 4 * m)
-    cdef double* rx = buf
-    cdef double* ry = buf + n
-    cdef double* hc = buf + 2 * n
-    cdef double* hs = buf + 3 * n
-    cdef double* mag = buf + 4 * n          # a chunk's module magnitudes, cos, sin, angles
+    cdef _Stack w = _per_sample(omega, v.n, v.single, "angularVelocity") if k.steered else None
+    cdef _Stack o = _result(out, v.n, v.single, _sample_shape(k.nwheels, k.steered),
+                            (v, w) if k.steered else (v,), name)
+    cdef Py_ssize_t n = k.nwheels, i, i0, ch, j, kk, count = v.n, m = CHUNK * n
+    k._center(centerOfRotation)
+    # Private copies of the parameters: another thread's call cannot change them under the
+    # loop; the heading memory is written back once at the end (_inverse_done).
+    cdef Py_ssize_t size = k._params(NULL, False, accel)
+    cdef double* buf = _scratch(size + (4 * m if k.steered else 0))
+    cdef double* mag = buf + size           # a chunk's module magnitudes, cos, sin, angles
     cdef double* oc = mag + m
     cdef double* os = oc + m
     cdef double* ang = os + m
-    cdef const double* x
     cdef double* y
-    k._set_cor(cor)
-    for j in range(n):
-        rx[j] = k.rx[j]
-        ry[j] = k.ry[j]
-        hc[j] = k.hc[j]
-        hs[j] = k.hs[j]
+    k._params(buf, False, accel)
     with nogil:
-        for ch in range((count + CHUNK - 1) // CHUNK):
-            i0 = ch * CHUNK
-            kk = chunk_len(i0, count)
-            for i in range(kk):
-                x = v.data + 3 * (i0 + i)
-                if accel:
-                    swerve_ik_accel(n, rx, ry, x[0], x[1], w.data[i0 + i], x[2], mag + n * i,
-                                    oc + n * i, os + n * i)
-                else:
-                    swerve_ik(n, rx, ry, x[0], x[1], x[2], hc, hs, mag + n * i, oc + n * i,
-                              os + n * i)
-            dk_atan2_n(kk * n, os, oc, ang)
-            y = o.data + 2 * n * i0
-            for j in range(kk * n):
-                y[2 * j] = mag[j]
-                y[2 * j + 1] = ang[j]
-    if not accel:
-        for j in range(n):
-            k.hc[j] = hc[j]
-            k.hs[j] = hs[j]
+        if not k.steered:
+            k._inverse_many(count, v.data, NULL, accel, buf, o.data, NULL, NULL)
+        else:
+            for ch in range((count + CHUNK - 1) // CHUNK):
+                i0 = ch * CHUNK
+                kk = chunk_len(i0, count)
+                k._inverse_many(kk, v.data + 3 * i0, w.data + i0, accel, buf, mag, oc, os)
+                dk_atan2_n(kk * n, os, oc, ang)
+                y = o.data + 2 * n * i0
+                for j in range(kk * n):
+                    y[2 * j] = mag[j]
+                    y[2 * j + 1] = ang[j]
+    k._inverse_done(buf, accel)
     PyMem_Free(buf)
     return o.array
-
-
-cdef inline void deadwheel_readings(Py_ssize_t w, const double* rows, const double* x,
-                                    double* y) noexcept nogil:
-    cdef Py_ssize_t j
-    for j in range(w):
-        y[j] = deadwheel_reading(rows + 3 * j, x[0], x[1], x[2])
-
-
-cdef object _wheels_inverse(object kinematics, object chassis, object centerOfRotation,
-                            object out, str name):
-    """Mecanum, differential or dead-wheel readings for a chassis stack (the same map
-    serves velocities and accelerations)."""
-    cdef _Stack v = _stack(chassis, (3,), name)
-    cdef Py_ssize_t i, j, w, count = v.n
-    cdef double m[12]
-    cdef double half
-    cdef const double* x
-    cdef double* y
-    cdef double* rows
-    cdef _Stack o
-    cdef DeadWheelKinematics dk
-    if type(kinematics) is MecanumDriveKinematics:
-        (<MecanumDriveKinematics>kinematics)._set_cor(_cor(centerOfRotation))
-        o = _result(out, count, v.single, (4,), (v,), name)
-        m = (<MecanumDriveKinematics>kinematics).m
-        with nogil:
-            for i in range(count):
-                mat_vec(4, 3, m, v.data + 3 * i, o.data + 4 * i)
-        return o.array
-    if centerOfRotation is not None:
-        raise TypeError(f"{type(kinematics).__name__} has no centre of rotation argument")
-    if type(kinematics) is DifferentialDriveKinematics:
-        o = _result(out, count, v.single, (2,), (v,), name)
-        half = (<DifferentialDriveKinematics>kinematics)._trackwidth / 2.0
-        with nogil:
-            for i in range(count):
-                x = v.data + 3 * i
-                o.data[2 * i] = x[0] - half * x[2]
-                o.data[2 * i + 1] = x[0] + half * x[2]
-        return o.array
-    dk = <DeadWheelKinematics>kinematics
-    w = dk.n
-    o = _result(out, count, v.single, (w,), (v,), name)
-    rows = _scratch(3 * w)
-    for j in range(3 * w):
-        rows[j] = dk.m[j]
-    with nogil:
-        if w == 3:
-            # The common three-wheel layout with a literal size, which the compiler unrolls
-            # (as in the forward direction).
-            for i in range(count):
-                deadwheel_readings(3, rows, v.data + 3 * i, o.data + 3 * i)
-        else:
-            for i in range(count):
-                deadwheel_readings(w, rows, v.data + 3 * i, o.data + w * i)
-    PyMem_Free(rows)
-    return o.array
-
-
-_INVERSE = (SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics,
-            DeadWheelKinematics)
 
 
 def toSwerveModuleVelocities(kinematics, chassisVelocities, centerOfRotation=None,
@@ -379,9 +287,8 @@ def toSwerveModuleVelocities(kinematics, chassisVelocities, centerOfRotation=Non
     ``(3,)`` / ``(N, 3)`` (robot-relative), about ``centerOfRotation`` (a Translation2d,
     m; default the robot centre). The heading memory is used and left as N
     :meth:`SwerveDriveKinematics.toSwerveModuleVelocities` calls would leave it."""
-    _ready(kinematics, (SwerveDriveKinematics,), "toSwerveModuleVelocities")
-    return _swerve_inverse(kinematics, chassisVelocities, 0.0, centerOfRotation, out, False,
-                           "chassisVelocities")
+    return _inverse(_drivetrain(kinematics, "toSwerveModuleVelocities", True),
+                    chassisVelocities, 0.0, centerOfRotation, out, False, "chassisVelocities")
 
 
 def toSwerveModuleAccelerations(kinematics, chassisAccelerations, angularVelocity=0.0,
@@ -390,9 +297,9 @@ def toSwerveModuleAccelerations(kinematics, chassisAccelerations, angularVelocit
     accelerations ``(3,)`` / ``(N, 3)`` ``[ax, ay, alpha]`` while turning at
     ``angularVelocity`` (rad/s; a float or ``(N,)``), as
     :meth:`SwerveDriveKinematics.toSwerveModuleAccelerations`."""
-    _ready(kinematics, (SwerveDriveKinematics,), "toSwerveModuleAccelerations")
-    return _swerve_inverse(kinematics, chassisAccelerations, angularVelocity,
-                           centerOfRotation, out, True, "chassisAccelerations")
+    return _inverse(_drivetrain(kinematics, "toSwerveModuleAccelerations", True),
+                    chassisAccelerations, angularVelocity, centerOfRotation, out, True,
+                    "chassisAccelerations")
 
 
 def toWheelVelocities(kinematics, chassisVelocities, centerOfRotation=None, out=None):
@@ -400,126 +307,58 @@ def toWheelVelocities(kinematics, chassisVelocities, centerOfRotation=None, out=
     ``(N, 4)`` (about ``centerOfRotation``), differential ``(N, 2)`` ``[left, right]``,
     dead-wheel ``(N, W)`` (surface velocities), all m/s; a SwerveDriveKinematics gives
     :func:`toSwerveModuleVelocities`."""
-    _ready(kinematics, _INVERSE, "toWheelVelocities")
-    if type(kinematics) is SwerveDriveKinematics:
-        return _swerve_inverse(kinematics, chassisVelocities, 0.0, centerOfRotation, out,
-                               False, "chassisVelocities")
-    return _wheels_inverse(kinematics, chassisVelocities, centerOfRotation, out,
-                           "chassisVelocities")
+    return _inverse(_drivetrain(kinematics, "toWheelVelocities"), chassisVelocities, 0.0,
+                    centerOfRotation, out, False, "chassisVelocities")
 
 
 def toWheelAccelerations(kinematics, chassisAccelerations, centerOfRotation=None, out=None):
     """Wheel accelerations (m/s²) for chassis accelerations ``(3,)`` / ``(N, 3)``, shaped
     as :func:`toWheelVelocities`; a SwerveDriveKinematics gives
     :func:`toSwerveModuleAccelerations` with zero angular velocity."""
-    _ready(kinematics, _INVERSE, "toWheelAccelerations")
-    if type(kinematics) is SwerveDriveKinematics:
-        return _swerve_inverse(kinematics, chassisAccelerations, 0.0, centerOfRotation, out,
-                               True, "chassisAccelerations")
-    return _wheels_inverse(kinematics, chassisAccelerations, centerOfRotation, out,
-                           "chassisAccelerations")
+    return _inverse(_drivetrain(kinematics, "toWheelAccelerations"), chassisAccelerations,
+                    0.0, centerOfRotation, out, True, "chassisAccelerations")
 
 
 # ---------------------------------------------------------------------------------------
 # Forward kinematics
 
-cdef object _forward(object kinematics, object wheels, object gyro_arg, object out,
+cdef object _forward(Drivetrain k, object wheels, object gyro_arg, object out,
                      bint accel, str name, str gyro_name):
-    cdef Py_ssize_t i, i0, ch, j, kk, m, n, count
-    cdef _Stack w, o, g
-    cdef double* buf
-    cdef double* f
-    cdef double tw
-    cdef double r[4]
-    cdef const double* x
-    cdef DeadWheelKinematics dk
-    cdef SwerveDriveKinematics sk
+    cdef Py_ssize_t i0, ch, j, kk, n = k.nwheels, m = CHUNK * n, count
+    cdef _Stack g = None
     cdef bint gyro = gyro_arg is not None
-    if gyro and type(kinematics) is not DeadWheelKinematics:
-        raise TypeError(f"{gyro_name} is only for DeadWheelKinematics")
-    if type(kinematics) is SwerveDriveKinematics:
-        sk = <SwerveDriveKinematics>kinematics
-        n = sk.n
-        w = _stack(wheels, (n, 2), name)
-        count = w.n
-        o = _result(out, count, w.single, (3,), (w,), name)
-        m = CHUNK * n
-        buf = _scratch(8 * n + 4 * m)
-        f = buf + 4 * m                     # buf: a chunk's magnitudes, angles, cos, sin
-        for j in range(8 * n if accel else 6 * n):
-            f[j] = sk.f2[j] if accel else sk.f1[j]
-        with nogil:
+    cdef const double* x
+    if gyro and not k.gyro_forward:
+        raise TypeError(f"{gyro_name} is not taken by a {type(k).__name__}: only dead "
+                        "wheels fit the heading change to a gyro")
+    cdef _Stack w = _stack(wheels, _sample_shape(n, k.steered), name)
+    count = w.n
+    if k.gyro_forward:
+        k._forward_check(gyro, accel)
+        if gyro:
+            g = _per_sample(gyro_arg, count, w.single, gyro_name)
+    cdef _Stack o = _result(out, count, w.single, (3,), (w,) if g is None else (w, g), name)
+    cdef Py_ssize_t size = k._params(NULL, True, accel)
+    cdef double* buf = _scratch(size + (4 * m if k.steered else 0))
+    cdef double* mag = buf + size           # a chunk's magnitudes, angles, cos, sin
+    cdef double* ang = mag + m
+    cdef double* c = ang + m
+    cdef double* s = c + m
+    k._params(buf, True, accel)
+    with nogil:
+        if not k.steered:
+            k._forward_many(count, w.data, NULL, NULL, NULL if g is None else g.data, accel,
+                            buf, o.data)
+        else:
             for ch in range((count + CHUNK - 1) // CHUNK):
                 i0 = ch * CHUNK
                 kk = chunk_len(i0, count)
                 x = w.data + 2 * n * i0
                 for j in range(kk * n):
-                    buf[j] = x[2 * j]
-                    buf[m + j] = x[2 * j + 1]
-                dk_sincos_n(kk * n, buf + m, buf + 3 * m, buf + 2 * m)
-                for i in range(i0, i0 + kk):
-                    j = n * (i - i0)
-                    if accel:
-                        # The solve's third row (the ω² estimate) is discarded.
-                        forward_solve(4, n, f, buf + j, buf + 2 * m + j, buf + 3 * m + j, r)
-                        o.data[3 * i] = r[0]
-                        o.data[3 * i + 1] = r[1]
-                        o.data[3 * i + 2] = r[3]
-                    else:
-                        forward_solve(3, n, f, buf + j, buf + 2 * m + j, buf + 3 * m + j,
-                                      o.data + 3 * i)
-        PyMem_Free(buf)
-        return o.array
-    if type(kinematics) is MecanumDriveKinematics:
-        w = _stack(wheels, (4,), name)
-        o = _result(out, w.n, w.single, (3,), (w,), name)
-        f = (<MecanumDriveKinematics>kinematics).f
-        count = w.n
-        with nogil:
-            for i in range(count):
-                mat_vec(3, 4, f, w.data + 4 * i, o.data + 3 * i)
-        return o.array
-    if type(kinematics) is DifferentialDriveKinematics:
-        w = _stack(wheels, (2,), name)
-        o = _result(out, w.n, w.single, (3,), (w,), name)
-        tw = (<DifferentialDriveKinematics>kinematics)._trackwidth
-        count = w.n
-        with nogil:
-            for i in range(count):
-                x = w.data + 2 * i
-                o.data[3 * i] = (x[0] + x[1]) / 2.0
-                o.data[3 * i + 1] = 0.0
-                o.data[3 * i + 2] = (x[1] - x[0]) / tw
-        return o.array
-    dk = <DeadWheelKinematics>kinematics
-    n = dk.n
-    w = _stack(wheels, (n,), name)
-    count = w.n
-    if gyro:
-        g = _per_sample(gyro_arg, count, w.single, gyro_name)
-    else:
-        if not dk.heading:
-            dk._need_heading("toChassisAccelerations" if accel else "toChassisVelocities")
-        g = _per_sample(0.0, count, w.single, gyro_name)
-    o = _result(out, count, w.single, (3,), (w, g), name)
-    buf = _scratch(6 * n + 2)
-    for j in range(3 * n):
-        buf[j] = dk.p3[j]
-    for j in range(2 * n):
-        buf[3 * n + j] = dk.p2[j]
-    buf[5 * n] = dk.g[0]
-    buf[5 * n + 1] = dk.g[1]
-    with nogil:
-        if n == 3 and not gyro:
-            # The common three-wheel layout with a literal size: the same kernel, unrolled
-            # by the compiler (same operations in the same order, so the same bits).
-            for i in range(count):
-                deadwheel_solve(3, buf, buf + 9, buf + 15, w.data + 3 * i, False, 0.0,
-                                o.data + 3 * i)
-        else:
-            for i in range(count):
-                deadwheel_solve(n, buf, buf + 3 * n, buf + 5 * n, w.data + n * i, gyro,
-                                g.data[i], o.data + 3 * i)
+                    mag[j] = x[2 * j]
+                    ang[j] = x[2 * j + 1]
+                dk_sincos_n(kk * n, ang, s, c)
+                k._forward_many(kk, mag, c, s, NULL, accel, buf, o.data + 3 * i0)
     PyMem_Free(buf)
     return o.array
 
@@ -529,9 +368,8 @@ def toChassisVelocities(kinematics, wheelVelocities, gyroRates=None, out=None):
     velocities ``(M, 2)`` / ``(N, M, 2)`` ``[m/s, rad]``, or wheel velocities ``(W,)`` /
     ``(N, W)`` of a mecanum, differential or dead-wheel drive. ``gyroRates`` (rad/s, a
     float or ``(N,)``) is the dead-wheel form's optional gyro."""
-    _ready(kinematics, _INVERSE, "toChassisVelocities")
-    return _forward(kinematics, wheelVelocities, gyroRates, out, False, "wheelVelocities",
-                    "gyroRates")
+    return _forward(_drivetrain(kinematics, "toChassisVelocities"), wheelVelocities,
+                    gyroRates, out, False, "wheelVelocities", "gyroRates")
 
 
 def toChassisAccelerations(kinematics, wheelAccelerations, angularAccelerations=None,
@@ -539,9 +377,9 @@ def toChassisAccelerations(kinematics, wheelAccelerations, angularAccelerations=
     """Chassis accelerations ``(3,)`` / ``(N, 3)`` ``[ax, ay, alpha]`` from swerve module
     accelerations ``(M, 2)`` / ``(N, M, 2)`` ``[m/s², rad]`` or wheel accelerations;
     ``angularAccelerations`` (rad/s², a float or ``(N,)``) fixes alpha for dead wheels."""
-    _ready(kinematics, _INVERSE, "toChassisAccelerations")
-    return _forward(kinematics, wheelAccelerations, angularAccelerations, out, True,
-                    "wheelAccelerations", "angularAccelerations")
+    return _forward(_drivetrain(kinematics, "toChassisAccelerations"), wheelAccelerations,
+                    angularAccelerations, out, True, "wheelAccelerations",
+                    "angularAccelerations")
 
 
 # ---------------------------------------------------------------------------------------
@@ -766,20 +604,15 @@ def replay(odometry, gyroAngles, positions, out=None):
     ``[distance m, angle rad]``; MecanumDriveOdometry ``(N, 4)``; DifferentialDriveOdometry
     ``(N, 2)`` ``[left, right]``; TwoDeadWheelOdometry ``(N, 2)`` ``[xWheelPos,
     yWheelPos]``; DeadWheelOdometry ``(N, W)`` (m throughout)."""
-    cdef type kind = type(odometry)
-    cdef tuple inner
-    cdef bint needs_gyro = True
-    _ready(odometry, (SwerveDriveOdometry, MecanumDriveOdometry, DifferentialDriveOdometry,
-                      TwoDeadWheelOdometry, DeadWheelOdometry), "replay")
-    if kind is SwerveDriveOdometry:
-        inner = ((<SwerveDriveOdometry>odometry).kin.n, 2)
-    elif kind is MecanumDriveOdometry:
-        inner = (4,)
-    elif kind is DeadWheelOdometry:
-        inner = ((<DeadWheelOdometry>odometry).kin.n,)
-        needs_gyro = (<DeadWheelOdometry>odometry).gyro
-    else:
-        inner = (2,)
+    if not isinstance(odometry, _Odometry):
+        from drivekin._core.catalog import names
+        raise TypeError(f"replay takes a drivekin {names('odometry')} as its first argument, "
+                        f"got {type_name(odometry)}")
+    cdef _Odometry odo = <_Odometry>odometry
+    if not odo.ready:
+        raise RuntimeError(f"{type(odo).__name__}.__init__ has not completed")
+    cdef tuple inner = _sample_shape(odo.width, odo.steered)
+    cdef bint needs_gyro = odo.gyro
     cdef _Stack p = _stack(positions, inner, "positions", False)
     cdef _Stack g
     if needs_gyro:
@@ -789,12 +622,12 @@ def replay(odometry, gyroAngles, positions, out=None):
         if g.n != p.n:
             raise ValueError(f"gyroAngles has {g.n} samples but positions has {p.n}")
     elif gyroAngles is not None:
-        raise ValueError("this DeadWheelOdometry was constructed without a gyro, so "
+        raise ValueError(f"this {type(odo).__name__} was constructed without a gyro, so "
                          "gyroAngles must be None")
     else:
         g = _per_sample(0.0, p.n, False, "gyroAngles")
     cdef _Stack o = _result(out, p.n, False, (3,), (p, g), "replay")
-    _replay(odometry, kind, p, g, o)
+    _replay(odo, p, g, o)
     return o.array
 
 
@@ -842,35 +675,19 @@ cdef inline pose2_t compose(pose2_t p, pose2_t step) noexcept nogil:
     return pose(vec(p.t.x + d.x, p.t.y + d.y), rot_cs(c * k, s * k))
 
 
-cdef enum:
-    SWERVE, MECANUM, DIFFERENTIAL, TWO_DEAD_WHEELS, DEAD_WHEELS
-
-
-cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) except -1:
+cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
     # The odometry step (the drivetrain's motion, the gyro turn, the pose change and its
     # composition, as in update), restaged per chunk as passes over all its samples: the
-    # gyro turns; the motions (swerve's vectorised, module-major; the other drivetrains
-    # through the class's _motion); for dead wheels without a gyro, the cos/sin of the
-    # solved dθ; the pose changes; then, the only sequential pass, the compositions; then
-    # the headings. Each sample sees exactly the operations of update (tests/test_batch.py
-    # compares the bits; the SIMD build differs as its docstring says).
-    cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = p.width
+    # gyro turns; the motions (the odometry contract's _motions, given a steered
+    # drivetrain's module distances module-major with their directions' cos/sin); for
+    # dead wheels without a gyro, the cos/sin of the solved dθ; the pose changes; then,
+    # the only sequential pass, the compositions; then the headings. Each sample sees
+    # exactly the operations of update (tests/behaviour/test_batch.py compares the bits;
+    # the SIMD build differs as its docstring says).
+    cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = odo.width
     cdef const double* x
-    cdef double r[3]
-    cdef _Odometry odo = odometry
-    cdef SwerveDriveOdometry so = odometry if kind is SwerveDriveOdometry else None
-    cdef MecanumDriveOdometry mo = odometry if kind is MecanumDriveOdometry else None
-    cdef DifferentialDriveOdometry do = odometry if kind is DifferentialDriveOdometry else None
-    cdef TwoDeadWheelOdometry to = odometry if kind is TwoDeadWheelOdometry else None
-    cdef DeadWheelOdometry wo = odometry if kind is DeadWheelOdometry else None
-    cdef int drive = (SWERVE if so is not None else MECANUM if mo is not None else
-                      DIFFERENTIAL if do is not None else TWO_DEAD_WHEELS if to is not None
-                      else DEAD_WHEELS)
-    # Without a gyro (dead wheels only) the heading change is solved with (dx, dy).
-    cdef bint gyro = wo is None or wo.gyro
-    if drive == SWERVE:
-        n = so.kin.n
-    cdef double* buf = _scratch(12 * CHUNK + 2 + 3 * n + 4 * CHUNK * n)
+    cdef bint gyro = odo.gyro
+    cdef double* buf = _scratch(12 * CHUNK + 2 + n + 4 * CHUNK * n)
     cdef double* gc = buf                   # the gyro's cos and sin (CHUNK + 1 each)
     cdef double* gs = gc + CHUNK + 1
     cdef double* tc = gs + CHUNK + 1        # the heading change: cos, sin, angle
@@ -883,12 +700,11 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
     cdef double* pc = py + CHUNK
     cdef double* ps = pc + CHUNK
     cdef double* hd = ps + CHUNK
-    cdef double* dist = hd + CHUNK          # one sample's wheel or module distances
-    cdef double* ang = dist + 3 * n         # swerve: a chunk's module angles, cos, sin and
-    cdef double* mc = ang + CHUNK * n       # distance changes, module-major
+    cdef double* row = hd + CHUNK           # the odometry's scratch (one sample)
+    cdef double* md = row + n               # steered: a chunk's module distances, angles,
+    cdef double* ang = md + CHUNK * n       # cos and sin, module-major
+    cdef double* mc = ang + CHUNK * n
     cdef double* ms = mc + CHUNK * n
-    cdef double* md = ms + CHUNK * n
-    cdef double d, last
     cdef pose2_t step, cur
     with nogil:
         for ch in range((count + CHUNK - 1) // CHUNK):
@@ -897,38 +713,16 @@ cdef int _replay(object odometry, type kind, _Stack p, _Stack g, _Stack o) excep
             my = mx + kk
             if gyro:
                 gyro_turns(kk, g.data + i0, &odo.prev_gyro, gc, gs, tc, ts, dth)
-            if drive == SWERVE:
-                # SwerveDriveOdometry._motion for the whole chunk at once, vectorised across
-                # samples: the distance changes, the modules' cos/sin, the solve for (dx, dy)
-                # (its dθ row is not needed: the gyro gives dθ).
+            if odo.steered:
                 x = p.data + 2 * n * i0
                 for j in range(n):
-                    last = so.prev[j]
                     for i in range(kk):
-                        d = x[2 * (n * i + j)]
-                        md[kk * j + i] = d - last
-                        last = d
+                        md[kk * j + i] = x[2 * (n * i + j)]
                         ang[kk * j + i] = x[2 * (n * i + j) + 1]
-                    so.prev[j] = last
                 dk_sincos_n(kk * n, ang, ms, mc)
-                forward_solve_many(2, n, kk, so.kin.f1, md, mc, ms, mx)
+                odo._motions(kk, md, mc, ms, dth, mx, row)
             else:
-                for i in range(kk):
-                    x = p.data + n * (i0 + i)
-                    if drive == MECANUM:
-                        mo._motion(x, r)
-                    elif drive == DIFFERENTIAL:
-                        do._motion(x[0], x[1], r)
-                    elif drive == TWO_DEAD_WHEELS:
-                        to._motion(x[0], x[1], dth[i], r)
-                    else:
-                        for j in range(n):
-                            dist[j] = x[j]
-                        wo._motion(dist, dth[i] if gyro else 0.0, r)
-                        if not gyro:
-                            dth[i] = r[2]
-                    mx[i] = r[0]
-                    my[i] = r[1]
+                odo._motions(kk, p.data + n * i0, NULL, NULL, dth, mx, row)
             if not gyro:
                 dk_sincos_n(kk, dth, ts, tc)
             # The pose changes (vectorised), then the compositions, the only sequential part.

@@ -1,10 +1,11 @@
 # Dead-wheel (tracking-wheel) kinematics over any number of wheels at any poses.
 cimport cython
+from drivekin._core.drivetrain cimport Drivetrain
 from drivekin.chassis cimport _ChassisVector
 
 
 @cython.final
-cdef class DeadWheelKinematics:
+cdef class DeadWheelKinematics(Drivetrain):
     cdef Py_ssize_t n            # number of wheels
     cdef double* buf             # one allocation holding every array below
     cdef double* m               # n x 3 model rows (cos φ, sin φ, x sin φ − y cos φ)
@@ -17,7 +18,6 @@ cdef class DeadWheelKinematics:
     cdef tuple poses             # the Pose2d objects, constructor order
 
     cdef int _refuse_reinit(self) except -1
-    cdef int _ready(self) except -1
     cdef int _read(self, object values, double* out, str what) except -1
     cdef int _need_heading(self, str call) except -1
     cdef int _forward(self, object values, object gyro, str what, str call,

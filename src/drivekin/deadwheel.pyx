@@ -14,6 +14,7 @@ non-parallel wheels always observe. Redundant wheels are averaged in by the leas
 fit, never ignored. Both pseudo-inverses are built once, at construction.
 """
 cimport cython
+from drivekin._core.drivetrain cimport Drivetrain
 cimport numpy as cnp
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport Py_INCREF
@@ -61,7 +62,15 @@ cdef str parallel_message(double c, double s):
     return f"all wheels are parallel: {what} cannot be observed, even with a gyro"
 
 
-cdef class DeadWheelKinematics:
+cdef inline void readings(Py_ssize_t w, const double* rows, const double* x,
+                          double* y) noexcept nogil:
+    # The w wheels' readings for one chassis vector x.
+    cdef Py_ssize_t j
+    for j in range(w):
+        y[j] = deadwheel_reading(rows + 3 * j, x[0], x[1], x[2])
+
+
+cdef class DeadWheelKinematics(Drivetrain):
     """DeadWheelKinematics(wheelPoses)
 
     Kinematics of N ≥ 2 dead (tracking) wheels. Each wheel is a Pose2d in the robot
@@ -140,6 +149,8 @@ cdef class DeadWheelKinematics:
         if buf == NULL:
             raise MemoryError()
         self.n = n
+        self.nwheels = n
+        self.gyro_forward = True
         self.m = buf
         self.p3 = buf + 3 * n
         self.p2 = buf + 6 * n
@@ -165,6 +176,59 @@ cdef class DeadWheelKinematics:
         if self.buf == NULL:
             raise RuntimeError("DeadWheelKinematics.__init__ has not completed")
         return 0
+
+    # -----------------------------------------------------------------------------------
+    # The drivetrain contract (drivekin._core.drivetrain): W wheels, a gyro optional
+
+    cdef int _forward_check(self, bint gyro, bint accel) except -1:
+        if not gyro and not self.heading:
+            self._need_heading("toChassisAccelerations" if accel else "toChassisVelocities")
+        return 0
+
+    cdef Py_ssize_t _params(self, double* params, bint forward, bint accel) noexcept:
+        # Inverse: the model rows; forward: both pseudo-inverses and the heading shift.
+        cdef Py_ssize_t j, n = self.n
+        if params == NULL:
+            return 5 * n + 2 if forward else 3 * n
+        if not forward:
+            for j in range(3 * n):
+                params[j] = self.m[j]
+            return 3 * n
+        for j in range(3 * n):
+            params[j] = self.p3[j]
+        for j in range(2 * n):
+            params[3 * n + j] = self.p2[j]
+        params[5 * n] = self.g[0]
+        params[5 * n + 1] = self.g[1]
+        return 5 * n + 2
+
+    cdef void _inverse_many(self, Py_ssize_t k, const double* chassis, const double* omega,
+                            bint accel, double* params,
+                            double* m, double* c, double* s) noexcept nogil:
+        cdef Py_ssize_t i, w = self.n
+        if w == 3:
+            # The common three-wheel layout with a literal size, which the compiler unrolls
+            # (as in the forward direction).
+            for i in range(k):
+                readings(3, params, chassis + 3 * i, m + 3 * i)
+        else:
+            for i in range(k):
+                readings(w, params, chassis + 3 * i, m + w * i)
+
+    cdef void _forward_many(self, Py_ssize_t k, const double* m, const double* c,
+                            const double* s, const double* gyro, bint accel,
+                            const double* params, double* out) noexcept nogil:
+        cdef Py_ssize_t i, n = self.n
+        if n == 3 and gyro == NULL:
+            # The common three-wheel layout with a literal size: the same kernel, unrolled
+            # by the compiler (same operations in the same order, so the same bits).
+            for i in range(k):
+                deadwheel_solve(3, params, params + 9, params + 15, m + 3 * i, False, 0.0,
+                                out + 3 * i)
+        else:
+            for i in range(k):
+                deadwheel_solve(n, params, params + 3 * n, params + 5 * n, m + n * i,
+                                gyro != NULL, gyro[i] if gyro != NULL else 0.0, out + 3 * i)
 
     cdef int _need_heading(self, str call) except -1:
         raise ValueError(f"{call} needs a gyro with this layout: {self.no_heading}")

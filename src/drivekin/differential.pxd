@@ -1,5 +1,6 @@
 # Differential (tank) drive kinematics and its wheel values (w[0] = left, w[1] = right).
 cimport cython
+from drivekin._core.drivetrain cimport Drivetrain
 from drivekin._core.wheels cimport _WheelValues
 
 
@@ -19,6 +20,5 @@ cdef class DifferentialDriveWheelAccelerations(_Wheel2):
     pass
 
 @cython.final
-cdef class DifferentialDriveKinematics:
+cdef class DifferentialDriveKinematics(Drivetrain):
     cdef double _trackwidth      # m, distance between the left and right wheels
-    cdef int _ready(self) except -1

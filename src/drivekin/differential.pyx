@@ -4,6 +4,7 @@ Units: m, m/s, m/s², rad, rad/s, rad/s². The model is the same as Road Runner'
 ``TankKinematics``: v_left = vx − ω·W/2, v_right = vx + ω·W/2, with W the trackwidth.
 """
 cimport cython
+from drivekin._core.drivetrain cimport Drivetrain
 from libc.math cimport isfinite
 
 from drivekin._core.wheels cimport _WheelValues, install_bare_new
@@ -144,7 +145,7 @@ cdef inline DifferentialDriveWheelVelocities new_wheel_velocities(double l, doub
 
 
 # ---------------------------------------------------------------------------------------
-cdef class DifferentialDriveKinematics:
+cdef class DifferentialDriveKinematics(Drivetrain):
     """DifferentialDriveKinematics(trackwidth)
 
     Kinematics of a differential drive whose left and right wheels are ``trackwidth`` m
@@ -158,6 +159,7 @@ cdef class DifferentialDriveKinematics:
                             "trackwidth is read-only): __init__ cannot be called again")
         if not (isfinite(trackwidth) and trackwidth > 0.0):
             raise ValueError(f"trackwidth must be a positive finite distance in m, got {trackwidth!r}")
+        self.nwheels = 2
         self._trackwidth = trackwidth
 
     cdef int _ready(self) except -1:
@@ -165,6 +167,37 @@ cdef class DifferentialDriveKinematics:
         if self._trackwidth == 0.0:
             raise RuntimeError("DifferentialDriveKinematics.__init__ has not completed")
         return 0
+
+    # -----------------------------------------------------------------------------------
+    # The drivetrain contract (drivekin._core.drivetrain): [left, right] wheels
+
+    cdef Py_ssize_t _params(self, double* params, bint forward, bint accel) noexcept:
+        if params != NULL:
+            params[0] = self._trackwidth
+        return 1
+
+    cdef void _inverse_many(self, Py_ssize_t k, const double* chassis, const double* omega,
+                            bint accel, double* params,
+                            double* m, double* c, double* s) noexcept nogil:
+        cdef Py_ssize_t i
+        cdef double half = params[0] / 2.0
+        cdef const double* x
+        for i in range(k):
+            x = chassis + 3 * i
+            m[2 * i] = x[0] - half * x[2]
+            m[2 * i + 1] = x[0] + half * x[2]
+
+    cdef void _forward_many(self, Py_ssize_t k, const double* m, const double* c,
+                            const double* s, const double* gyro, bint accel,
+                            const double* params, double* out) noexcept nogil:
+        cdef Py_ssize_t i
+        cdef double tw = params[0]
+        cdef const double* x
+        for i in range(k):
+            x = m + 2 * i
+            out[3 * i] = (x[0] + x[1]) / 2.0
+            out[3 * i + 1] = 0.0
+            out[3 * i + 2] = (x[1] - x[0]) / tw
 
     @property
     def trackwidth(self):

@@ -5,6 +5,7 @@ rear left, rear right. For a wheel at (x, y) relative to the centre of rotation 
 inverse rows are FL/RR ``[1, −1, −(x + y)]`` and FR/RL ``[1, 1, x − y]``.
 """
 cimport cython
+from drivekin._core.drivetrain cimport Drivetrain
 from libc.math cimport isfinite
 
 import numpy as np
@@ -184,7 +185,7 @@ cdef inline void inverse_rows(const double* wx, const double* wy, vec2_t cor,
             m[3 * i + 2] = x - y
 
 
-cdef class MecanumDriveKinematics:
+cdef class MecanumDriveKinematics(Drivetrain):
     """MecanumDriveKinematics(frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
 
     Kinematics of a mecanum drive with the four wheel positions (Translation2d, m, robot
@@ -221,6 +222,7 @@ cdef class MecanumDriveKinematics:
         self.cor = vec(0.0, 0.0)
         for i in range(12):
             self.f[i] = f[i // 4, i % 4]
+        self.nwheels = 4
         self.wheels = wheels                    # last: what every method checks
 
     cdef int _ready(self) except -1:
@@ -248,6 +250,36 @@ cdef class MecanumDriveKinematics:
             raise TypeError(f"centerOfRotation must be a Translation2d, got {type_name(cor)}")
         self._set_cor((<Translation2d>cor).v)
         mat_vec(4, 3, self.m, x, out)
+
+    # -----------------------------------------------------------------------------------
+    # The drivetrain contract (drivekin._core.drivetrain): four wheels, one 4 x 3 map
+
+    cdef int _center(self, object centerOfRotation) except -1:
+        self._set_cor((<Translation2d>centerOfRotation).v if centerOfRotation is not None
+                      else vec(0.0, 0.0))
+        return 0
+
+    cdef Py_ssize_t _params(self, double* params, bint forward, bint accel) noexcept:
+        # The same matrices serve velocities and accelerations (no centripetal term).
+        cdef Py_ssize_t j
+        if params != NULL:
+            for j in range(12):
+                params[j] = self.f[j] if forward else self.m[j]
+        return 12
+
+    cdef void _inverse_many(self, Py_ssize_t k, const double* chassis, const double* omega,
+                            bint accel, double* params,
+                            double* m, double* c, double* s) noexcept nogil:
+        cdef Py_ssize_t i
+        for i in range(k):
+            mat_vec(4, 3, params, chassis + 3 * i, m + 4 * i)
+
+    cdef void _forward_many(self, Py_ssize_t k, const double* m, const double* c,
+                            const double* s, const double* gyro, bint accel,
+                            const double* params, double* out) noexcept nogil:
+        cdef Py_ssize_t i
+        for i in range(k):
+            mat_vec(3, 4, params, m + 4 * i, out + 3 * i)
 
     def getFrontLeft(self):
         """Return the front-left wheel position (Translation2d, m)."""

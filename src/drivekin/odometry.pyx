@@ -13,7 +13,8 @@ from cpython.mem cimport PyMem_Free, PyMem_Malloc
 
 from drivekin._core.types cimport pose2_t, rot2_t
 from drivekin._core.wheels cimport _WheelValues
-from drivekin._core.kernels cimport (deadwheel_solve, forward_solve, gyro_turn, mat_vec,
+from drivekin._core.kernels cimport (deadwheel_solve, forward_solve, forward_solve_many,
+                                     gyro_turn, mat_vec,
                                 odometry_move, odometry_move_cs, odometry_step, pose,
                                 rot_radians, rot_xy, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
@@ -71,6 +72,10 @@ cdef class _Odometry:
             uninitialised(self)
         self.pose.r = rotation.r
 
+    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
+                       double* dth, double* mxy, double* scratch) noexcept nogil:
+        pass
+
 
 cdef class SwerveDriveOdometry(_Odometry):
     """SwerveDriveOdometry(kinematics, gyroAngle, modulePositions, initialPose=Pose2d())
@@ -96,6 +101,9 @@ cdef class SwerveDriveOdometry(_Odometry):
             prev[i] = kinematics.s0[i]
         self.prev = prev
         self.kin = kinematics
+        self.width = kinematics.n
+        self.steered = True
+        self.gyro = True
         self.prev_gyro = gyroAngle.r
         self.pose = p
         self.ready = True
@@ -140,6 +148,21 @@ cdef class SwerveDriveOdometry(_Odometry):
             self.prev[i] = d
         forward_solve(3, self.kin.n, self.kin.f1, dist, c, s, r)
 
+    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
+                       double* dth, double* mxy, double* scratch) noexcept nogil:
+        # Module-major, so both loops vectorise across samples: the distance changes,
+        # then the solve for (dx, dy) (its dθ row is not needed: the gyro gives dθ).
+        cdef Py_ssize_t i, j, n = self.kin.n
+        cdef double d, last
+        for j in range(n):
+            last = self.prev[j]
+            for i in range(k):
+                d = x[k * j + i]
+                x[k * j + i] = d - last
+                last = d
+            self.prev[j] = last
+        forward_solve_many(2, n, k, self.kin.f1, x, c, s, mxy)
+
 
 cdef class MecanumDriveOdometry(_Odometry):
     """MecanumDriveOdometry(kinematics, gyroAngle, wheelPositions, initialPose=Pose2d())
@@ -154,6 +177,8 @@ cdef class MecanumDriveOdometry(_Odometry):
         self.pose = initial(initialPose)
         self.kin = kinematics
         self.prev = (<_WheelValues>wheelPositions).w
+        self.width = 4
+        self.gyro = True
         self.prev_gyro = gyroAngle.r
         self.ready = True
 
@@ -190,6 +215,15 @@ cdef class MecanumDriveOdometry(_Odometry):
             self.prev[i] = w[i]
         mat_vec(3, 4, self.kin.f, d, r)
 
+    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
+                       double* dth, double* mxy, double* scratch) noexcept nogil:
+        cdef Py_ssize_t i
+        cdef double r[3]
+        for i in range(k):
+            self._motion(x + 4 * i, r)
+            mxy[i] = r[0]
+            mxy[k + i] = r[1]
+
 
 cdef class DifferentialDriveOdometry(_Odometry):
     """DifferentialDriveOdometry(gyroAngle, leftDistance, rightDistance, initialPose=Pose2d())
@@ -204,6 +238,8 @@ cdef class DifferentialDriveOdometry(_Odometry):
         self.pose = initial(initialPose)
         self.prev_l = leftDistance
         self.prev_r = rightDistance
+        self.width = 2
+        self.gyro = True
         self.prev_gyro = gyroAngle.r
         self.ready = True
 
@@ -240,6 +276,15 @@ cdef class DifferentialDriveOdometry(_Odometry):
         r[0] = (dl + dr) / 2.0
         r[1] = 0.0
 
+    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
+                       double* dth, double* mxy, double* scratch) noexcept nogil:
+        cdef Py_ssize_t i
+        cdef double r[3]
+        for i in range(k):
+            self._motion(x[2 * i], x[2 * i + 1], r)
+            mxy[i] = r[0]
+            mxy[k + i] = r[1]
+
 
 cdef class TwoDeadWheelOdometry(_Odometry):
     """TwoDeadWheelOdometry(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose=Pose2d())
@@ -264,6 +309,8 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         self.y_wheel_x = yWheelXPos
         self.prev_x = xWheelPos
         self.prev_y = yWheelPos
+        self.width = 2
+        self.gyro = True
         self.prev_gyro = gyroAngle.r
         self.ready = True
 
@@ -300,6 +347,15 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         r[1] = yWheelPos - self.prev_y - dtheta * self.y_wheel_x
         self.prev_x = xWheelPos
         self.prev_y = yWheelPos
+
+    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
+                       double* dth, double* mxy, double* scratch) noexcept nogil:
+        cdef Py_ssize_t i
+        cdef double r[3]
+        for i in range(k):
+            self._motion(x[2 * i], x[2 * i + 1], dth[i], r)
+            mxy[i] = r[0]
+            mxy[k + i] = r[1]
 
     def toChassisVelocities(self, double vx, double vy, double omega):
         """Return the robot velocity from the forward wheel's and left wheel's surface
@@ -346,6 +402,7 @@ cdef class DeadWheelOdometry(_Odometry):
             raise
         self.prev = prev
         self.kin = kinematics
+        self.width = kinematics.n
         self.gyro = gyroAngle is not None
         if self.gyro:
             self.prev_gyro = (<Rotation2d>gyroAngle).r
@@ -414,3 +471,17 @@ cdef class DeadWheelOdometry(_Odometry):
             self.prev[i] = d
         deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, self.gyro,
                         dtheta, r)
+
+    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
+                       double* dth, double* mxy, double* scratch) noexcept nogil:
+        # _motion turns the distances into changes in place: a copy of each row.
+        cdef Py_ssize_t i, j, n = self.width
+        cdef double r[3]
+        for i in range(k):
+            for j in range(n):
+                scratch[j] = x[n * i + j]
+            self._motion(scratch, dth[i] if self.gyro else 0.0, r)
+            if not self.gyro:
+                dth[i] = r[2]
+            mxy[i] = r[0]
+            mxy[k + i] = r[1]

@@ -2,6 +2,7 @@
 # value (the angle is a rot2_t, not a Rotation2d object), so results can be written in
 # place without creating Python objects.
 cimport cython
+from drivekin._core.drivetrain cimport Drivetrain
 from drivekin._core.types cimport rot2_t, vec2_t
 from drivekin.chassis cimport ChassisVelocities
 from drivekin.geometry cimport Translation2d
@@ -40,7 +41,7 @@ cdef inline SwerveModulePosition new_module_position(double d, rot2_t a):
 
 
 @cython.final
-cdef class SwerveDriveKinematics:
+cdef class SwerveDriveKinematics(Drivetrain):
     cdef Py_ssize_t n            # number of modules
     cdef double* buf             # one allocation holding every array below
     cdef double* mx              # module x, m (robot frame)
@@ -57,7 +58,6 @@ cdef class SwerveDriveKinematics:
     cdef vec2_t cor              # centre of rotation the rx/ry rows were built for, m
     cdef tuple modules           # the Translation2d objects, constructor order
 
-    cdef int _ready(self) except -1
     cdef int _refuse_reinit(self) except -1
     cdef void _set_cor(self, vec2_t cor) noexcept
     cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1

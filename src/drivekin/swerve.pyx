@@ -8,6 +8,7 @@ owned by the caller. Kinematics objects carry heading memory and are not thread-
 (as in WPILib); every method runs with the GIL held, so a call is never interleaved.
 """
 cimport cython
+from drivekin._core.drivetrain cimport Drivetrain
 cimport numpy as cnp
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport Py_INCREF, PyObject
@@ -336,7 +337,7 @@ cdef void store_modules(object fast, double* d, Py_ssize_t n, const double* m,
 
 
 # ---------------------------------------------------------------------------------------
-cdef class SwerveDriveKinematics:
+cdef class SwerveDriveKinematics(Drivetrain):
     """SwerveDriveKinematics(*moduleTranslations)
 
     Kinematics of a swerve drive with N ≥ 2 modules at the given robot-relative
@@ -404,6 +405,8 @@ cdef class SwerveDriveKinematics:
         if buf == NULL:
             raise MemoryError()
         self.n = n
+        self.nwheels = n
+        self.steered = True
         self.modules = mods
         self.mx = buf
         self.my = self.mx + n
@@ -500,6 +503,69 @@ cdef class SwerveDriveKinematics:
                 self.rx[i] = self.mx[i] - cor.x
                 self.ry[i] = self.my[i] - cor.y
             self.cor = cor
+
+    # -----------------------------------------------------------------------------------
+    # The drivetrain contract (drivekin._core.drivetrain): a steered drivetrain of n modules
+
+    cdef int _center(self, object centerOfRotation) except -1:
+        self._set_cor((<Translation2d>centerOfRotation).v if centerOfRotation is not None
+                      else vec(0.0, 0.0))
+        return 0
+
+    cdef Py_ssize_t _params(self, double* params, bint forward, bint accel) noexcept:
+        # Inverse: the CoR rows and the heading memory; forward: the pseudo-inverse.
+        cdef Py_ssize_t j, n = self.n, count = (8 if accel else 6) * n if forward else 4 * n
+        if params == NULL:
+            return count
+        if forward:
+            for j in range(count):
+                params[j] = self.f2[j] if accel else self.f1[j]
+            return count
+        for j in range(n):
+            params[j] = self.rx[j]
+            params[n + j] = self.ry[j]
+            params[2 * n + j] = self.hc[j]
+            params[3 * n + j] = self.hs[j]
+        return count
+
+    cdef void _inverse_many(self, Py_ssize_t k, const double* chassis, const double* omega,
+                            bint accel, double* params,
+                            double* m, double* c, double* s) noexcept nogil:
+        cdef Py_ssize_t i, n = self.n
+        cdef const double* x
+        for i in range(k):
+            x = chassis + 3 * i
+            if accel:
+                swerve_ik_accel(n, params, params + n, x[0], x[1], omega[i], x[2], m + n * i,
+                                c + n * i, s + n * i)
+            else:
+                swerve_ik(n, params, params + n, x[0], x[1], x[2], params + 2 * n,
+                          params + 3 * n, m + n * i, c + n * i, s + n * i)
+
+    cdef void _inverse_done(self, const double* params, bint accel) noexcept:
+        # The velocity map leaves the heading memory as that many calls would.
+        cdef Py_ssize_t j, n = self.n
+        if not accel:
+            for j in range(n):
+                self.hc[j] = params[2 * n + j]
+                self.hs[j] = params[3 * n + j]
+
+    cdef void _forward_many(self, Py_ssize_t k, const double* m, const double* c,
+                            const double* s, const double* gyro, bint accel,
+                            const double* params, double* out) noexcept nogil:
+        cdef Py_ssize_t i, j, n = self.n
+        cdef double r[4]
+        for i in range(k):
+            j = n * i
+            if accel:
+                # The solve's third row (the ω² estimate) is discarded.
+                forward_solve(4, n, params, m + j, c + j, s + j, r)
+                out[3 * i] = r[0]
+                out[3 * i + 1] = r[1]
+                out[3 * i + 2] = r[3]
+            else:
+                forward_solve(3, n, params, m + j, c + j, s + j, out + 3 * i)
+
 
     cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1:
         # Exact zero returns the remembered headings without looking at the CoR.

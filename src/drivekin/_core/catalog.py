@@ -1,0 +1,435 @@
+"""The catalog: one registration per public class, holding everything the integrations
+need to know about it, so that adding a type touches its own module and its entry here.
+
+Each :class:`Entry` gives the class's kind and drivetrain, and, where they exist:
+
+* its **wire form**: the doubles of a value in WPILib's member order (``flatten``) and
+  the constructor from them (``build``), which both serializations use;
+* its **struct** type (name, schema, nested types; :mod:`drivekin.wpistruct`);
+* its **protobuf** message (name, file, fields; :mod:`drivekin.protobuf`);
+* its **robotpy-wpimath 2026 peer** (class names and the two exact converters;
+  :mod:`drivekin.interop`), or why there is none;
+* for an odometry class, the **log entry type** of its position samples, by which
+  :mod:`drivekin.replay` recognises a drivetrain in a log.
+
+``tests/api/test_catalog.py`` fails, naming the class, when a public class of drivekin
+has no entry. The test registries (adversarial suite, allocation tests, leak check,
+benchmarks) take their lists of drivetrains from here.
+"""
+from __future__ import annotations
+
+import operator
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any, Optional
+
+import drivekin as _dk
+from drivekin.chassis import ChassisAccelerations, ChassisVelocities
+from drivekin.deadwheel import DeadWheelKinematics
+from drivekin.differential import (
+    DifferentialDriveKinematics,
+    DifferentialDriveWheelAccelerations,
+    DifferentialDriveWheelPositions,
+    DifferentialDriveWheelVelocities,
+)
+from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
+from drivekin.geometry import _rotation_from_cos_sin  # type: ignore[attr-defined]
+from drivekin.mecanum import (
+    MecanumDriveKinematics,
+    MecanumDriveWheelAccelerations,
+    MecanumDriveWheelPositions,
+    MecanumDriveWheelVelocities,
+)
+from drivekin.swerve import (
+    SwerveDriveKinematics,
+    SwerveModuleAcceleration,
+    SwerveModulePosition,
+    SwerveModuleVelocity,
+)
+
+GEOMETRY2D_FILE = "wpimath/protobuf/geometry2d.proto"
+KINEMATICS_FILE = "wpimath/protobuf/kinematics.proto"
+
+#: A protobuf field: (name, number, message type or None for a double, repeated).
+Field = tuple[str, int, Optional[str], bool]
+
+
+@dataclass(frozen=True)
+class Struct:
+    """A WPILib struct type. ``repeated``: one type per count N, ``name__N`` with the
+    schema ``"<schema>[N]"`` (SwerveDriveKinematics); ``count`` doubles per value (per
+    repeated member)."""
+    name: str
+    schema: str
+    count: int
+    nested: tuple[type, ...] = ()
+    repeated: bool = False
+
+
+@dataclass(frozen=True)
+class Proto:
+    """A WPILib protobuf message: its file, its place in that file (WPILib's declaration
+    order, which the descriptors keep) and its fields."""
+    message: str
+    file: str
+    index: int
+    fields: tuple[Field, ...]
+
+
+@dataclass(frozen=True)
+class Peer:
+    """The robotpy-wpimath 2026 class(es) of the same meaning: ``module`` is
+    ``wpimath.<module>``; ``to(obj, wpimath)`` and ``frm(obj)`` convert exactly."""
+    module: str
+    names: tuple[str, ...]
+    to: Callable[[Any, Any], Any]
+    frm: Callable[[Any], Any]
+
+
+@dataclass(frozen=True)
+class Entry:
+    cls: type
+    kind: str                      # "value", "kinematics", "odometry", "estimator", "helper"
+    drivetrain: str | None = None  # "swerve", "mecanum", "differential", "deadwheel", ...
+    flatten: Callable[[Any], tuple[float, ...]] | None = None
+    build: Callable[..., Any] | None = None
+    struct: Struct | None = None
+    proto: Proto | None = None
+    peer: Peer | None = None
+    no_peer: str | None = None     # why robotpy-wpimath 2026 has no peer
+    positions: str | None = None   # odometry: the log type of one positions sample
+    steered: bool = False          # kinematics: its wheels are steered modules
+
+
+# ---------------------------------------------------------------------------------------
+# robotpy-wpimath rotations: carried as the stored (cos, sin) pair, never through the
+# angle, so conversions are bit-exact both ways.
+
+def qualified(obj: object) -> str:
+    # Both libraries have a Pose2d, a Rotation2d, ...: always say whose (builtins aside).
+    t = type(obj)
+    module = getattr(t, "__module__", None) or "?"
+    return t.__qualname__ if module == "builtins" else f"{module}.{t.__qualname__}"
+
+
+def _check_unit(c: float, s: float, r: object, where: str) -> None:
+    # A rotation is a unit (cos, sin) pair, or the NaN pair of a non-finite angle. Both
+    # libraries store (0, 0) for Rotation2d(x, y) when hypot(x, y) overflows (x/inf);
+    # that is no rotation, and neither side can rebuild it from its pair.
+    if not (c != c and s != s) and not abs((c * c + s * s) - 1.0) <= 1e-9:
+        raise ValueError(f"{where}: this {qualified(r)} stores (cos, sin) = ({c!r}, {s!r}), "
+                         "which is not a unit vector")
+
+
+def _rotation_to(r: Rotation2d, w: Any) -> Any:
+    c, s = r.getCos(), r.getSin()
+    _check_unit(c, s, r, "toWpimath()")
+    if c == c and s == s:
+        # robotpy's Rotation2d(x, y) divides by hypot(x, y): exact whenever that is 1.0
+        # (division by a positive number keeps the sign of zero, so == suffices here).
+        out = w.geometry.Rotation2d(c, s)
+        if out.cos() == c and out.sin() == s:
+            return out
+    # Otherwise (and for the NaN pair of a non-finite angle) fromMatrix copies R(0,0) and
+    # R(1,0) as they are; NaN passes its orthogonality check.
+    return w.geometry.Rotation2d.fromMatrix(((c, -s), (s, c)))
+
+
+def _rotation_from(r: Any) -> Rotation2d:
+    c, s = r.cos(), r.sin()
+    # The stored pair is copied as is (a unit vector, or NaN for a non-finite angle).
+    # Rotation2d(x, y) would renormalise it, and Rotation2d(angle) would recompute it.
+    _check_unit(c, s, r, "fromWpimath()")
+    return _rotation_from_cos_sin(c, s)  # type: ignore[no-any-return]
+
+
+def _translation_to(t: Translation2d, w: Any) -> Any:
+    return w.geometry.Translation2d(t.x, t.y)
+
+
+def _translation_from(t: Any) -> Translation2d:
+    return Translation2d(t.x, t.y)
+
+
+#: robotpy-wpimath 2026's SwerveDriveNKinematics.
+SWERVE_MODULE_COUNTS = (2, 3, 4, 6)
+
+
+def _swerve_to(k: SwerveDriveKinematics, w: Any) -> Any:
+    n = k.getNumModules()
+    if n not in SWERVE_MODULE_COUNTS:
+        raise ValueError(
+            f"toWpimath(): robotpy-wpimath 2026 has SwerveDrive2Kinematics, "
+            f"SwerveDrive3Kinematics, SwerveDrive4Kinematics and SwerveDrive6Kinematics "
+            f"only; this SwerveDriveKinematics has {n} modules")
+    cls = getattr(w.kinematics, f"SwerveDrive{n}Kinematics")
+    return cls(*(_translation_to(t, w) for t in k.getModules()))
+
+
+def _wheel_positions_to(name: str, fields: tuple[str, ...]) -> Callable[[Any, Any], Any]:
+    def to(p: Any, w: Any) -> Any:
+        out = getattr(w.kinematics, name)()    # robotpy's takes no arguments
+        for f in fields:
+            setattr(out, f, getattr(p, f))
+        return out
+    return to
+
+
+# ---------------------------------------------------------------------------------------
+# Wire forms and schemas shared by several entries
+
+def _doubles(*names: str) -> tuple[Field, ...]:
+    return tuple((n, i, None, False) for i, n in enumerate(names, 1))
+
+
+def _value_and_angle(name: str) -> tuple[Field, ...]:
+    return ((name, 1, None, False), ("angle", 2, "ProtobufRotation2d", False))
+
+
+_POSE_FIELDS: tuple[Field, ...] = (("translation", 1, "ProtobufTranslation2d", False),
+                                   ("rotation", 2, "ProtobufRotation2d", False))
+_POSE_SCHEMA = "Translation2d translation;Rotation2d rotation"
+_MECANUM = ("front_left", "front_right", "rear_left", "rear_right")
+_MECANUM_ATTRS = ("frontLeft", "frontRight", "rearLeft", "rearRight")
+_R = Rotation2d
+_T = Translation2d
+
+
+def _flat_pose(p: Any) -> tuple[float, ...]:
+    return (p.getX(), p.getY(), p.getRotation().getRadians())
+
+
+def _flat_translations(ts: tuple[Translation2d, ...]) -> tuple[float, ...]:
+    out: list[float] = []
+    for t in ts:
+        out += (t.getX(), t.getY())
+    return tuple(out)
+
+
+def _translations(v: tuple[float, ...]) -> list[Translation2d]:
+    return [_T(v[j], v[j + 1]) for j in range(0, len(v), 2)]
+
+
+def _module_value(cls: type, field: str, message: str, struct_name: str, index: int,
+                  peer: Peer | None, no_peer: str | None) -> Entry:
+    value = operator.attrgetter(field)
+    return Entry(cls, "value", "swerve",
+                 flatten=lambda s: (value(s), s.angle.getRadians()),
+                 build=lambda m, a: cls(m, _R(a)),
+                 struct=Struct(struct_name, f"double {field};Rotation2d angle", 2,
+                               (Rotation2d,)),
+                 proto=Proto(message, KINEMATICS_FILE, index, _value_and_angle(field)),
+                 peer=peer, no_peer=no_peer)
+
+
+def _wheel_values(cls: type, drivetrain: str, attrs: tuple[str, ...],
+                  fields: tuple[str, ...], index: int, peer: Peer | None,
+                  no_peer: str | None) -> Entry:
+    return Entry(cls, "value", drivetrain,
+                 flatten=lambda w: tuple(getattr(w, a) for a in attrs), build=cls,
+                 struct=Struct(cls.__name__, ";".join(f"double {f}" for f in fields),
+                               len(fields)),
+                 proto=Proto(f"Protobuf{cls.__name__}", KINEMATICS_FILE, index,
+                             _doubles(*fields)),
+                 peer=peer, no_peer=no_peer)
+
+
+_NEW_2027 = "it is new in WPILib 2027"
+_DRIVEKIN_ONLY = "robotpy-wpimath 2026 has no counterpart of it"
+_STATEFUL = "stateful"
+
+# ---------------------------------------------------------------------------------------
+# The entries. Order within a drivetrain follows WPILib; nothing depends on it except
+# where noted (the protobuf index).
+
+ENTRIES: tuple[Entry, ...] = (
+    # Geometry
+    Entry(Translation2d, "value",
+          flatten=lambda t: (t.getX(), t.getY()), build=lambda x, y: _T(x, y),
+          struct=Struct("Translation2d", "double x;double y", 2),
+          proto=Proto("ProtobufTranslation2d", GEOMETRY2D_FILE, 0, _doubles("x", "y")),
+          peer=Peer("geometry", ("Translation2d",), _translation_to, _translation_from)),
+    Entry(Rotation2d, "value",
+          flatten=lambda r: (r.getRadians(),), build=_R,
+          struct=Struct("Rotation2d", "double value", 1),
+          proto=Proto("ProtobufRotation2d", GEOMETRY2D_FILE, 1, _doubles("value")),
+          peer=Peer("geometry", ("Rotation2d",), _rotation_to, _rotation_from)),
+    Entry(Pose2d, "value",
+          flatten=_flat_pose, build=lambda x, y, r: Pose2d(x, y, _R(r)),
+          struct=Struct("Pose2d", _POSE_SCHEMA, 3, (Translation2d, Rotation2d)),
+          proto=Proto("ProtobufPose2d", GEOMETRY2D_FILE, 2, _POSE_FIELDS),
+          peer=Peer("geometry", ("Pose2d",),
+                    lambda p, w: w.geometry.Pose2d(p.x, p.y, _rotation_to(p.getRotation(), w)),
+                    lambda p: Pose2d(p.x, p.y, _rotation_from(p.rotation())))),
+    Entry(Transform2d, "value",
+          flatten=_flat_pose, build=lambda x, y, r: Transform2d(x, y, _R(r)),
+          struct=Struct("Transform2d", _POSE_SCHEMA, 3, (Translation2d, Rotation2d)),
+          proto=Proto("ProtobufTransform2d", GEOMETRY2D_FILE, 3, _POSE_FIELDS),
+          peer=Peer("geometry", ("Transform2d",),
+                    lambda t, w: w.geometry.Transform2d(t.x, t.y,
+                                                        _rotation_to(t.getRotation(), w)),
+                    lambda t: Transform2d(t.x, t.y, _rotation_from(t.rotation())))),
+    Entry(Twist2d, "value",
+          flatten=lambda t: (t.dx, t.dy, t.dtheta), build=Twist2d,
+          struct=Struct("Twist2d", "double dx;double dy;double dtheta", 3),
+          proto=Proto("ProtobufTwist2d", GEOMETRY2D_FILE, 4, _doubles("dx", "dy", "dtheta")),
+          peer=Peer("geometry", ("Twist2d",),
+                    lambda t, w: w.geometry.Twist2d(t.dx, t.dy, t.dtheta),
+                    lambda t: Twist2d(t.dx, t.dy, t.dtheta))),
+    # Chassis
+    Entry(ChassisVelocities, "value",
+          flatten=lambda c: (c.vx, c.vy, c.omega), build=ChassisVelocities,
+          struct=Struct("ChassisVelocities", "double vx;double vy;double omega", 3),
+          proto=Proto("ProtobufChassisVelocities", KINEMATICS_FILE, 0,
+                      _doubles("vx", "vy", "omega")),
+          peer=Peer("kinematics", ("ChassisSpeeds",),
+                    lambda v, w: w.kinematics.ChassisSpeeds(v.vx, v.vy, v.omega),
+                    lambda v: ChassisVelocities(v.vx, v.vy, v.omega))),
+    Entry(ChassisAccelerations, "value",
+          flatten=lambda c: (c.ax, c.ay, c.alpha), build=ChassisAccelerations,
+          struct=Struct("ChassisAccelerations", "double ax;double ay;double alpha", 3),
+          proto=Proto("ProtobufChassisAccelerations", KINEMATICS_FILE, 1,
+                      _doubles("ax", "ay", "alpha")),
+          no_peer=_NEW_2027),
+    # Swerve
+    _module_value(SwerveModuleVelocity, "velocity", "ProtobufSwerveModuleVelocity",
+                  "SwerveModuleVelocity", 12,
+                  Peer("kinematics", ("SwerveModuleState",),
+                       lambda m, w: w.kinematics.SwerveModuleState(
+                           m.velocity, _rotation_to(m.angle, w)),
+                       lambda m: SwerveModuleVelocity(m.speed, _rotation_from(m.angle))),
+                  None),
+    _module_value(SwerveModulePosition, "distance", "ProtobufSwerveModulePosition",
+                  "SwerveModulePosition", 11,
+                  Peer("kinematics", ("SwerveModulePosition",),
+                       lambda m, w: w.kinematics.SwerveModulePosition(
+                           m.distance, _rotation_to(m.angle, w)),
+                       lambda m: SwerveModulePosition(m.distance, _rotation_from(m.angle))),
+                  None),
+    # WPILib 2027 publishes SwerveModuleAcceleration under the plural struct name (sic).
+    _module_value(SwerveModuleAcceleration, "acceleration",
+                  "ProtobufSwerveModuleAcceleration", "SwerveModuleAccelerations", 13,
+                  None, _NEW_2027),
+    Entry(SwerveDriveKinematics, "kinematics", "swerve",
+          flatten=lambda k: _flat_translations(k.getModules()),
+          build=lambda *v: SwerveDriveKinematics(_translations(v)),
+          struct=Struct("SwerveDriveKinematics", "Translation2d modules", 2,
+                        (Translation2d,), repeated=True), steered=True,
+          proto=Proto("ProtobufSwerveDriveKinematics", KINEMATICS_FILE, 10,
+                      (("modules", 1, "ProtobufTranslation2d", True),)),
+          peer=Peer("kinematics", tuple(f"SwerveDrive{n}Kinematics"
+                                        for n in SWERVE_MODULE_COUNTS),
+                    _swerve_to,
+                    lambda k: SwerveDriveKinematics([_translation_from(t)
+                                                     for t in k.getModules()]))),
+    Entry(_dk.SwerveDriveOdometry, "odometry", "swerve",
+          positions="struct:SwerveModulePosition[]"),
+    Entry(_dk.SwerveDrivePoseEstimator, "estimator", "swerve"),
+    # Mecanum
+    _wheel_values(MecanumDriveWheelVelocities, "mecanum", _MECANUM_ATTRS, _MECANUM, 8,
+                  Peer("kinematics", ("MecanumDriveWheelSpeeds",),
+                       lambda m, w: w.kinematics.MecanumDriveWheelSpeeds(
+                           m.frontLeft, m.frontRight, m.rearLeft, m.rearRight),
+                       lambda m: MecanumDriveWheelVelocities(m.frontLeft, m.frontRight,
+                                                             m.rearLeft, m.rearRight)),
+                  None),
+    _wheel_values(MecanumDriveWheelPositions, "mecanum", _MECANUM_ATTRS, _MECANUM, 7,
+                  Peer("kinematics", ("MecanumDriveWheelPositions",),
+                       _wheel_positions_to("MecanumDriveWheelPositions", _MECANUM_ATTRS),
+                       lambda m: MecanumDriveWheelPositions(m.frontLeft, m.frontRight,
+                                                            m.rearLeft, m.rearRight)),
+                  None),
+    _wheel_values(MecanumDriveWheelAccelerations, "mecanum", _MECANUM_ATTRS, _MECANUM, 9,
+                  None, _NEW_2027),
+    Entry(MecanumDriveKinematics, "kinematics", "mecanum",
+          flatten=lambda k: _flat_translations((k.getFrontLeft(), k.getFrontRight(),
+                                                k.getRearLeft(), k.getRearRight())),
+          build=lambda *v: MecanumDriveKinematics(*_translations(v)),
+          struct=Struct("MecanumDriveKinematics",
+                        ";".join(f"Translation2d {f}" for f in _MECANUM), 8,
+                        (Translation2d,)),
+          proto=Proto("ProtobufMecanumDriveKinematics", KINEMATICS_FILE, 6,
+                      tuple((n, i, "ProtobufTranslation2d", False)
+                            for i, n in enumerate(_MECANUM, 1))),
+          peer=Peer("kinematics", ("MecanumDriveKinematics",),
+                    lambda k, w: w.kinematics.MecanumDriveKinematics(
+                        _translation_to(k.getFrontLeft(), w),
+                        _translation_to(k.getFrontRight(), w),
+                        _translation_to(k.getRearLeft(), w),
+                        _translation_to(k.getRearRight(), w)),
+                    lambda k: MecanumDriveKinematics(
+                        _translation_from(k.getFrontLeft()),
+                        _translation_from(k.getFrontRight()),
+                        _translation_from(k.getRearLeft()),
+                        _translation_from(k.getRearRight())))),
+    Entry(_dk.MecanumDriveOdometry, "odometry", "mecanum",
+          positions="struct:MecanumDriveWheelPositions"),
+    Entry(_dk.MecanumDrivePoseEstimator, "estimator", "mecanum"),
+    # Differential
+    _wheel_values(DifferentialDriveWheelVelocities, "differential", ("left", "right"),
+                  ("left", "right"), 3,
+                  Peer("kinematics", ("DifferentialDriveWheelSpeeds",),
+                       lambda d, w: w.kinematics.DifferentialDriveWheelSpeeds(d.left,
+                                                                              d.right),
+                       lambda d: DifferentialDriveWheelVelocities(d.left, d.right)),
+                  None),
+    _wheel_values(DifferentialDriveWheelPositions, "differential", ("left", "right"),
+                  ("left", "right"), 5,
+                  Peer("kinematics", ("DifferentialDriveWheelPositions",),
+                       _wheel_positions_to("DifferentialDriveWheelPositions",
+                                           ("left", "right")),
+                       lambda d: DifferentialDriveWheelPositions(d.left, d.right)),
+                  None),
+    _wheel_values(DifferentialDriveWheelAccelerations, "differential", ("left", "right"),
+                  ("left", "right"), 4, None, _NEW_2027),
+    Entry(DifferentialDriveKinematics, "kinematics", "differential",
+          flatten=lambda k: (k.trackwidth,), build=DifferentialDriveKinematics,
+          struct=Struct("DifferentialDriveKinematics", "double trackwidth", 1),
+          proto=Proto("ProtobufDifferentialDriveKinematics", KINEMATICS_FILE, 2,
+                      _doubles("trackwidth")),
+          peer=Peer("kinematics", ("DifferentialDriveKinematics",),
+                    lambda k, w: w.kinematics.DifferentialDriveKinematics(k.trackwidth),
+                    lambda k: DifferentialDriveKinematics(k.trackWidth))),
+    Entry(_dk.DifferentialDriveOdometry, "odometry", "differential",
+          positions="struct:DifferentialDriveWheelPositions"),
+    Entry(_dk.DifferentialDrivePoseEstimator, "estimator", "differential"),
+    # Dead wheels
+    Entry(DeadWheelKinematics, "kinematics", "deadwheel", no_peer=_DRIVEKIN_ONLY),
+    Entry(_dk.DeadWheelOdometry, "odometry", "deadwheel"),
+    Entry(_dk.DeadWheelPoseEstimator, "estimator", "deadwheel"),
+    Entry(_dk.TwoDeadWheelOdometry, "odometry", "twodeadwheel"),
+    Entry(_dk.TwoDeadWheelPoseEstimator, "estimator", "twodeadwheel"),
+    # Differential swerve pods (per pod: not a drivetrain of their own)
+    Entry(_dk.DifferentialSwerveModuleKinematics, "kinematics", "diffswerve",
+          no_peer=_DRIVEKIN_ONLY),
+    Entry(_dk.DifferentialSwerveModuleVelocities, "value", "diffswerve",
+          no_peer=_DRIVEKIN_ONLY),
+    Entry(_dk.DifferentialSwerveMotorVelocities, "value", "diffswerve",
+          no_peer=_DRIVEKIN_ONLY),
+    # Helpers
+    Entry(_dk.MathSharedStore, "helper"),
+    Entry(_dk.TimeInterpolatableBuffer, "helper"),
+    Entry(_dk.Units, "helper"),
+)
+
+BY_CLASS: dict[type, Entry] = {e.cls: e for e in ENTRIES}
+
+
+def entries(kind: str | None = None, *, drivetrain: str | None = None) -> tuple[Entry, ...]:
+    """The entries of one kind (and drivetrain), in catalog order."""
+    return tuple(e for e in ENTRIES if (kind is None or e.kind == kind)
+                 and (drivetrain is None or e.drivetrain == drivetrain))
+
+
+def names(what: str) -> str:
+    """The class names a call accepts, for its TypeError: ``"drivetrain"`` (kinematics
+    classes implementing the drivetrain contract), ``"steered"`` (those whose wheels are
+    swerve modules) or ``"odometry"``."""
+    from drivekin._core.drivetrain import Drivetrain
+    if what == "odometry":
+        classes = [e.cls for e in entries("odometry")]
+    else:
+        classes = [e.cls for e in entries("kinematics") if issubclass(e.cls, Drivetrain)]
+        if what == "steered":
+            classes = [c for c in classes if BY_CLASS[c].steered]
+    return ", ".join(c.__name__ for c in classes)
