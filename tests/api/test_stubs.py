@@ -5,22 +5,24 @@
    both sides, with the same kind (method, static method, property/attribute, ClassVar
    constant), and a stub property is writable exactly when the runtime one is.
 3. Each runtime ``__doc__`` of a public module, class, method and property equals the
-   stub docstring (both compared after :func:`inspect.cleandoc`). The stub docstrings are
-   verbatim copies of the ``.pyx`` docstrings, which are the source of truth.
+   stub docstring (both compared after :func:`inspect.cleandoc`). The ``.pyx``
+   docstrings are the source of truth; ``scripts/stub_docstrings.py`` writes the stub
+   docstrings from them, and its ``--check`` must find nothing to rewrite.
 4. ``python -m mypy.stubtest`` passes with ``stubtest-allowlist.txt`` (skipped without mypy).
 5. ``pyproject.toml`` ships the stubs and ``py.typed``.
 
 Cython's ``embedsignature=True`` (setup.py) prepends a signature line to the runtime
-docstrings; :func:`runtime_doc` removes exactly that line and nothing else, see there.
+docstrings; :func:`runtime_doc` (defined in ``scripts/stub_docstrings.py``, tested here)
+removes exactly that line and nothing else, see there.
 """
 from __future__ import annotations
 
 import ast
 import importlib
 import importlib.machinery
+import importlib.util
 import inspect
 import os
-import re
 import subprocess
 import sys
 import types
@@ -34,6 +36,7 @@ import drivekin
 PKG_DIR = Path(drivekin.__file__).resolve().parent
 REPO = Path(__file__).resolve().parents[2]
 ALLOWLIST = Path(__file__).with_name("stubtest-allowlist.txt")
+SCRIPT = REPO / "scripts" / "stub_docstrings.py"
 
 
 # ---------------------------------------------------------------------------------------
@@ -217,76 +220,20 @@ def public_classes(mod: types.ModuleType) -> list[str]:
 
 
 # ---------------------------------------------------------------------------------------
-# Docstrings
-#
-# With embedsignature=True Cython prepends one line to the docstring of every def
-# function, and of every class that defines __init__ itself (the line is taken from it):
-#     methods:  "<__qualname__>(<parameters>)", e.g. "Translation2d.getDistance(self,
-#               Translation2d other)" or "_ChassisVector.plus(self, _ChassisVector other)"
-#     classes:  "<ClassName>(<__init__ parameters>)", e.g. "Pose2d(a=None, b=None, c=None)"
-# optionally followed by " -> <return type>", then a blank line and the source docstring
-# (or nothing when the source has no docstring). Classes that inherit __init__ (the
-# mecanum/differential wheel values) get no line, and properties and module docstrings are
-# left alone. Most class docstrings in the sources themselves start with a "Name(...)"
-# line (SwerveDriveKinematics's is even identical to the embedded one), so a class line is
-# removed only when the module was built with embedsignature and the class has its own
-# __init__, and then exactly one line, which must look like a signature.
+# Docstrings: the rule that strips Cython's embedded signature line lives in the script
+# that writes the stub docstrings (scripts/stub_docstrings.py), see runtime_doc there.
 
-def _signature_line(name: str) -> re.Pattern[str]:
-    # With binding=False a static method's __qualname__ is its bare name while Cython
-    # embeds "Class.name(...)": a bare name may carry one class prefix.
-    prefix = "" if "." in name else r"(?:\w+\.)?"
-    return re.compile(rf"{prefix}{re.escape(name)}\(.*\)(?:\s*->\s*\S.*)?")
+def _load_script(path: Path) -> types.ModuleType:
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module            # dataclasses look their module up there
+    spec.loader.exec_module(module)
+    return module
 
 
-def _split_first_line(doc: str) -> tuple[str, str]:
-    """Split off the embedded signature line and the blank line after it."""
-    first, _, rest = doc.partition("\n")
-    blank, _, rest = rest.partition("\n")
-    if blank.strip():
-        raise AssertionError(f"embedded signature not followed by a blank line: {doc!r}")
-    return first, rest
-
-
-def module_embeds_signatures(mod: types.ModuleType) -> bool:
-    """True if the module was compiled with embedsignature: some method docstring starts
-    with its own qualified signature line."""
-    for cname in public_classes(mod):
-        for raw in runtime_class_members(getattr(mod, cname)).values():
-            func = raw.__func__ if isinstance(raw, (staticmethod, classmethod)) else raw
-            doc = getattr(func, "__doc__", None)
-            qualname = getattr(func, "__qualname__", None)
-            if callable(func) and doc and qualname and _signature_line(qualname).fullmatch(
-                    doc.partition("\n")[0]):
-                return True
-    return False
-
-
-_CYTHON_ATTRIBUTE_DOC = re.compile(r"\w+: '[^']*'")    # cdef public/readonly: "dx: 'double'"
-
-
-def runtime_doc(obj: object, *, kind: str, embeds: bool) -> str | None:
-    """``obj.__doc__`` without Cython's embedded signature line, cleaned; None if empty."""
-    doc = obj.__doc__
-    if kind == "class":
-        if doc is not None and embeds and "__init__" in vars(obj):
-            first, rest = _split_first_line(doc)
-            assert _signature_line(obj.__name__).fullmatch(first), (
-                f"{obj.__name__}: expected an embedded class signature, got {first!r}")
-            doc = rest
-    elif kind == "function":
-        if doc is not None:
-            first = doc.partition("\n")[0]
-            if _signature_line(obj.__qualname__).fullmatch(first):
-                doc = _split_first_line(doc)[1]
-            else:
-                assert not embeds, f"{obj.__qualname__}: embedded signature missing: {doc!r}"
-    elif kind == "attribute":
-        # Cython documents cdef public/readonly attributes with their C type only.
-        if doc is not None and _CYTHON_ATTRIBUTE_DOC.fullmatch(doc.strip()):
-            doc = None
-    doc = inspect.cleandoc(doc) if doc else None
-    return doc or None
+stub_docstrings = _load_script(SCRIPT)
+runtime_doc = stub_docstrings.runtime_doc
+module_embeds_signatures = stub_docstrings.module_embeds_signatures
 
 
 def _fail_unless_equal(where: str, runtime: str | None, stub: str | None, errors: list[str]):
@@ -477,6 +424,21 @@ def test_docstrings_match(module):
                 rt = runtime_doc(getattr(cls, name), kind="function", embeds=embeds)
             _fail_unless_equal(f"{cname}.{name}", rt, stub_doc, errors)
     assert not errors, "\n".join(errors)
+
+
+def test_stub_docstrings_are_generated():
+    """Every stub docstring is what scripts/stub_docstrings.py writes: a docstring edited in
+    a .pyx (and rebuilt) without rerunning the script fails here."""
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(
+        [str(PKG_DIR.parent)] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
+    proc = subprocess.run(
+        [sys.executable, str(SCRIPT), "--check", "--diff", "--package-dir", str(PKG_DIR)],
+        env=env, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, (
+        "stub docstrings differ from the compiled modules' __doc__: run "
+        "`PYTHONPATH=src python scripts/stub_docstrings.py` and commit the stubs\n"
+        + proc.stdout + proc.stderr)
 
 
 # ---------------------------------------------------------------------------------------
