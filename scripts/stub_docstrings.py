@@ -275,7 +275,7 @@ def _literal(doc: str, indent: str, layout: tuple[bool, bool]) -> str:
     text = "\n".join([first] + [indent + line if line else "" for line in rest])
     if opening_break:
         text = "\n" + indent + text
-    if closing_line:
+    if closing_line and rest:      # (cleandoc keeps the indent of a one-line docstring's)
         text += "\n" + indent
     text = text.replace("\\", "\\\\")
     if '"""' in text or text.endswith('"'):
