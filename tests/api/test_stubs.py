@@ -18,6 +18,7 @@ removes exactly that line and nothing else, see there.
 from __future__ import annotations
 
 import ast
+import functools
 import importlib
 import importlib.machinery
 import importlib.util
@@ -46,8 +47,8 @@ def public(name: str) -> bool:
     return not name.startswith("_")
 
 
-def compiled_modules() -> list[str]:
-    """Public extension modules of the package (``drivekin/<name>.<ext-suffix>``)."""
+def compiled_modules(*, private: bool = False) -> list[str]:
+    """Public (or all) extension modules of the package (``drivekin/<name>.<ext-suffix>``)."""
     suffixes = sorted(importlib.machinery.EXTENSION_SUFFIXES, key=len, reverse=True)
     names = set()
     for path in PKG_DIR.iterdir():
@@ -55,7 +56,7 @@ def compiled_modules() -> list[str]:
             if path.name.endswith(suffix):
                 names.add(path.name[: -len(suffix)])
                 break
-    return sorted(n for n in names if n.isidentifier() and public(n))
+    return sorted(n for n in names if n.isidentifier() and (private or public(n)))
 
 
 def stub_files() -> list[str]:
@@ -63,6 +64,9 @@ def stub_files() -> list[str]:
 
 
 MODULES = compiled_modules()
+# Modules with a stub: the public ones and private ones whose classes the public stubs
+# derive from (drivekin._wheels).
+STUBBED = stub_files()
 
 
 def test_modules_discovered():
@@ -71,7 +75,9 @@ def test_modules_discovered():
 
 
 def test_every_compiled_module_has_a_stub_and_vice_versa():
-    assert sorted(MODULES) == stub_files()
+    assert sorted(MODULES) == [m for m in stub_files() if public(m)]
+    # A private module may have a stub (for the bases it provides); it must exist too.
+    assert sorted(set(stub_files()) - set(compiled_modules(private=True))) == []
 
 
 # ---------------------------------------------------------------------------------------
@@ -87,15 +93,21 @@ class StubMember:
 @dataclass
 class StubClass:
     doc: str | None
-    bases: list[str]
+    bases: list[str]               # as written: "_Wheel2", "_WheelValues", "_wheels._WheelValues"
     members: dict[str, StubMember]
 
 
 @dataclass
 class Stub:
+    module: str                    # "geometry", "_wheels"
     doc: str | None
     classes: dict[str, StubClass]
     others: set[str]               # public module-level functions, constants, aliases
+    functions: dict[str, StubMember]       # module-level functions (kind "function")
+    # Names bound to another stub module ("_wheels") or to a class of one: from
+    # drivekin._wheels import _WheelValues -> {"_WheelValues": ("_wheels", "_WheelValues")};
+    # import drivekin._wheels as _wheels -> {"_wheels": ("_wheels", None)}.
+    imports: dict[str, tuple[str, str | None]] = field(default_factory=dict)
 
 
 def _decorator_names(node: ast.FunctionDef) -> list[str]:
@@ -145,33 +157,85 @@ def _parse_class(node: ast.ClassDef) -> StubClass:
             for target in item.targets:
                 if isinstance(target, ast.Name):
                     members[target.id] = StubMember("constant")
-    bases = [b.id for b in node.bases if isinstance(b, ast.Name)]
+    bases = [ast.unparse(b) for b in node.bases if isinstance(b, (ast.Name, ast.Attribute))]
     return StubClass(ast.get_docstring(node, clean=True), bases, members)
 
 
+def _stub_module(dotted: str | None, level: int) -> str | None:
+    """The stub module ("_wheels") that ``from <dotted> import`` (``level`` dots) names,
+    or None if it is not a drivekin module with a stub."""
+    if level == 0 and dotted and dotted.startswith("drivekin."):
+        dotted = dotted[len("drivekin."):]
+    elif level != 1:
+        return None
+    if dotted and (PKG_DIR / f"{dotted}.pyi").is_file():
+        return dotted
+    return None
+
+
+@functools.lru_cache(maxsize=None)
 def parse_stub(module: str) -> Stub:
     tree = ast.parse((PKG_DIR / f"{module}.pyi").read_text(encoding="utf-8"))
     classes: dict[str, StubClass] = {}
     others: set[str] = set()
+    functions: dict[str, StubMember] = {}
+    imports: dict[str, tuple[str, str | None]] = {}
     for node in tree.body:
         if isinstance(node, ast.ClassDef):
             classes[node.name] = _parse_class(node)
         elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
             others.add(node.name)
+            functions.setdefault(node.name, StubMember("function")).docs.append(
+                ast.get_docstring(node, clean=True))
+        elif isinstance(node, ast.ImportFrom):
+            source = _stub_module(node.module, node.level)
+            for alias in node.names:
+                if source is not None:
+                    imports[alias.asname or alias.name] = (source, alias.name)
+                elif node.level == 1 and not node.module:      # from . import _wheels
+                    if (sub := _stub_module(alias.name, 1)) is not None:
+                        imports[alias.asname or alias.name] = (sub, None)
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                sub = _stub_module(alias.name, 0)
+                if sub is not None and alias.asname:
+                    imports[alias.asname] = (sub, None)
         elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
             others.add(node.target.id)
         elif isinstance(node, ast.Assign):
             others.update(t.id for t in node.targets if isinstance(t, ast.Name))
-    return Stub(ast.get_docstring(tree, clean=True), classes, others)
+    return Stub(module, ast.get_docstring(tree, clean=True), classes, others, functions, imports)
+
+
+def resolve_base(stub: Stub, base: str) -> tuple[Stub, str] | None:
+    """The stub and class name of a base class as written in ``stub``: a class of the same
+    file, or one of another stub imported by name or reached through an imported module
+    (``_wheels._WheelValues``); None for anything else (``object``, typing constructs)."""
+    head, _, attr = base.rpartition(".")
+    if not head:
+        if base in stub.classes:
+            return stub, base
+        if base in stub.imports:
+            module, name = stub.imports[base]
+            other = parse_stub(module)
+            if name is not None:
+                return resolve_base(other, name)
+    elif head in stub.imports and stub.imports[head][1] is None:
+        return resolve_base(parse_stub(stub.imports[head][0]), attr)
+    return None
 
 
 def stub_class_members(stub: Stub, name: str) -> dict[str, StubMember]:
-    """Members of a stub class including those of stub base classes in the same file."""
+    """Members of a stub class including those of its stub base classes, in the same file
+    or in another stub (drivekin._wheels._WheelValues)."""
     cls = stub.classes[name]
     members: dict[str, StubMember] = {}
     for base in reversed(cls.bases):
-        if base in stub.classes:
-            members.update(stub_class_members(stub, base))
+        found = resolve_base(stub, base)
+        assert found is not None or public(base.rpartition(".")[2]), (
+            f"{stub.module}.{name}: private base {base} not found in the stubs")
+        if found is not None:
+            members.update(stub_class_members(*found))
     members.update(cls.members)
     return members
 
@@ -423,6 +487,12 @@ def test_docstrings_match(module):
             else:
                 rt = runtime_doc(getattr(cls, name), kind="function", embeds=embeds)
             _fail_unless_equal(f"{cname}.{name}", rt, stub_doc, errors)
+    for name, member in sorted(stub.functions.items()):
+        if public(name) and callable(getattr(mod, name, None)):
+            distinct = set(d for d in member.docs if d is not None)
+            _fail_unless_equal(f"{module}.{name}", runtime_doc(
+                getattr(mod, name), kind="function", embeds=embeds),
+                distinct.pop() if len(distinct) == 1 else None, errors)
     assert not errors, "\n".join(errors)
 
 
@@ -451,7 +521,7 @@ def test_stubtest(tmp_path):
         [str(PKG_DIR.parent)] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
     env["MYPY_CACHE_DIR"] = str(tmp_path / "mypy_cache")   # keep the work tree clean
     cmd = [sys.executable, "-m", "mypy.stubtest",
-           *(f"drivekin.{m}" for m in MODULES), "--allowlist", str(ALLOWLIST)]
+           *(f"drivekin.{m}" for m in STUBBED), "--allowlist", str(ALLOWLIST)]
     proc = subprocess.run(cmd, cwd=tmp_path, env=env, capture_output=True, text=True,
                           timeout=300)
     assert proc.returncode == 0, proc.stdout + proc.stderr
