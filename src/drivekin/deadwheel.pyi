@@ -14,9 +14,11 @@ non-parallel wheels always observe. Redundant wheels are averaged in by the leas
 fit, never ignored. Both pseudo-inverses are built once, at construction.
 """
 
-# Hand-written stub for the compiled module drivekin.deadwheel (deadwheel.pyx). Every
-# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
-# they match the runtime ``__doc__`` and that no public name is missing on either side.
+# Hand-written stub for the compiled module drivekin.deadwheel (deadwheel.pyx). The
+# docstrings are written from the compiled module's ``__doc__`` (the .pyx docstrings) by
+# scripts/stub_docstrings.py: edit them in the .pyx, rebuild and rerun the script.
+# tests/api/test_stubs.py checks that they match and that no public name is missing on
+# either side.
 
 from collections.abc import Sequence
 from typing import final
