@@ -340,6 +340,35 @@ def test_class_members_match(module):
     assert not errors, "\n".join(errors)
 
 
+@pytest.mark.parametrize("module", STUBBED)
+def test_stub_classes_mirror_the_runtime_hierarchy(module):
+    """Each stub class that exists at runtime (private bases included) has the runtime
+    class's bases, and declares only members that the runtime class defines itself: an
+    inherited member is declared once, on the (private) base that defines it, and
+    reaches the subclasses through the stub's own inheritance."""
+    mod = importlib.import_module(f"drivekin.{module}")
+    stub = parse_stub(module)
+    errors = []
+    for cname, scls in sorted(stub.classes.items()):
+        cls = vars(mod).get(cname)
+        if not isinstance(cls, type):
+            continue                    # a stub-only helper (none today)
+        bases = []
+        for base in scls.bases:
+            found = resolve_base(stub, base)
+            bases.append(f"drivekin.{found[0].module}.{found[1]}" if found else base)
+        runtime_bases = [f"{b.__module__}.{b.__qualname__}" for b in cls.__bases__
+                         if b is not object]
+        if bases != runtime_bases:
+            errors.append(f"{cname}: stub bases {bases}, runtime bases {runtime_bases}")
+        for name in sorted(scls.members):
+            if name not in vars(cls):
+                owner = next((k.__qualname__ for k in cls.__mro__ if name in vars(k)), None)
+                errors.append(f"{cname}.{name}: declared on {cname} in the stub but defined "
+                              f"by {owner} at runtime")
+    assert not errors, "\n".join(errors)
+
+
 def _sample_instances() -> dict[str, object]:
     """One instance per public class, for the writability check."""
     from drivekin import (
