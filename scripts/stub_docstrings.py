@@ -18,14 +18,15 @@ quotes, closing quotes on a line of their own, or not); a new one gets the stubs
 convention: closing quotes on their own line for a multi-line module or class docstring,
 on the last text line otherwise.
 
-    PYTHONPATH=src python scripts/stub_docstrings.py           # rewrite stale stubs
-    PYTHONPATH=src python scripts/stub_docstrings.py --check   # list stale stubs, exit 1
-    PYTHONPATH=src python scripts/stub_docstrings.py --check --diff
+    python scripts/stub_docstrings.py                  # rewrite the stale stubs
+    python scripts/stub_docstrings.py --check          # list the stale stubs, exit 1
+    python scripts/stub_docstrings.py --check --diff   # ... and show what would change
 
 It imports the drivekin whose directory holds the stubs (``src/drivekin`` beside this
-script unless ``--package-dir`` says otherwise), so that directory needs an in-place
-build (``python setup.py build_ext --inplace``). Exit status: 0 up to date / rewritten,
-1 stale (``--check``), 2 error. ``tests/api/test_stubs.py`` imports :func:`runtime_doc`
+script unless ``--package-dir`` says otherwise; that directory goes first on sys.path,
+so no PYTHONPATH is needed), which therefore needs an in-place build (``python setup.py
+build_ext --inplace``). Exit status: 0 up to date / rewritten, 1 stale (``--check``),
+2 error. ``tests/api/test_stubs.py`` imports :func:`runtime_doc`
 from here and runs ``--check``.
 """
 from __future__ import annotations
@@ -469,7 +470,7 @@ def main(argv: list[str] | None = None) -> int:
                     str(path), f"{path} (from {name}.__doc__)"))
             if not args.check:
                 path.write_bytes(new.encode("utf-8"))
-    except StubError as exc:
+    except (StubError, AssertionError) as exc:    # AssertionError: from runtime_doc
         print(f"stub_docstrings.py: error: {exc}", file=sys.stderr)
         return 2
     for path in stale:

@@ -536,7 +536,7 @@ def test_stub_docstrings_are_generated():
         env=env, capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, (
         "stub docstrings differ from the compiled modules' __doc__: run "
-        "`PYTHONPATH=src python scripts/stub_docstrings.py` and commit the stubs\n"
+        "`python scripts/stub_docstrings.py` and commit the stubs\n"
         + proc.stdout + proc.stderr)
 
 
