@@ -49,7 +49,6 @@ import numpy.typing as npt
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.differential import DifferentialDriveKinematics
 from drivekin.geometry import Translation2d
-from drivekin.kinematics import SwerveDriveKinematics
 from drivekin.mecanum import MecanumDriveKinematics
 from drivekin.odometry import (
     DeadWheelOdometry,
@@ -58,6 +57,7 @@ from drivekin.odometry import (
     SwerveDriveOdometry,
     TwoDeadWheelOdometry,
 )
+from drivekin.swerve import SwerveDriveKinematics
 
 _Array = npt.NDArray[np.float64]
 

@@ -14,9 +14,14 @@ non-parallel wheels always observe. Redundant wheels are averaged in by the leas
 fit, never ignored. Both pseudo-inverses are built once, at construction.
 """
 
-# Hand-written stub for the compiled module drivekin.deadwheel (deadwheel.pyx). Every
-# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
-# they match the runtime ``__doc__`` and that no public name is missing on either side.
+# Hand-written stub for the compiled module drivekin.deadwheel (deadwheel.pyx). The
+# docstrings are written from the compiled module's ``__doc__`` (the .pyx docstrings) by
+# scripts/stub_docstrings.py: edit them in the .pyx, rebuild and rerun the script.
+# tests/api/test_stubs.py checks that they match and that no public name is missing on
+# either side.
+#
+# As at runtime, DeadWheelKinematics derives from drivekin._core.drivetrain.Drivetrain
+# (_core/drivetrain.pyi), which has no Python-visible members.
 
 from collections.abc import Sequence
 from typing import final
@@ -24,13 +29,14 @@ from typing import final
 import numpy as np
 import numpy.typing as npt
 
+from drivekin._core.drivetrain import Drivetrain
+from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.geometry import Pose2d, Twist2d
-from drivekin.kinematics import ChassisAccelerations, ChassisVelocities
 
 _WheelReadings = Sequence[float] | npt.NDArray[np.float64]
 
 @final
-class DeadWheelKinematics:
+class DeadWheelKinematics(Drivetrain):
     """DeadWheelKinematics(wheelPoses)
 
     Kinematics of N ≥ 2 dead (tracking) wheels. Each wheel is a Pose2d in the robot

@@ -5,32 +5,27 @@ Units: m, m/s, m/s², rad, rad/s, rad/s². The model is the same as Road Runner'
 """
 
 # Hand-written stub for the compiled module drivekin.differential (differential.pyx).
-# Every docstring is copied verbatim from the .pyx sources; tests/api/test_stubs.py checks
-# that they match the runtime ``__doc__`` and that no public name is missing on either side.
+# The docstrings are written from the compiled module's ``__doc__`` (the .pyx
+# docstrings) by scripts/stub_docstrings.py: edit them in the .pyx, rebuild and rerun
+# the script. tests/api/test_stubs.py checks that they match and that no public name is
+# missing on either side.
 #
-# At runtime the three wheel-value classes derive from the private bases _Wheel2 (this
-# module) and drivekin._core.wheels._WheelValues; the inherited members are declared on each
-# public class instead, so they carry the precise types.
+# As at runtime, the three wheel-value classes derive from the private bases _Wheel2
+# (this module) and drivekin._core.wheels._WheelValues (_core/wheels.pyi), and
+# DifferentialDriveKinematics from drivekin._core.drivetrain.Drivetrain; each class
+# declares only the members it defines itself (inherited ones are typed with Self).
 
-from collections.abc import Iterator
 from typing import ClassVar, final, overload
 
+from drivekin._core.drivetrain import Drivetrain
+from drivekin._core.wheels import _WheelValues
+from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.geometry import Twist2d
-from drivekin.kinematics import ChassisAccelerations, ChassisVelocities
 
-@final
-class DifferentialDriveWheelVelocities:
-    """DifferentialDriveWheelVelocities(left=0.0, right=0.0)
-
-    Wheel velocities of a differential drive, m/s. Mutable. As in WPILib Java there is no
-    value equality: ``==`` is identity (compare ``left``/``right`` yourself).
-    """
+class _Wheel2(_WheelValues):
+    """Left and right wheel values."""
 
     def __init__(self, left: float = 0.0, right: float = 0.0) -> None: ...
-    @staticmethod
-    def fromFeet(left: float, right: float) -> DifferentialDriveWheelVelocities:
-        """Return the wheel velocities given in ft/s, in m/s (the same bits as
-        robotpy-wpimath's ``DifferentialDriveWheelSpeeds.fromFeet``)."""
     @property
     def left(self) -> float:
         """Left wheel value (m/s, m or m/s² depending on the class)."""
@@ -43,6 +38,19 @@ class DifferentialDriveWheelVelocities:
 
     @right.setter
     def right(self, value: float) -> None: ...
+
+@final
+class DifferentialDriveWheelVelocities(_Wheel2):
+    """DifferentialDriveWheelVelocities(left=0.0, right=0.0)
+
+    Wheel velocities of a differential drive, m/s. Mutable. As in WPILib Java there is no
+    value equality: ``==`` is identity (compare ``left``/``right`` yourself).
+    """
+
+    @staticmethod
+    def fromFeet(left: float, right: float) -> DifferentialDriveWheelVelocities:
+        """Return the wheel velocities given in ft/s, in m/s (the same bits as
+        robotpy-wpimath's ``DifferentialDriveWheelSpeeds.fromFeet``)."""
     def desaturate(self, attainableMaxSpeed: float, /) -> DifferentialDriveWheelVelocities:
         """Return new velocities scaled so neither wheel exceeds ``attainableMaxSpeed``
         (m/s), keeping their ratio; unchanged copy if already within it (2027)."""
@@ -55,35 +63,8 @@ class DifferentialDriveWheelVelocities:
     ) -> DifferentialDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
-    def plus(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities:
-        """Return the wheel-by-wheel sum."""
-
-    def minus(self, other: DifferentialDriveWheelVelocities) -> DifferentialDriveWheelVelocities:
-        """Return the wheel-by-wheel difference."""
-
-    def unaryMinus(self) -> DifferentialDriveWheelVelocities:
-        """Return every wheel negated."""
-
-    def times(self, scalar: float) -> DifferentialDriveWheelVelocities:
-        """Return every wheel multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> DifferentialDriveWheelVelocities:
-        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def __add__(
-        self, other: DifferentialDriveWheelVelocities
-    ) -> DifferentialDriveWheelVelocities: ...
-    def __sub__(
-        self, other: DifferentialDriveWheelVelocities
-    ) -> DifferentialDriveWheelVelocities: ...
-    def __neg__(self) -> DifferentialDriveWheelVelocities: ...
-    def __mul__(self, other: float) -> DifferentialDriveWheelVelocities: ...
-    def __rmul__(self, other: float) -> DifferentialDriveWheelVelocities: ...
-    def __truediv__(self, other: float) -> DifferentialDriveWheelVelocities: ...
-    def __iter__(self) -> Iterator[float]: ...
-
 @final
-class DifferentialDriveWheelPositions:
+class DifferentialDriveWheelPositions(_Wheel2):
     """DifferentialDriveWheelPositions(left, right)
 
     Distances driven by the left and right wheels, m. Mutable; ``==`` compares each
@@ -91,18 +72,6 @@ class DifferentialDriveWheelPositions:
     """
 
     def __init__(self, left: float, right: float) -> None: ...
-    @property
-    def left(self) -> float:
-        """Left wheel value (m/s, m or m/s² depending on the class)."""
-
-    @left.setter
-    def left(self, value: float) -> None: ...
-    @property
-    def right(self) -> float:
-        """Right wheel value (m/s, m or m/s² depending on the class)."""
-
-    @right.setter
-    def right(self, value: float) -> None: ...
     def copy(self) -> DifferentialDriveWheelPositions:
         """Return an independent copy."""
 
@@ -111,93 +80,23 @@ class DifferentialDriveWheelPositions:
     ) -> DifferentialDriveWheelPositions:
         """Linear interpolation; ``t`` is not clamped."""
 
-    def plus(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions:
-        """Return the wheel-by-wheel sum."""
-
-    def minus(self, other: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions:
-        """Return the wheel-by-wheel difference."""
-
-    def unaryMinus(self) -> DifferentialDriveWheelPositions:
-        """Return every wheel negated."""
-
-    def times(self, scalar: float) -> DifferentialDriveWheelPositions:
-        """Return every wheel multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> DifferentialDriveWheelPositions:
-        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def __add__(
-        self, other: DifferentialDriveWheelPositions
-    ) -> DifferentialDriveWheelPositions: ...
-    def __sub__(
-        self, other: DifferentialDriveWheelPositions
-    ) -> DifferentialDriveWheelPositions: ...
-    def __neg__(self) -> DifferentialDriveWheelPositions: ...
-    def __mul__(self, other: float) -> DifferentialDriveWheelPositions: ...
-    def __rmul__(self, other: float) -> DifferentialDriveWheelPositions: ...
-    def __truediv__(self, other: float) -> DifferentialDriveWheelPositions: ...
-    def __iter__(self) -> Iterator[float]: ...
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
-class DifferentialDriveWheelAccelerations:
+class DifferentialDriveWheelAccelerations(_Wheel2):
     """DifferentialDriveWheelAccelerations(left=0.0, right=0.0)
 
     Wheel accelerations of a differential drive, m/s². Mutable; ``==`` is identity.
     """
 
-    def __init__(self, left: float = 0.0, right: float = 0.0) -> None: ...
-    @property
-    def left(self) -> float:
-        """Left wheel value (m/s, m or m/s² depending on the class)."""
-
-    @left.setter
-    def left(self, value: float) -> None: ...
-    @property
-    def right(self) -> float:
-        """Right wheel value (m/s, m or m/s² depending on the class)."""
-
-    @right.setter
-    def right(self, value: float) -> None: ...
     def interpolate(
         self, endValue: DifferentialDriveWheelAccelerations, t: float
     ) -> DifferentialDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
-    def plus(
-        self, other: DifferentialDriveWheelAccelerations
-    ) -> DifferentialDriveWheelAccelerations:
-        """Return the wheel-by-wheel sum."""
-
-    def minus(
-        self, other: DifferentialDriveWheelAccelerations
-    ) -> DifferentialDriveWheelAccelerations:
-        """Return the wheel-by-wheel difference."""
-
-    def unaryMinus(self) -> DifferentialDriveWheelAccelerations:
-        """Return every wheel negated."""
-
-    def times(self, scalar: float) -> DifferentialDriveWheelAccelerations:
-        """Return every wheel multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> DifferentialDriveWheelAccelerations:
-        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def __add__(
-        self, other: DifferentialDriveWheelAccelerations
-    ) -> DifferentialDriveWheelAccelerations: ...
-    def __sub__(
-        self, other: DifferentialDriveWheelAccelerations
-    ) -> DifferentialDriveWheelAccelerations: ...
-    def __neg__(self) -> DifferentialDriveWheelAccelerations: ...
-    def __mul__(self, other: float) -> DifferentialDriveWheelAccelerations: ...
-    def __rmul__(self, other: float) -> DifferentialDriveWheelAccelerations: ...
-    def __truediv__(self, other: float) -> DifferentialDriveWheelAccelerations: ...
-    def __iter__(self) -> Iterator[float]: ...
-
 @final
-class DifferentialDriveKinematics:
+class DifferentialDriveKinematics(Drivetrain):
     """DifferentialDriveKinematics(trackwidth)
 
     Kinematics of a differential drive whose left and right wheels are ``trackwidth`` m

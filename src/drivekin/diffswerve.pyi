@@ -14,25 +14,28 @@ integrating the velocity map and converting the integrated motor positions agree
 rounding (quail's ``calculateModuleAngle`` does not: it is off by a factor 2·R_s²).
 """
 
-# Hand-written stub for the compiled module drivekin.diffswerve (diffswerve.pyx).
-# Every docstring is copied verbatim from the .pyx sources; tests/api/test_stubs.py checks
-# that they match the runtime ``__doc__`` and that no public name is missing on either side.
+# Hand-written stub for the compiled module drivekin.diffswerve (diffswerve.pyx). The
+# docstrings are written from the compiled module's ``__doc__`` (the .pyx docstrings) by
+# scripts/stub_docstrings.py: edit them in the .pyx, rebuild and rerun the script.
+# tests/api/test_stubs.py checks that they match and that no public name is missing on
+# either side.
 #
-# At runtime the two value classes derive from the private base
-# drivekin._core.wheels._WheelValues; the inherited members are declared on each public class
-# instead, so they carry the precise types.
+# As at runtime, the two value classes derive from the private base
+# drivekin._core.wheels._WheelValues (_core/wheels.pyi), which declares the arithmetic
+# they share (typed with Self).
 
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 from typing import ClassVar, final
 
 import numpy as np
 import numpy.typing as npt
 
+from drivekin._core.wheels import _WheelValues
 from drivekin.geometry import Rotation2d
-from drivekin.kinematics import SwerveModulePosition, SwerveModuleVelocity
+from drivekin.swerve import SwerveModulePosition, SwerveModuleVelocity
 
 @final
-class DifferentialSwerveMotorVelocities:
+class DifferentialSwerveMotorVelocities(_WheelValues):
     """DifferentialSwerveMotorVelocities(motor1=0.0, motor2=0.0)
 
     The angular velocities of a differential swerve pod's two motors, rad/s, as each
@@ -59,37 +62,11 @@ class DifferentialSwerveMotorVelocities:
     ) -> DifferentialSwerveMotorVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
-    def plus(self, other: DifferentialSwerveMotorVelocities) -> DifferentialSwerveMotorVelocities:
-        """Return the wheel-by-wheel sum."""
-
-    def minus(self, other: DifferentialSwerveMotorVelocities) -> DifferentialSwerveMotorVelocities:
-        """Return the wheel-by-wheel difference."""
-
-    def unaryMinus(self) -> DifferentialSwerveMotorVelocities:
-        """Return every wheel negated."""
-
-    def times(self, scalar: float) -> DifferentialSwerveMotorVelocities:
-        """Return every wheel multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> DifferentialSwerveMotorVelocities:
-        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def __add__(
-        self, other: DifferentialSwerveMotorVelocities
-    ) -> DifferentialSwerveMotorVelocities: ...
-    def __sub__(
-        self, other: DifferentialSwerveMotorVelocities
-    ) -> DifferentialSwerveMotorVelocities: ...
-    def __neg__(self) -> DifferentialSwerveMotorVelocities: ...
-    def __mul__(self, other: float) -> DifferentialSwerveMotorVelocities: ...
-    def __rmul__(self, other: float) -> DifferentialSwerveMotorVelocities: ...
-    def __truediv__(self, other: float) -> DifferentialSwerveMotorVelocities: ...
-    def __iter__(self) -> Iterator[float]: ...
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
-class DifferentialSwerveModuleVelocities:
+class DifferentialSwerveModuleVelocities(_WheelValues):
     """DifferentialSwerveModuleVelocities(wheelVelocity=0.0, azimuthVelocity=0.0)
 
     The motion of one differential swerve pod: the wheel's ground speed ``wheelVelocity``
@@ -116,36 +93,6 @@ class DifferentialSwerveModuleVelocities:
     ) -> DifferentialSwerveModuleVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
-    def plus(
-        self, other: DifferentialSwerveModuleVelocities
-    ) -> DifferentialSwerveModuleVelocities:
-        """Return the wheel-by-wheel sum."""
-
-    def minus(
-        self, other: DifferentialSwerveModuleVelocities
-    ) -> DifferentialSwerveModuleVelocities:
-        """Return the wheel-by-wheel difference."""
-
-    def unaryMinus(self) -> DifferentialSwerveModuleVelocities:
-        """Return every wheel negated."""
-
-    def times(self, scalar: float) -> DifferentialSwerveModuleVelocities:
-        """Return every wheel multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> DifferentialSwerveModuleVelocities:
-        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def __add__(
-        self, other: DifferentialSwerveModuleVelocities
-    ) -> DifferentialSwerveModuleVelocities: ...
-    def __sub__(
-        self, other: DifferentialSwerveModuleVelocities
-    ) -> DifferentialSwerveModuleVelocities: ...
-    def __neg__(self) -> DifferentialSwerveModuleVelocities: ...
-    def __mul__(self, other: float) -> DifferentialSwerveModuleVelocities: ...
-    def __rmul__(self, other: float) -> DifferentialSwerveModuleVelocities: ...
-    def __truediv__(self, other: float) -> DifferentialSwerveModuleVelocities: ...
-    def __iter__(self) -> Iterator[float]: ...
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 

@@ -17,24 +17,27 @@ calls: the pose history and the vision records live in arrays that grow only whe
 history needs more room, and returned poses come from the Pose2d freelist.
 """
 
-# Hand-written stub for the compiled module drivekin.estimator (estimator.pyx). Every
-# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
-# they match the runtime ``__doc__`` and that no public name is missing on either side.
+# Hand-written stub for the compiled module drivekin.estimator (estimator.pyx). The
+# docstrings are written from the compiled module's ``__doc__`` (the .pyx docstrings) by
+# scripts/stub_docstrings.py: edit them in the .pyx, rebuild and rerun the script.
+# tests/api/test_stubs.py checks that they match and that no public name is missing on
+# either side.
 #
-# At runtime the estimators derive from the private base _PoseEstimator; its methods are
-# declared on each public class instead.
+# As at runtime, the estimators derive from the private base _PoseEstimator, which
+# declares the methods they share.
 
 from collections.abc import Callable, Sequence
 from typing import final, overload
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import disjoint_base
 
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.differential import DifferentialDriveWheelPositions
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
-from drivekin.kinematics import SwerveDriveKinematics, SwerveModulePosition
 from drivekin.mecanum import MecanumDriveKinematics, MecanumDriveWheelPositions
+from drivekin.swerve import SwerveDriveKinematics, SwerveModulePosition
 
 _StdDevs = Sequence[float] | npt.NDArray[np.float64]
 _ModulePositions = Sequence[SwerveModulePosition] | npt.NDArray[np.float64]
@@ -58,8 +61,51 @@ class MathSharedStore:
         restores ``time.monotonic``. Use it to run estimators on simulated or recorded
         time."""
 
+@disjoint_base
+class _PoseEstimator:
+    """Everything but the drivetrain: the pose history, the vision records and the four
+    resets shared by every estimator.
+    """
+
+    def getEstimatedPosition(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+
+    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
+        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
+        history) with the vision corrections known for that time, or None before the
+        first update after construction or a reset."""
+
+    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
+        """Set how much vision is trusted: standard deviations of the measured x (m),
+        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
+        values trust vision less."""
+
+    def addVisionMeasurement(
+        self,
+        visionRobotPose: Pose2d,
+        timestamp: float,
+        visionMeasurementStdDevs: _StdDevs | None = None,
+    ) -> None:
+        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
+        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
+        become the standard deviations for this and later measurements (as
+        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
+        newest odometry sample is ignored, as is any before the first update."""
+
+    def resetPose(self, pose: Pose2d) -> None:
+        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
+        and every vision correction."""
+
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Reset the position, keeping the heading and the latest vision correction of
+        the heading; the history is cleared."""
+
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Reset the heading, keeping the position and the latest vision correction of
+        the position; the history is cleared."""
+
 @final
-class SwerveDrivePoseEstimator:
+class SwerveDrivePoseEstimator(_PoseEstimator):
     """SwerveDrivePoseEstimator(kinematics, gyroAngle, modulePositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
 
     Swerve odometry (any N ≥ 2 modules) fused with vision. Module positions as for
@@ -91,45 +137,8 @@ class SwerveDrivePoseEstimator:
         """Reset the odometry (gyro and module baselines, pose) and forget the history
         and every vision correction."""
 
-    def getEstimatedPosition(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
-        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
-        history) with the vision corrections known for that time, or None before the
-        first update after construction or a reset."""
-
-    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
-        """Set how much vision is trusted: standard deviations of the measured x (m),
-        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
-        values trust vision less."""
-
-    def addVisionMeasurement(
-        self,
-        visionRobotPose: Pose2d,
-        timestamp: float,
-        visionMeasurementStdDevs: _StdDevs | None = None,
-    ) -> None:
-        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
-        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
-        become the standard deviations for this and later measurements (as
-        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
-        newest odometry sample is ignored, as is any before the first update."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
-        and every vision correction."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Reset the position, keeping the heading and the latest vision correction of
-        the heading; the history is cleared."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Reset the heading, keeping the position and the latest vision correction of
-        the position; the history is cleared."""
-
 @final
-class MecanumDrivePoseEstimator:
+class MecanumDrivePoseEstimator(_PoseEstimator):
     """MecanumDrivePoseEstimator(kinematics, gyroAngle, wheelPositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.45, 0.45, 0.45))
 
     Mecanum odometry fused with vision; standard deviations of x (m), y (m) and heading
@@ -159,45 +168,8 @@ class MecanumDrivePoseEstimator:
     ) -> None:
         """Reset the odometry and forget the history and every vision correction."""
 
-    def getEstimatedPosition(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
-        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
-        history) with the vision corrections known for that time, or None before the
-        first update after construction or a reset."""
-
-    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
-        """Set how much vision is trusted: standard deviations of the measured x (m),
-        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
-        values trust vision less."""
-
-    def addVisionMeasurement(
-        self,
-        visionRobotPose: Pose2d,
-        timestamp: float,
-        visionMeasurementStdDevs: _StdDevs | None = None,
-    ) -> None:
-        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
-        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
-        become the standard deviations for this and later measurements (as
-        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
-        newest odometry sample is ignored, as is any before the first update."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
-        and every vision correction."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Reset the position, keeping the heading and the latest vision correction of
-        the heading; the history is cleared."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Reset the heading, keeping the position and the latest vision correction of
-        the position; the history is cleared."""
-
 @final
-class DifferentialDrivePoseEstimator:
+class DifferentialDrivePoseEstimator(_PoseEstimator):
     """DifferentialDrivePoseEstimator(gyroAngle, leftDistance, rightDistance, initialPose, stateStdDevs=(0.02, 0.02, 0.01), visionMeasurementStdDevs=(0.1, 0.1, 0.1))
 
     Differential-drive odometry fused with vision (2027: no kinematics argument).
@@ -251,45 +223,8 @@ class DifferentialDrivePoseEstimator:
         rightDistance: Pose2d,
     ) -> None: ...
 
-    def getEstimatedPosition(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
-        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
-        history) with the vision corrections known for that time, or None before the
-        first update after construction or a reset."""
-
-    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
-        """Set how much vision is trusted: standard deviations of the measured x (m),
-        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
-        values trust vision less."""
-
-    def addVisionMeasurement(
-        self,
-        visionRobotPose: Pose2d,
-        timestamp: float,
-        visionMeasurementStdDevs: _StdDevs | None = None,
-    ) -> None:
-        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
-        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
-        become the standard deviations for this and later measurements (as
-        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
-        newest odometry sample is ignored, as is any before the first update."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
-        and every vision correction."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Reset the position, keeping the heading and the latest vision correction of
-        the heading; the history is cleared."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Reset the heading, keeping the position and the latest vision correction of
-        the position; the history is cleared."""
-
 @final
-class TwoDeadWheelPoseEstimator:
+class TwoDeadWheelPoseEstimator(_PoseEstimator):
     """TwoDeadWheelPoseEstimator(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
 
     TwoDeadWheelOdometry (a forward wheel at y = xWheelYPos, a left wheel at
@@ -321,45 +256,8 @@ class TwoDeadWheelPoseEstimator:
     ) -> None:
         """Reset the odometry and forget the history and every vision correction."""
 
-    def getEstimatedPosition(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
-        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
-        history) with the vision corrections known for that time, or None before the
-        first update after construction or a reset."""
-
-    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
-        """Set how much vision is trusted: standard deviations of the measured x (m),
-        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
-        values trust vision less."""
-
-    def addVisionMeasurement(
-        self,
-        visionRobotPose: Pose2d,
-        timestamp: float,
-        visionMeasurementStdDevs: _StdDevs | None = None,
-    ) -> None:
-        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
-        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
-        become the standard deviations for this and later measurements (as
-        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
-        newest odometry sample is ignored, as is any before the first update."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
-        and every vision correction."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Reset the position, keeping the heading and the latest vision correction of
-        the heading; the history is cleared."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Reset the heading, keeping the position and the latest vision correction of
-        the position; the history is cleared."""
-
 @final
-class DeadWheelPoseEstimator:
+class DeadWheelPoseEstimator(_PoseEstimator):
     """DeadWheelPoseEstimator(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d(), stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
 
     DeadWheelOdometry (any dead-wheel layout, with or without a gyro; distances in m)
@@ -395,39 +293,3 @@ class DeadWheelPoseEstimator:
         """Reset the odometry (``gyroAngle`` None without a gyro) and forget the history
         and every vision correction."""
 
-    def getEstimatedPosition(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def sampleAt(self, timestamp: float, /) -> Pose2d | None:
-        """Return the estimated pose at ``timestamp`` (s; clamped to the 1.5 s of stored
-        history) with the vision corrections known for that time, or None before the
-        first update after construction or a reset."""
-
-    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
-        """Set how much vision is trusted: standard deviations of the measured x (m),
-        y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
-        values trust vision less."""
-
-    def addVisionMeasurement(
-        self,
-        visionRobotPose: Pose2d,
-        timestamp: float,
-        visionMeasurementStdDevs: _StdDevs | None = None,
-    ) -> None:
-        """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
-        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
-        become the standard deviations for this and later measurements (as
-        :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
-        newest odometry sample is ignored, as is any before the first update."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
-        and every vision correction."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Reset the position, keeping the heading and the latest vision correction of
-        the heading; the history is cleared."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Reset the heading, keeping the position and the latest vision correction of
-        the position; the history is cleared."""

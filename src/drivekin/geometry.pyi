@@ -6,15 +6,21 @@ All classes except :class:`Twist2d` are immutable. Equality uses WPILib's tolera
 (1e-9), so the immutable classes are deliberately unhashable.
 """
 
-# Hand-written stub for the compiled module drivekin.geometry (geometry.pyx). Every
-# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
-# they match the runtime ``__doc__`` and that no public name is missing on either side.
+# Hand-written stub for the compiled module drivekin.geometry (geometry.pyx). The
+# docstrings are written from the compiled module's ``__doc__`` (the .pyx docstrings) by
+# scripts/stub_docstrings.py: edit them in the .pyx, rebuild and rerun the script.
+# tests/api/test_stubs.py checks that they match and that no public name is missing on
+# either side.
+#
+# As at runtime, Pose2d and Transform2d derive from the private base _Frame2d, which
+# declares the members they share (typed with Self).
 
 from collections.abc import Iterable, Iterator
 from typing import ClassVar, final, overload
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import Self, disjoint_base
 
 @final
 class Translation2d:
@@ -220,25 +226,10 @@ class Rotation2d:
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
-@final
-class Pose2d:
-    """Pose2d() or Pose2d(translation, rotation) or Pose2d(x, y, rotation) or Pose2d(matrix)
+@disjoint_base
+class _Frame2d:
+    """Shared accessors of Pose2d and Transform2d (a translation in m and a rotation)."""
 
-    A robot pose on the field: position in m and heading as a :class:`Rotation2d`.
-    ``Pose2d(matrix)`` takes a 3×3 homogeneous float64 numpy array (see :meth:`toMatrix`).
-    Immutable; ``==`` compares translation within 1e-9 m and rotation within 1e-9.
-    """
-
-    kZero: ClassVar[Pose2d]
-
-    @overload
-    def __init__(self) -> None: ...
-    @overload
-    def __init__(self, translation: Translation2d, rotation: Rotation2d) -> None: ...
-    @overload
-    def __init__(self, x: float, y: float, rotation: Rotation2d) -> None: ...
-    @overload
-    def __init__(self, matrix: npt.NDArray[np.float64], /) -> None: ...
     @property
     def x(self) -> float:
         """X component of the translation, m."""
@@ -259,6 +250,40 @@ class Pose2d:
     def getRotation(self) -> Rotation2d:
         """Return the rotation part (Rotation2d)."""
 
+    def times(self, scalar: float) -> Self:
+        """Return (translation · scalar, rotation.times(scalar))."""
+
+    def div(self, scalar: float) -> Self:
+        """Return ``times(1 / scalar)``."""
+
+    def toMatrix(self) -> npt.NDArray[np.float64]:
+        """Return the 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y], [0, 0, 1]]``."""
+
+    def __mul__(self, other: float) -> Self: ...
+    def __rmul__(self, other: float) -> Self: ...
+    def __truediv__(self, other: float) -> Self: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
+
+@final
+class Pose2d(_Frame2d):
+    """Pose2d() or Pose2d(translation, rotation) or Pose2d(x, y, rotation) or Pose2d(matrix)
+
+    A robot pose on the field: position in m and heading as a :class:`Rotation2d`.
+    ``Pose2d(matrix)`` takes a 3×3 homogeneous float64 numpy array (see :meth:`toMatrix`).
+    Immutable; ``==`` compares translation within 1e-9 m and rotation within 1e-9.
+    """
+
+    kZero: ClassVar[Pose2d]
+
+    @overload
+    def __init__(self) -> None: ...
+    @overload
+    def __init__(self, translation: Translation2d, rotation: Rotation2d) -> None: ...
+    @overload
+    def __init__(self, x: float, y: float, rotation: Rotation2d) -> None: ...
+    @overload
+    def __init__(self, matrix: npt.NDArray[np.float64], /) -> None: ...
     def transformBy(self, other: Transform2d) -> Pose2d:
         """Return this pose moved by ``other``, expressed in this pose's frame."""
 
@@ -277,12 +302,6 @@ class Pose2d:
     def rotateAround(self, point: Translation2d, rot: Rotation2d) -> Pose2d:
         """Return the pose rotated by ``rot`` about ``point``; the heading turns by ``rot``."""
 
-    def times(self, scalar: float) -> Pose2d:
-        """Return (translation · scalar, rotation.times(scalar))."""
-
-    def div(self, scalar: float) -> Pose2d:
-        """Return ``times(1 / scalar)``."""
-
     def exp(self, twist: Twist2d) -> Pose2d:
         """Return ``self.plus(twist.exp())`` in one call (the WPILib 2026 ``Pose2d.exp``;
         2027 spells it ``pose.plus(twist.exp())`` and both give the same numbers)."""
@@ -299,9 +318,6 @@ class Pose2d:
 
         ``t < 0`` returns this pose and ``t ≥ 1`` returns ``endValue`` (WPILib's clamp)."""
 
-    def toMatrix(self) -> npt.NDArray[np.float64]:
-        """Return the 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y], [0, 0, 1]]``."""
-
     @staticmethod
     def fromFeet(x: float, y: float, angle: Rotation2d | float) -> Pose2d:
         """Return the pose at (``x``, ``y``) given in feet, in metres, with heading
@@ -310,14 +326,9 @@ class Pose2d:
 
     def __add__(self, other: Transform2d) -> Pose2d: ...
     def __sub__(self, other: Pose2d) -> Transform2d: ...
-    def __mul__(self, other: float) -> Pose2d: ...
-    def __rmul__(self, other: float) -> Pose2d: ...
-    def __truediv__(self, other: float) -> Pose2d: ...
-    def __eq__(self, other: object, /) -> bool: ...
-    __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
-class Transform2d:
+class Transform2d(_Frame2d):
     """Transform2d() or Transform2d(translation, rotation) or Transform2d(x, y, rotation)
     or Transform2d(initial, last) or Transform2d(matrix)
 
@@ -338,44 +349,15 @@ class Transform2d:
     def __init__(self, matrix: npt.NDArray[np.float64], /) -> None: ...
     @overload
     def __init__(self, initial: Pose2d, last: Pose2d) -> None: ...
-    @property
-    def x(self) -> float:
-        """X component of the translation, m."""
-
-    @property
-    def y(self) -> float:
-        """Y component of the translation, m."""
-
-    def getX(self) -> float:
-        """Return the x component of the translation, m."""
-
-    def getY(self) -> float:
-        """Return the y component of the translation, m."""
-
-    def getTranslation(self) -> Translation2d:
-        """Return the translation part (Translation2d, m)."""
-
-    def getRotation(self) -> Rotation2d:
-        """Return the rotation part (Rotation2d)."""
-
     def inverse(self) -> Transform2d:
         """Return the transform that undoes this one."""
 
     def plus(self, other: Transform2d) -> Transform2d:
         """Return this transform followed by ``other``."""
 
-    def times(self, scalar: float) -> Transform2d:
-        """Return (translation · scalar, rotation.times(scalar))."""
-
-    def div(self, scalar: float) -> Transform2d:
-        """Return ``times(1 / scalar)``."""
-
     def log(self) -> Twist2d:
         """Return the Twist2d whose :meth:`Twist2d.exp` is this transform (the
         constant-curvature arc; the inverse of exp)."""
-
-    def toMatrix(self) -> npt.NDArray[np.float64]:
-        """Return the 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y], [0, 0, 1]]``."""
 
     @staticmethod
     def fromFeet(x: float, y: float, angle: Rotation2d | float) -> Transform2d:
@@ -384,11 +366,6 @@ class Transform2d:
         robotpy-wpimath's ``Transform2d.fromFeet`` (1 ft = 0.3048 m, same bits)."""
 
     def __add__(self, other: Transform2d) -> Transform2d: ...
-    def __mul__(self, other: float) -> Transform2d: ...
-    def __rmul__(self, other: float) -> Transform2d: ...
-    def __truediv__(self, other: float) -> Transform2d: ...
-    def __eq__(self, other: object, /) -> bool: ...
-    __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
 class Twist2d:

@@ -5,27 +5,26 @@ rear left, rear right. For a wheel at (x, y) relative to the centre of rotation 
 inverse rows are FL/RR ``[1, −1, −(x + y)]`` and FR/RL ``[1, 1, x − y]``.
 """
 
-# Hand-written stub for the compiled module drivekin.mecanum (mecanum.pyx). Every
-# docstring is copied verbatim from the .pyx sources; tests/api/test_stubs.py checks that
-# they match the runtime ``__doc__`` and that no public name is missing on either side.
+# Hand-written stub for the compiled module drivekin.mecanum (mecanum.pyx). The
+# docstrings are written from the compiled module's ``__doc__`` (the .pyx docstrings) by
+# scripts/stub_docstrings.py: edit them in the .pyx, rebuild and rerun the script.
+# tests/api/test_stubs.py checks that they match and that no public name is missing on
+# either side.
 #
-# At runtime the three wheel-value classes derive from the private bases _Wheel4 (this
-# module) and drivekin._core.wheels._WheelValues; the inherited members are declared on each
-# public class instead, so they carry the precise types.
+# As at runtime, the three wheel-value classes derive from the private bases _Wheel4
+# (this module) and drivekin._core.wheels._WheelValues (_core/wheels.pyi), and
+# MecanumDriveKinematics from drivekin._core.drivetrain.Drivetrain; each class declares
+# only the members it defines itself (inherited ones are typed with Self).
 
-from collections.abc import Iterator
 from typing import ClassVar, final
 
+from drivekin._core.drivetrain import Drivetrain
+from drivekin._core.wheels import _WheelValues
+from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.geometry import Translation2d, Twist2d
-from drivekin.kinematics import ChassisAccelerations, ChassisVelocities
 
-@final
-class MecanumDriveWheelVelocities:
-    """MecanumDriveWheelVelocities(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
-
-    Wheel velocities of a mecanum drive, m/s. Mutable. As in WPILib Java there is no value
-    equality: ``==`` is identity.
-    """
+class _Wheel4(_WheelValues):
+    """Front-left, front-right, rear-left and rear-right wheel values."""
 
     def __init__(
         self,
@@ -34,12 +33,6 @@ class MecanumDriveWheelVelocities:
         rearLeft: float = 0.0,
         rearRight: float = 0.0,
     ) -> None: ...
-    @staticmethod
-    def fromFeet(
-        frontLeft: float, frontRight: float, rearLeft: float, rearRight: float
-    ) -> MecanumDriveWheelVelocities:
-        """Return the wheel velocities given in ft/s, in m/s (the same bits as
-        robotpy-wpimath's ``MecanumDriveWheelSpeeds.fromFeet``)."""
     @property
     def frontLeft(self) -> float:
         """Front-left wheel value (m/s, m or m/s² depending on the class)."""
@@ -64,6 +57,21 @@ class MecanumDriveWheelVelocities:
 
     @rearRight.setter
     def rearRight(self, value: float) -> None: ...
+
+@final
+class MecanumDriveWheelVelocities(_Wheel4):
+    """MecanumDriveWheelVelocities(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+
+    Wheel velocities of a mecanum drive, m/s. Mutable. As in WPILib Java there is no value
+    equality: ``==`` is identity.
+    """
+
+    @staticmethod
+    def fromFeet(
+        frontLeft: float, frontRight: float, rearLeft: float, rearRight: float
+    ) -> MecanumDriveWheelVelocities:
+        """Return the wheel velocities given in ft/s, in m/s (the same bits as
+        robotpy-wpimath's ``MecanumDriveWheelSpeeds.fromFeet``)."""
     def desaturate(self, attainableMaxSpeed: float, /) -> MecanumDriveWheelVelocities:
         """Return new velocities scaled so no wheel exceeds ``attainableMaxSpeed`` (m/s),
         keeping their ratios; an unchanged copy if already within it (2027)."""
@@ -76,68 +84,14 @@ class MecanumDriveWheelVelocities:
     ) -> MecanumDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
-    def plus(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities:
-        """Return the wheel-by-wheel sum."""
-
-    def minus(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities:
-        """Return the wheel-by-wheel difference."""
-
-    def unaryMinus(self) -> MecanumDriveWheelVelocities:
-        """Return every wheel negated."""
-
-    def times(self, scalar: float) -> MecanumDriveWheelVelocities:
-        """Return every wheel multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> MecanumDriveWheelVelocities:
-        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def __add__(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities: ...
-    def __sub__(self, other: MecanumDriveWheelVelocities) -> MecanumDriveWheelVelocities: ...
-    def __neg__(self) -> MecanumDriveWheelVelocities: ...
-    def __mul__(self, other: float) -> MecanumDriveWheelVelocities: ...
-    def __rmul__(self, other: float) -> MecanumDriveWheelVelocities: ...
-    def __truediv__(self, other: float) -> MecanumDriveWheelVelocities: ...
-    def __iter__(self) -> Iterator[float]: ...
-
 @final
-class MecanumDriveWheelPositions:
+class MecanumDriveWheelPositions(_Wheel4):
     """MecanumDriveWheelPositions(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
 
     Distances driven by each wheel, m. Mutable; ``==`` compares each wheel within 1e-9 m
     (so instances are unhashable).
     """
 
-    def __init__(
-        self,
-        frontLeft: float = 0.0,
-        frontRight: float = 0.0,
-        rearLeft: float = 0.0,
-        rearRight: float = 0.0,
-    ) -> None: ...
-    @property
-    def frontLeft(self) -> float:
-        """Front-left wheel value (m/s, m or m/s² depending on the class)."""
-
-    @frontLeft.setter
-    def frontLeft(self, value: float) -> None: ...
-    @property
-    def frontRight(self) -> float:
-        """Front-right wheel value."""
-
-    @frontRight.setter
-    def frontRight(self, value: float) -> None: ...
-    @property
-    def rearLeft(self) -> float:
-        """Rear-left wheel value."""
-
-    @rearLeft.setter
-    def rearLeft(self, value: float) -> None: ...
-    @property
-    def rearRight(self) -> float:
-        """Rear-right wheel value."""
-
-    @rearRight.setter
-    def rearRight(self, value: float) -> None: ...
     def copy(self) -> MecanumDriveWheelPositions:
         """Return an independent copy."""
 
@@ -146,99 +100,23 @@ class MecanumDriveWheelPositions:
     ) -> MecanumDriveWheelPositions:
         """Linear interpolation; ``t`` is not clamped."""
 
-    def plus(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions:
-        """Return the wheel-by-wheel sum."""
-
-    def minus(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions:
-        """Return the wheel-by-wheel difference."""
-
-    def unaryMinus(self) -> MecanumDriveWheelPositions:
-        """Return every wheel negated."""
-
-    def times(self, scalar: float) -> MecanumDriveWheelPositions:
-        """Return every wheel multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> MecanumDriveWheelPositions:
-        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def __add__(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions: ...
-    def __sub__(self, other: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions: ...
-    def __neg__(self) -> MecanumDriveWheelPositions: ...
-    def __mul__(self, other: float) -> MecanumDriveWheelPositions: ...
-    def __rmul__(self, other: float) -> MecanumDriveWheelPositions: ...
-    def __truediv__(self, other: float) -> MecanumDriveWheelPositions: ...
-    def __iter__(self) -> Iterator[float]: ...
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
-class MecanumDriveWheelAccelerations:
+class MecanumDriveWheelAccelerations(_Wheel4):
     """MecanumDriveWheelAccelerations(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
 
     Wheel accelerations of a mecanum drive, m/s². Mutable; ``==`` is identity.
     """
 
-    def __init__(
-        self,
-        frontLeft: float = 0.0,
-        frontRight: float = 0.0,
-        rearLeft: float = 0.0,
-        rearRight: float = 0.0,
-    ) -> None: ...
-    @property
-    def frontLeft(self) -> float:
-        """Front-left wheel value (m/s, m or m/s² depending on the class)."""
-
-    @frontLeft.setter
-    def frontLeft(self, value: float) -> None: ...
-    @property
-    def frontRight(self) -> float:
-        """Front-right wheel value."""
-
-    @frontRight.setter
-    def frontRight(self, value: float) -> None: ...
-    @property
-    def rearLeft(self) -> float:
-        """Rear-left wheel value."""
-
-    @rearLeft.setter
-    def rearLeft(self, value: float) -> None: ...
-    @property
-    def rearRight(self) -> float:
-        """Rear-right wheel value."""
-
-    @rearRight.setter
-    def rearRight(self, value: float) -> None: ...
     def interpolate(
         self, endValue: MecanumDriveWheelAccelerations, t: float
     ) -> MecanumDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
-    def plus(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations:
-        """Return the wheel-by-wheel sum."""
-
-    def minus(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations:
-        """Return the wheel-by-wheel difference."""
-
-    def unaryMinus(self) -> MecanumDriveWheelAccelerations:
-        """Return every wheel negated."""
-
-    def times(self, scalar: float) -> MecanumDriveWheelAccelerations:
-        """Return every wheel multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> MecanumDriveWheelAccelerations:
-        """Return every wheel divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def __add__(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations: ...
-    def __sub__(self, other: MecanumDriveWheelAccelerations) -> MecanumDriveWheelAccelerations: ...
-    def __neg__(self) -> MecanumDriveWheelAccelerations: ...
-    def __mul__(self, other: float) -> MecanumDriveWheelAccelerations: ...
-    def __rmul__(self, other: float) -> MecanumDriveWheelAccelerations: ...
-    def __truediv__(self, other: float) -> MecanumDriveWheelAccelerations: ...
-    def __iter__(self) -> Iterator[float]: ...
-
 @final
-class MecanumDriveKinematics:
+class MecanumDriveKinematics(Drivetrain):
     """MecanumDriveKinematics(frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
 
     Kinematics of a mecanum drive with the four wheel positions (Translation2d, m, robot

@@ -8,27 +8,47 @@ matter. ``update`` returns the new pose; it allocates nothing beyond that Pose2d
 comes from a freelist, so a 50 Hz loop runs without allocator calls.
 """
 
-# Hand-written stub for the compiled module drivekin.odometry (odometry.pyx). Every
-# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
-# they match the runtime ``__doc__`` and that no public name is missing on either side.
+# Hand-written stub for the compiled module drivekin.odometry (odometry.pyx). The
+# docstrings are written from the compiled module's ``__doc__`` (the .pyx docstrings) by
+# scripts/stub_docstrings.py: edit them in the .pyx, rebuild and rerun the script.
+# tests/api/test_stubs.py checks that they match and that no public name is missing on
+# either side.
 #
-# At runtime the odometry classes derive from the private base _Odometry; its
-# methods are declared on each public class instead.
+# As at runtime, the odometry classes derive from the private base _Odometry, which
+# declares the methods they share.
 
 from collections.abc import Sequence
 from typing import final
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import disjoint_base
 
+from drivekin.chassis import ChassisVelocities
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
-from drivekin.kinematics import ChassisVelocities
-from drivekin.kinematics import SwerveDriveKinematics, SwerveModulePosition
 from drivekin.mecanum import MecanumDriveKinematics, MecanumDriveWheelPositions
+from drivekin.swerve import SwerveDriveKinematics, SwerveModulePosition
+
+@disjoint_base
+class _Odometry:
+    """Pose state and the resets shared by every odometry class."""
+
+    def getPose(self) -> Pose2d:
+        """Return the current pose estimate (field frame, m)."""
+
+    def resetPose(self, pose: Pose2d) -> None:
+        """Set the pose; the gyro and wheel baselines are left as they are."""
+
+    def resetTranslation(self, translation: Translation2d) -> None:
+        """Set the position and keep the heading."""
+
+    def resetRotation(self, rotation: Rotation2d) -> None:
+        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
+        here that makes the next update report a wrong heading; drivekin does not.)"""
 
 @final
-class SwerveDriveOdometry:
+class SwerveDriveOdometry(_Odometry):
     """SwerveDriveOdometry(kinematics, gyroAngle, modulePositions, initialPose=Pose2d())
 
     Tracks a swerve robot's pose from N module positions (SwerveModulePosition objects or
@@ -58,21 +78,8 @@ class SwerveDriveOdometry:
         """Integrate the module-distance changes since the last call (at the current module
         angles) and the gyro change; return the new pose."""
 
-    def getPose(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Set the pose; the gyro and wheel baselines are left as they are."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Set the position and keep the heading."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
-        here that makes the next update report a wrong heading; drivekin does not.)"""
-
 @final
-class MecanumDriveOdometry:
+class MecanumDriveOdometry(_Odometry):
     """MecanumDriveOdometry(kinematics, gyroAngle, wheelPositions, initialPose=Pose2d())
 
     Tracks a mecanum robot's pose from MecanumDriveWheelPositions (m) and a gyro angle.
@@ -94,21 +101,8 @@ class MecanumDriveOdometry:
         """Integrate the wheel-distance changes since the last call and the gyro change;
         return the new pose."""
 
-    def getPose(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Set the pose; the gyro and wheel baselines are left as they are."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Set the position and keep the heading."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
-        here that makes the next update report a wrong heading; drivekin does not.)"""
-
 @final
-class DifferentialDriveOdometry:
+class DifferentialDriveOdometry(_Odometry):
     """DifferentialDriveOdometry(gyroAngle, leftDistance, rightDistance, initialPose=Pose2d())
 
     Tracks a differential-drive robot's pose from the left and right wheel distances (m)
@@ -131,21 +125,8 @@ class DifferentialDriveOdometry:
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
 
-    def getPose(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Set the pose; the gyro and wheel baselines are left as they are."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Set the position and keep the heading."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
-        here that makes the next update report a wrong heading; drivekin does not.)"""
-
 @final
-class TwoDeadWheelOdometry:
+class TwoDeadWheelOdometry(_Odometry):
     """TwoDeadWheelOdometry(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose=Pose2d())
 
     WPILib's two-dead-wheel odometry (goBILDA Pinpoint's layout): a forward-facing wheel
@@ -180,21 +161,8 @@ class TwoDeadWheelOdometry:
         velocities ``vx``, ``vy`` (m/s) and the gyro rate ``omega`` (rad/s):
         (vx + omega·xWheelYPos, vy − omega·yWheelXPos, omega)."""
 
-    def getPose(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Set the pose; the gyro and wheel baselines are left as they are."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Set the position and keep the heading."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
-        here that makes the next update report a wrong heading; drivekin does not.)"""
-
 @final
-class DeadWheelOdometry:
+class DeadWheelOdometry(_Odometry):
     """DeadWheelOdometry(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d())
 
     Tracks a robot's pose from N dead wheels (DeadWheelKinematics) and, optionally, a
@@ -230,15 +198,3 @@ class DeadWheelOdometry:
         """Integrate the wheel-distance changes (m) since the last call (and the gyro
         change, with a gyro); return the new pose."""
 
-    def getPose(self) -> Pose2d:
-        """Return the current pose estimate (field frame, m)."""
-
-    def resetPose(self, pose: Pose2d) -> None:
-        """Set the pose; the gyro and wheel baselines are left as they are."""
-
-    def resetTranslation(self, translation: Translation2d) -> None:
-        """Set the position and keep the heading."""
-
-    def resetRotation(self, rotation: Rotation2d) -> None:
-        """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
-        here that makes the next update report a wrong heading; drivekin does not.)"""

@@ -77,17 +77,41 @@ def _value(annotation: str, name: str, cls_name: str):
     return SAMPLES[annotation]()
 
 
+def _init_overloads(trees: dict[str, ast.Module], module: str, name: str) -> list:
+    """The ``__init__`` definitions of stub class ``name``: its own, or those inherited
+    from its stub bases (in the same stub or imported from another drivekin stub, as
+    ``_Wheel2.__init__`` is by the differential wheel values)."""
+    tree = trees[module]
+    classes = {n.name: n for n in tree.body if isinstance(n, ast.ClassDef)}
+    imported = {alias.asname or alias.name: (n.module.removeprefix("drivekin."), alias.name)
+                for n in tree.body if isinstance(n, ast.ImportFrom) and n.level == 0
+                and (n.module or "").startswith("drivekin.") for alias in n.names}
+    node = classes[name]
+    own = [i for i in node.body if isinstance(i, ast.FunctionDef) and i.name == "__init__"]
+    if own:
+        return own
+    for base in node.bases:
+        if isinstance(base, ast.Name) and base.id in classes:
+            inherited = _init_overloads(trees, module, base.id)
+        elif isinstance(base, ast.Name) and imported.get(base.id, ("",))[0] in trees:
+            inherited = _init_overloads(trees, *imported[base.id])
+        else:
+            continue
+        if inherited:
+            return inherited
+    return []
+
+
 def _overloads():
+    trees = {stub.stem: ast.parse(stub.read_text()) for stub in sorted(PKG_DIR.glob("*.pyi"))}
     cases = []
-    for stub in sorted(PKG_DIR.glob("*.pyi")):
-        tree = ast.parse(stub.read_text())
+    for module, tree in trees.items():
         for node in tree.body:
             if not isinstance(node, ast.ClassDef) or node.name.startswith("_"):
                 continue
-            for item in node.body:
+            for item in _init_overloads(trees, module, node.name):
                 # A *args constructor has no keyword parameters to check.
-                if (isinstance(item, ast.FunctionDef) and item.name == "__init__"
-                        and item.args.vararg is None):
+                if item.args.vararg is None:
                     cases.append(pytest.param(node.name, item.args,
                                               id=f"{node.name}-{item.lineno}"))
     return cases

@@ -5,22 +5,25 @@
    both sides, with the same kind (method, static method, property/attribute, ClassVar
    constant), and a stub property is writable exactly when the runtime one is.
 3. Each runtime ``__doc__`` of a public module, class, method and property equals the
-   stub docstring (both compared after :func:`inspect.cleandoc`). The stub docstrings are
-   verbatim copies of the ``.pyx`` docstrings, which are the source of truth.
+   stub docstring (both compared after :func:`inspect.cleandoc`). The ``.pyx``
+   docstrings are the source of truth; ``scripts/stub_docstrings.py`` writes the stub
+   docstrings from them, and its ``--check`` must find nothing to rewrite.
 4. ``python -m mypy.stubtest`` passes with ``stubtest-allowlist.txt`` (skipped without mypy).
 5. ``pyproject.toml`` ships the stubs and ``py.typed``.
 
 Cython's ``embedsignature=True`` (setup.py) prepends a signature line to the runtime
-docstrings; :func:`runtime_doc` removes exactly that line and nothing else, see there.
+docstrings; :func:`runtime_doc` (defined in ``scripts/stub_docstrings.py``, tested here)
+removes exactly that line and nothing else, see there.
 """
 from __future__ import annotations
 
 import ast
+import functools
 import importlib
 import importlib.machinery
+import importlib.util
 import inspect
 import os
-import re
 import subprocess
 import sys
 import types
@@ -34,6 +37,7 @@ import drivekin
 PKG_DIR = Path(drivekin.__file__).resolve().parent
 REPO = Path(__file__).resolve().parents[2]
 ALLOWLIST = Path(__file__).with_name("stubtest-allowlist.txt")
+SCRIPT = REPO / "scripts" / "stub_docstrings.py"
 
 
 # ---------------------------------------------------------------------------------------
@@ -43,8 +47,8 @@ def public(name: str) -> bool:
     return not name.startswith("_")
 
 
-def compiled_modules() -> list[str]:
-    """Public extension modules of the package (``drivekin/<name>.<ext-suffix>``)."""
+def compiled_modules(*, private: bool = False) -> list[str]:
+    """Public (or all) extension modules of the package (``drivekin/<name>.<ext-suffix>``)."""
     suffixes = sorted(importlib.machinery.EXTENSION_SUFFIXES, key=len, reverse=True)
     names = set()
     for path in PKG_DIR.iterdir():
@@ -52,7 +56,7 @@ def compiled_modules() -> list[str]:
             if path.name.endswith(suffix):
                 names.add(path.name[: -len(suffix)])
                 break
-    return sorted(n for n in names if n.isidentifier() and public(n))
+    return sorted(n for n in names if n.isidentifier() and (private or public(n)))
 
 
 def stub_files() -> list[str]:
@@ -60,6 +64,9 @@ def stub_files() -> list[str]:
 
 
 MODULES = compiled_modules()
+# Modules with a stub: the public ones and private ones whose classes the public stubs
+# derive from (drivekin._wheels).
+STUBBED = stub_files()
 
 
 def test_modules_discovered():
@@ -68,7 +75,9 @@ def test_modules_discovered():
 
 
 def test_every_compiled_module_has_a_stub_and_vice_versa():
-    assert sorted(MODULES) == stub_files()
+    assert sorted(MODULES) == [m for m in stub_files() if public(m)]
+    # A private module may have a stub (for the bases it provides); it must exist too.
+    assert sorted(set(stub_files()) - set(compiled_modules(private=True))) == []
 
 
 # ---------------------------------------------------------------------------------------
@@ -84,15 +93,21 @@ class StubMember:
 @dataclass
 class StubClass:
     doc: str | None
-    bases: list[str]
+    bases: list[str]               # as written: "_Wheel2", "_WheelValues", "_wheels._WheelValues"
     members: dict[str, StubMember]
 
 
 @dataclass
 class Stub:
+    module: str                    # "geometry", "_wheels"
     doc: str | None
     classes: dict[str, StubClass]
     others: set[str]               # public module-level functions, constants, aliases
+    functions: dict[str, StubMember]       # module-level functions (kind "function")
+    # Names bound to another stub module ("_wheels") or to a class of one: from
+    # drivekin._wheels import _WheelValues -> {"_WheelValues": ("_wheels", "_WheelValues")};
+    # import drivekin._wheels as _wheels -> {"_wheels": ("_wheels", None)}.
+    imports: dict[str, tuple[str, str | None]] = field(default_factory=dict)
 
 
 def _decorator_names(node: ast.FunctionDef) -> list[str]:
@@ -142,33 +157,85 @@ def _parse_class(node: ast.ClassDef) -> StubClass:
             for target in item.targets:
                 if isinstance(target, ast.Name):
                     members[target.id] = StubMember("constant")
-    bases = [b.id for b in node.bases if isinstance(b, ast.Name)]
+    bases = [ast.unparse(b) for b in node.bases if isinstance(b, (ast.Name, ast.Attribute))]
     return StubClass(ast.get_docstring(node, clean=True), bases, members)
 
 
+def _stub_module(dotted: str | None, level: int) -> str | None:
+    """The stub module ("_wheels") that ``from <dotted> import`` (``level`` dots) names,
+    or None if it is not a drivekin module with a stub."""
+    if level == 0 and dotted and dotted.startswith("drivekin."):
+        dotted = dotted[len("drivekin."):]
+    elif level != 1:
+        return None
+    if dotted and (PKG_DIR / f"{dotted}.pyi").is_file():
+        return dotted
+    return None
+
+
+@functools.lru_cache(maxsize=None)
 def parse_stub(module: str) -> Stub:
     tree = ast.parse((PKG_DIR / f"{module}.pyi").read_text(encoding="utf-8"))
     classes: dict[str, StubClass] = {}
     others: set[str] = set()
+    functions: dict[str, StubMember] = {}
+    imports: dict[str, tuple[str, str | None]] = {}
     for node in tree.body:
         if isinstance(node, ast.ClassDef):
             classes[node.name] = _parse_class(node)
         elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
             others.add(node.name)
+            functions.setdefault(node.name, StubMember("function")).docs.append(
+                ast.get_docstring(node, clean=True))
+        elif isinstance(node, ast.ImportFrom):
+            source = _stub_module(node.module, node.level)
+            for alias in node.names:
+                if source is not None:
+                    imports[alias.asname or alias.name] = (source, alias.name)
+                elif node.level == 1 and not node.module:      # from . import _wheels
+                    if (sub := _stub_module(alias.name, 1)) is not None:
+                        imports[alias.asname or alias.name] = (sub, None)
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                sub = _stub_module(alias.name, 0)
+                if sub is not None and alias.asname:
+                    imports[alias.asname] = (sub, None)
         elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
             others.add(node.target.id)
         elif isinstance(node, ast.Assign):
             others.update(t.id for t in node.targets if isinstance(t, ast.Name))
-    return Stub(ast.get_docstring(tree, clean=True), classes, others)
+    return Stub(module, ast.get_docstring(tree, clean=True), classes, others, functions, imports)
+
+
+def resolve_base(stub: Stub, base: str) -> tuple[Stub, str] | None:
+    """The stub and class name of a base class as written in ``stub``: a class of the same
+    file, or one of another stub imported by name or reached through an imported module
+    (``_wheels._WheelValues``); None for anything else (``object``, typing constructs)."""
+    head, _, attr = base.rpartition(".")
+    if not head:
+        if base in stub.classes:
+            return stub, base
+        if base in stub.imports:
+            module, name = stub.imports[base]
+            other = parse_stub(module)
+            if name is not None:
+                return resolve_base(other, name)
+    elif head in stub.imports and stub.imports[head][1] is None:
+        return resolve_base(parse_stub(stub.imports[head][0]), attr)
+    return None
 
 
 def stub_class_members(stub: Stub, name: str) -> dict[str, StubMember]:
-    """Members of a stub class including those of stub base classes in the same file."""
+    """Members of a stub class including those of its stub base classes, in the same file
+    or in another stub (drivekin._wheels._WheelValues)."""
     cls = stub.classes[name]
     members: dict[str, StubMember] = {}
     for base in reversed(cls.bases):
-        if base in stub.classes:
-            members.update(stub_class_members(stub, base))
+        found = resolve_base(stub, base)
+        assert found is not None or public(base.rpartition(".")[2]), (
+            f"{stub.module}.{name}: private base {base} not found in the stubs")
+        if found is not None:
+            members.update(stub_class_members(*found))
     members.update(cls.members)
     return members
 
@@ -217,76 +284,20 @@ def public_classes(mod: types.ModuleType) -> list[str]:
 
 
 # ---------------------------------------------------------------------------------------
-# Docstrings
-#
-# With embedsignature=True Cython prepends one line to the docstring of every def
-# function, and of every class that defines __init__ itself (the line is taken from it):
-#     methods:  "<__qualname__>(<parameters>)", e.g. "Translation2d.getDistance(self,
-#               Translation2d other)" or "_ChassisVector.plus(self, _ChassisVector other)"
-#     classes:  "<ClassName>(<__init__ parameters>)", e.g. "Pose2d(a=None, b=None, c=None)"
-# optionally followed by " -> <return type>", then a blank line and the source docstring
-# (or nothing when the source has no docstring). Classes that inherit __init__ (the
-# mecanum/differential wheel values) get no line, and properties and module docstrings are
-# left alone. Most class docstrings in the sources themselves start with a "Name(...)"
-# line (SwerveDriveKinematics's is even identical to the embedded one), so a class line is
-# removed only when the module was built with embedsignature and the class has its own
-# __init__, and then exactly one line, which must look like a signature.
+# Docstrings: the rule that strips Cython's embedded signature line lives in the script
+# that writes the stub docstrings (scripts/stub_docstrings.py), see runtime_doc there.
 
-def _signature_line(name: str) -> re.Pattern[str]:
-    # With binding=False a static method's __qualname__ is its bare name while Cython
-    # embeds "Class.name(...)": a bare name may carry one class prefix.
-    prefix = "" if "." in name else r"(?:\w+\.)?"
-    return re.compile(rf"{prefix}{re.escape(name)}\(.*\)(?:\s*->\s*\S.*)?")
+def _load_script(path: Path) -> types.ModuleType:
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[spec.name] = module            # dataclasses look their module up there
+    spec.loader.exec_module(module)
+    return module
 
 
-def _split_first_line(doc: str) -> tuple[str, str]:
-    """Split off the embedded signature line and the blank line after it."""
-    first, _, rest = doc.partition("\n")
-    blank, _, rest = rest.partition("\n")
-    if blank.strip():
-        raise AssertionError(f"embedded signature not followed by a blank line: {doc!r}")
-    return first, rest
-
-
-def module_embeds_signatures(mod: types.ModuleType) -> bool:
-    """True if the module was compiled with embedsignature: some method docstring starts
-    with its own qualified signature line."""
-    for cname in public_classes(mod):
-        for raw in runtime_class_members(getattr(mod, cname)).values():
-            func = raw.__func__ if isinstance(raw, (staticmethod, classmethod)) else raw
-            doc = getattr(func, "__doc__", None)
-            qualname = getattr(func, "__qualname__", None)
-            if callable(func) and doc and qualname and _signature_line(qualname).fullmatch(
-                    doc.partition("\n")[0]):
-                return True
-    return False
-
-
-_CYTHON_ATTRIBUTE_DOC = re.compile(r"\w+: '[^']*'")    # cdef public/readonly: "dx: 'double'"
-
-
-def runtime_doc(obj: object, *, kind: str, embeds: bool) -> str | None:
-    """``obj.__doc__`` without Cython's embedded signature line, cleaned; None if empty."""
-    doc = obj.__doc__
-    if kind == "class":
-        if doc is not None and embeds and "__init__" in vars(obj):
-            first, rest = _split_first_line(doc)
-            assert _signature_line(obj.__name__).fullmatch(first), (
-                f"{obj.__name__}: expected an embedded class signature, got {first!r}")
-            doc = rest
-    elif kind == "function":
-        if doc is not None:
-            first = doc.partition("\n")[0]
-            if _signature_line(obj.__qualname__).fullmatch(first):
-                doc = _split_first_line(doc)[1]
-            else:
-                assert not embeds, f"{obj.__qualname__}: embedded signature missing: {doc!r}"
-    elif kind == "attribute":
-        # Cython documents cdef public/readonly attributes with their C type only.
-        if doc is not None and _CYTHON_ATTRIBUTE_DOC.fullmatch(doc.strip()):
-            doc = None
-    doc = inspect.cleandoc(doc) if doc else None
-    return doc or None
+stub_docstrings = _load_script(SCRIPT)
+runtime_doc = stub_docstrings.runtime_doc
+module_embeds_signatures = stub_docstrings.module_embeds_signatures
 
 
 def _fail_unless_equal(where: str, runtime: str | None, stub: str | None, errors: list[str]):
@@ -326,6 +337,35 @@ def test_class_members_match(module):
             rk, sk = runtime_kind(runtime[name]), stubbed[name].kind
             if rk != sk:
                 errors.append(f"{cname}.{name}: runtime {rk}, stub {sk}")
+    assert not errors, "\n".join(errors)
+
+
+@pytest.mark.parametrize("module", STUBBED)
+def test_stub_classes_mirror_the_runtime_hierarchy(module):
+    """Each stub class that exists at runtime (private bases included) has the runtime
+    class's bases, and declares only members that the runtime class defines itself: an
+    inherited member is declared once, on the (private) base that defines it, and
+    reaches the subclasses through the stub's own inheritance."""
+    mod = importlib.import_module(f"drivekin.{module}")
+    stub = parse_stub(module)
+    errors = []
+    for cname, scls in sorted(stub.classes.items()):
+        cls = vars(mod).get(cname)
+        if not isinstance(cls, type):
+            continue                    # a stub-only helper (none today)
+        bases = []
+        for base in scls.bases:
+            found = resolve_base(stub, base)
+            bases.append(f"drivekin.{found[0].module}.{found[1]}" if found else base)
+        runtime_bases = [f"{b.__module__}.{b.__qualname__}" for b in cls.__bases__
+                         if b is not object]
+        if bases != runtime_bases:
+            errors.append(f"{cname}: stub bases {bases}, runtime bases {runtime_bases}")
+        for name in sorted(scls.members):
+            if name not in vars(cls):
+                owner = next((k.__qualname__ for k in cls.__mro__ if name in vars(k)), None)
+                errors.append(f"{cname}.{name}: declared on {cname} in the stub but defined "
+                              f"by {owner} at runtime")
     assert not errors, "\n".join(errors)
 
 
@@ -449,7 +489,7 @@ def test_signature_stripping_on_the_real_modules():
     assert cleaned.startswith(first + "\n")
 
 
-@pytest.mark.parametrize("module", MODULES)
+@pytest.mark.parametrize("module", STUBBED)
 def test_docstrings_match(module):
     mod = importlib.import_module(f"drivekin.{module}")
     stub = parse_stub(module)
@@ -476,7 +516,28 @@ def test_docstrings_match(module):
             else:
                 rt = runtime_doc(getattr(cls, name), kind="function", embeds=embeds)
             _fail_unless_equal(f"{cname}.{name}", rt, stub_doc, errors)
+    for name, member in sorted(stub.functions.items()):
+        if public(name) and callable(getattr(mod, name, None)):
+            distinct = set(d for d in member.docs if d is not None)
+            _fail_unless_equal(f"{module}.{name}", runtime_doc(
+                getattr(mod, name), kind="function", embeds=embeds),
+                distinct.pop() if len(distinct) == 1 else None, errors)
     assert not errors, "\n".join(errors)
+
+
+def test_stub_docstrings_are_generated():
+    """Every stub docstring is what scripts/stub_docstrings.py writes: a docstring edited in
+    a .pyx (and rebuilt) without rerunning the script fails here."""
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(
+        [str(PKG_DIR.parent)] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
+    proc = subprocess.run(
+        [sys.executable, str(SCRIPT), "--check", "--diff", "--package-dir", str(PKG_DIR)],
+        env=env, capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, (
+        "stub docstrings differ from the compiled modules' __doc__: run "
+        "`python scripts/stub_docstrings.py` and commit the stubs\n"
+        + proc.stdout + proc.stderr)
 
 
 # ---------------------------------------------------------------------------------------
@@ -489,7 +550,7 @@ def test_stubtest(tmp_path):
         [str(PKG_DIR.parent)] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
     env["MYPY_CACHE_DIR"] = str(tmp_path / "mypy_cache")   # keep the work tree clean
     cmd = [sys.executable, "-m", "mypy.stubtest",
-           *(f"drivekin.{m}" for m in MODULES), "--allowlist", str(ALLOWLIST)]
+           *(f"drivekin.{m}" for m in STUBBED), "--allowlist", str(ALLOWLIST)]
     proc = subprocess.run(cmd, cwd=tmp_path, env=env, capture_output=True, text=True,
                           timeout=300)
     assert proc.returncode == 0, proc.stdout + proc.stderr

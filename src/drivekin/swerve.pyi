@@ -1,4 +1,4 @@
-"""Chassis velocities/accelerations and N-module swerve kinematics (WPILib 2027).
+"""Swerve module values and N-module swerve kinematics (WPILib 2027).
 
 Units: m, m/s, m/s², rad, rad/s, rad/s², s. Robot frame: x forward, y left, CCW positive.
 
@@ -8,190 +8,48 @@ owned by the caller. Kinematics objects carry heading memory and are not thread-
 (as in WPILib); every method runs with the GIL held, so a call is never interleaved.
 """
 
-# Hand-written stub for the compiled module drivekin.kinematics (kinematics.pyx). Every
-# docstring is copied verbatim from the .pyx source; tests/api/test_stubs.py checks that
-# they match the runtime ``__doc__`` and that no public name is missing on either side.
+# Hand-written stub for the compiled module drivekin.swerve (swerve.pyx). The docstrings
+# are written from the compiled module's ``__doc__`` (the .pyx docstrings) by
+# scripts/stub_docstrings.py: edit them in the .pyx, rebuild and rerun the script.
+# tests/api/test_stubs.py checks that they match and that no public name is missing on
+# either side.
 #
-# At runtime ChassisVelocities/ChassisAccelerations derive from the private base
-# _ChassisVector and the three swerve module values from _ModuleVector. The inherited
-# methods are declared on each public class instead, so they carry the precise types
-# (``ChassisVelocities.plus(ChassisVelocities) -> ChassisVelocities``, ...).
+# As at runtime, the three swerve module values derive from the private base
+# _ModuleVector, and SwerveDriveKinematics from drivekin._core.drivetrain.Drivetrain
+# (_core/drivetrain.pyi); each class declares only the members it defines itself
+# (inherited ones are typed with Self).
 
 from collections.abc import Iterable, Iterator, Sequence
 from typing import ClassVar, final, overload
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import Self, disjoint_base
 
+from drivekin._core.drivetrain import Drivetrain
+from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.geometry import Rotation2d, Translation2d, Twist2d
 
-@final
-class ChassisVelocities:
-    """ChassisVelocities(vx=0.0, vy=0.0, omega=0.0)
+@disjoint_base
+class _ModuleVector:
+    """Shared behaviour of the swerve module values: a scalar and an angle."""
 
-    Robot velocity: ``vx`` forward and ``vy`` left in m/s, ``omega`` counter-clockwise in
-    rad/s. Robot-relative unless stated otherwise. Fields are mutable; ``==`` compares
-    each field exactly (0.0 == −0.0, NaN != NaN), as WPILib does.
-    """
-
-    def __init__(self, vx: float = 0.0, vy: float = 0.0, omega: float = 0.0) -> None: ...
-    @staticmethod
-    def fromFeet(vx: float = 0.0, vy: float = 0.0, omega: float = 0.0) -> ChassisVelocities:
-        """Return the velocity ``vx`` forward and ``vy`` left given in ft/s, ``omega`` in
-        rad/s, in m/s (the same bits as robotpy-wpimath's ``ChassisSpeeds.fromFeet``)."""
     @property
-    def vx(self) -> float:
-        """Forward velocity, m/s."""
+    def angle(self) -> Rotation2d:
+        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
 
-    @vx.setter
-    def vx(self, value: float) -> None: ...
-    @property
-    def vy(self) -> float:
-        """Leftward velocity, m/s."""
+    @angle.setter
+    def angle(self, value: Rotation2d) -> None: ...
+    def compareTo(self, other: Self) -> int:
+        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
+        must be of the same class."""
 
-    @vy.setter
-    def vy(self, value: float) -> None: ...
-    @property
-    def omega(self) -> float:
-        """Angular velocity, rad/s, counter-clockwise positive."""
-
-    @omega.setter
-    def omega(self, value: float) -> None: ...
-    def toTwist2d(self, dt: float) -> Twist2d:
-        """Return the Twist2d ``(vx·dt, vy·dt, omega·dt)`` travelled in ``dt`` seconds."""
-
-    def discretize(self, dt: float) -> ChassisVelocities:
-        """Return the velocities that, held constant for ``dt`` s along a straight line in
-        the rotating frame, end at the pose this constant twist would reach.
-
-        This removes the drift of swerve/mecanum drives that translate while turning.
-        ``omega·dt`` passes through a Rotation2d, so it is wrapped to [−π, π]
-        (omega = 4, dt = 1 gives omega' = 4 − 2π); ``dt = 0`` divides by zero (NaN/inf),
-        as in WPILib."""
-
-    def discretizeInto(self, dt: float, out: ChassisVelocities) -> None:
-        """Allocation-free :meth:`discretize`: write the result into ``out`` (may be self)."""
-
-    def toRobotRelative(self, robotAngle: Rotation2d) -> ChassisVelocities:
-        """Convert field-relative values to robot-relative ones.
-
-        ``robotAngle`` is the robot heading on the field; x and y are rotated by
-        −robotAngle, the angular component is unchanged."""
-
-    def toFieldRelative(self, robotAngle: Rotation2d) -> ChassisVelocities:
-        """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
-
-    def toRobotRelativeInto(self, robotAngle: Rotation2d, out: ChassisVelocities) -> None:
-        """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
-        same class; may be ``self``)."""
-
-    def toFieldRelativeInto(self, robotAngle: Rotation2d, out: ChassisVelocities) -> None:
-        """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
-        same class; may be ``self``)."""
-
-    def plus(self, other: ChassisVelocities) -> ChassisVelocities:
-        """Return the component-wise sum."""
-
-    def minus(self, other: ChassisVelocities) -> ChassisVelocities:
-        """Return the component-wise difference."""
-
-    def unaryMinus(self) -> ChassisVelocities:
-        """Return the negation of every component."""
-
-    def times(self, scalar: float) -> ChassisVelocities:
-        """Return every component multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> ChassisVelocities:
-        """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def interpolate(self, endValue: ChassisVelocities, t: float) -> ChassisVelocities:
-        """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
-        ``endValue`` (the objects themselves, as WPILib does)."""
-
-    def __add__(self, other: ChassisVelocities) -> ChassisVelocities: ...
-    def __sub__(self, other: ChassisVelocities) -> ChassisVelocities: ...
-    def __neg__(self) -> ChassisVelocities: ...
-    def __mul__(self, other: float) -> ChassisVelocities: ...
-    def __rmul__(self, other: float) -> ChassisVelocities: ...
-    def __truediv__(self, other: float) -> ChassisVelocities: ...
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
+    def __iter__(self) -> Iterator[float | Rotation2d]: ...
 
 @final
-class ChassisAccelerations:
-    """ChassisAccelerations(ax=0.0, ay=0.0, alpha=0.0)
-
-    Robot acceleration: ``ax`` forward and ``ay`` left in m/s², ``alpha`` counter-clockwise
-    in rad/s². Fields are mutable; ``==`` follows Java ``Double.compare`` (NaN == NaN,
-    0.0 != −0.0).
-    """
-
-    def __init__(self, ax: float = 0.0, ay: float = 0.0, alpha: float = 0.0) -> None: ...
-    @property
-    def ax(self) -> float:
-        """Forward acceleration, m/s²."""
-
-    @ax.setter
-    def ax(self, value: float) -> None: ...
-    @property
-    def ay(self) -> float:
-        """Leftward acceleration, m/s²."""
-
-    @ay.setter
-    def ay(self, value: float) -> None: ...
-    @property
-    def alpha(self) -> float:
-        """Angular acceleration, rad/s², counter-clockwise positive."""
-
-    @alpha.setter
-    def alpha(self, value: float) -> None: ...
-    def toRobotRelative(self, robotAngle: Rotation2d) -> ChassisAccelerations:
-        """Convert field-relative values to robot-relative ones.
-
-        ``robotAngle`` is the robot heading on the field; x and y are rotated by
-        −robotAngle, the angular component is unchanged."""
-
-    def toFieldRelative(self, robotAngle: Rotation2d) -> ChassisAccelerations:
-        """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
-
-    def toRobotRelativeInto(self, robotAngle: Rotation2d, out: ChassisAccelerations) -> None:
-        """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
-        same class; may be ``self``)."""
-
-    def toFieldRelativeInto(self, robotAngle: Rotation2d, out: ChassisAccelerations) -> None:
-        """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
-        same class; may be ``self``)."""
-
-    def plus(self, other: ChassisAccelerations) -> ChassisAccelerations:
-        """Return the component-wise sum."""
-
-    def minus(self, other: ChassisAccelerations) -> ChassisAccelerations:
-        """Return the component-wise difference."""
-
-    def unaryMinus(self) -> ChassisAccelerations:
-        """Return the negation of every component."""
-
-    def times(self, scalar: float) -> ChassisAccelerations:
-        """Return every component multiplied by ``scalar``."""
-
-    def div(self, scalar: float) -> ChassisAccelerations:
-        """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
-
-    def interpolate(self, endValue: ChassisAccelerations, t: float) -> ChassisAccelerations:
-        """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
-        ``endValue`` (the objects themselves, as WPILib does)."""
-
-    def __add__(self, other: ChassisAccelerations) -> ChassisAccelerations: ...
-    def __sub__(self, other: ChassisAccelerations) -> ChassisAccelerations: ...
-    def __neg__(self) -> ChassisAccelerations: ...
-    def __mul__(self, other: float) -> ChassisAccelerations: ...
-    def __rmul__(self, other: float) -> ChassisAccelerations: ...
-    def __truediv__(self, other: float) -> ChassisAccelerations: ...
-    def __eq__(self, other: object, /) -> bool: ...
-    __hash__: ClassVar[None]  # type: ignore[assignment]
-
-@final
-class SwerveModuleVelocity:
+class SwerveModuleVelocity(_ModuleVector):
     """SwerveModuleVelocity(velocity=0.0, angle=Rotation2d())
 
     The velocity of one swerve module: wheel ``velocity`` in m/s (may be negative) and the
@@ -206,12 +64,6 @@ class SwerveModuleVelocity:
 
     @velocity.setter
     def velocity(self, value: float) -> None: ...
-    @property
-    def angle(self) -> Rotation2d:
-        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
-
-    @angle.setter
-    def angle(self, value: Rotation2d) -> None: ...
     def optimize(self, currentAngle: Rotation2d) -> SwerveModuleVelocity:
         """Return the equivalent velocity that turns the module by at most 90°.
 
@@ -233,16 +85,8 @@ class SwerveModuleVelocity:
         """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
         [0, 1]."""
 
-    def compareTo(self, other: SwerveModuleVelocity) -> int:
-        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
-        must be of the same class."""
-
-    def __eq__(self, other: object, /) -> bool: ...
-    __hash__: ClassVar[None]  # type: ignore[assignment]
-    def __iter__(self) -> Iterator[float | Rotation2d]: ...
-
 @final
-class SwerveModulePosition:
+class SwerveModulePosition(_ModuleVector):
     """SwerveModulePosition(distance=0.0, angle=Rotation2d())
 
     The position of one swerve module: distance driven by the wheel in m and the module
@@ -256,28 +100,14 @@ class SwerveModulePosition:
 
     @distance.setter
     def distance(self, value: float) -> None: ...
-    @property
-    def angle(self) -> Rotation2d:
-        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
-
-    @angle.setter
-    def angle(self, value: Rotation2d) -> None: ...
     def copy(self) -> SwerveModulePosition:
         """Return an independent copy."""
 
     def interpolate(self, endValue: SwerveModulePosition, t: float) -> SwerveModulePosition:
         """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
 
-    def compareTo(self, other: SwerveModulePosition) -> int:
-        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
-        must be of the same class."""
-
-    def __eq__(self, other: object, /) -> bool: ...
-    __hash__: ClassVar[None]  # type: ignore[assignment]
-    def __iter__(self) -> Iterator[float | Rotation2d]: ...
-
 @final
-class SwerveModuleAcceleration:
+class SwerveModuleAcceleration(_ModuleVector):
     """SwerveModuleAcceleration(acceleration=0.0, angle=Rotation2d())
 
     The acceleration of one swerve module: magnitude in m/s² and the direction ``angle``
@@ -291,26 +121,12 @@ class SwerveModuleAcceleration:
 
     @acceleration.setter
     def acceleration(self, value: float) -> None: ...
-    @property
-    def angle(self) -> Rotation2d:
-        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
-
-    @angle.setter
-    def angle(self, value: Rotation2d) -> None: ...
     def interpolate(self, endValue: SwerveModuleAcceleration, t: float) -> SwerveModuleAcceleration:
         """Interpolate the magnitude linearly and the angle the short way; ``t`` is
         clamped to [0, 1]."""
 
-    def compareTo(self, other: SwerveModuleAcceleration) -> int:
-        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
-        must be of the same class."""
-
-    def __eq__(self, other: object, /) -> bool: ...
-    __hash__: ClassVar[None]  # type: ignore[assignment]
-    def __iter__(self) -> Iterator[float | Rotation2d]: ...
-
 @final
-class SwerveDriveKinematics:
+class SwerveDriveKinematics(Drivetrain):
     """SwerveDriveKinematics(*moduleTranslations)
 
     Kinematics of a swerve drive with N ≥ 2 modules at the given robot-relative
