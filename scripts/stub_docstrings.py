@@ -2,7 +2,8 @@
 """Write the docstrings of drivekin's type stubs from the compiled modules.
 
 The ``.pyx`` docstrings are the single source. For every ``src/drivekin/**/*.pyi`` that
-has a compiled module beside it, this script reads the module's runtime ``__doc__``
+has a compiled module beside it (subpackages included: ``_core/wheels.pyi`` is the stub
+of ``drivekin._core.wheels``), this script reads the module's runtime ``__doc__``
 strings (without the signature line that Cython's ``embedsignature=True`` prepends, see
 :func:`runtime_doc`) and writes them as the stub's docstrings: the module's, each
 class's (private bases included) and each public method's, static/class method's,

@@ -102,10 +102,19 @@ def _init_overloads(trees: dict[str, ast.Module], module: str, name: str) -> lis
     return []
 
 
+def _module_name(stub: Path) -> str:
+    """``geometry`` for ``drivekin/geometry.pyi``, ``_core.wheels`` for
+    ``drivekin/_core/wheels.pyi`` (the names ``from drivekin.<name> import`` uses)."""
+    return ".".join(stub.relative_to(PKG_DIR).with_suffix("").parts)
+
+
 def _overloads():
-    trees = {stub.stem: ast.parse(stub.read_text()) for stub in sorted(PKG_DIR.glob("*.pyi"))}
+    trees = {_module_name(stub): ast.parse(stub.read_text())
+             for stub in sorted(PKG_DIR.rglob("*.pyi"))}
     cases = []
     for module, tree in trees.items():
+        if any(part.startswith("_") for part in module.split(".")):
+            continue        # private modules (drivekin._core): classes not in drivekin
         for node in tree.body:
             if not isinstance(node, ast.ClassDef) or node.name.startswith("_"):
                 continue

@@ -1,6 +1,11 @@
-"""The hand-written type stubs (``src/drivekin/<module>.pyi``) against the compiled modules.
+"""The hand-written type stubs (``src/drivekin/**/<module>.pyi``) against the compiled modules.
 
-1. Every public compiled module has a stub and every stub a compiled module.
+Modules are named relative to the package, with dots: ``geometry``, ``_core.wheels``.
+A module is public when no part of its name starts with an underscore.
+
+1. Every public compiled module has a stub and every stub a compiled module (a private
+   one may have a stub, for the bases it provides; a ``.pyi`` beside a plain ``.py``
+   module would shadow it and is refused).
 2. Every public name (module level and class level, inherited members included) exists on
    both sides, with the same kind (method, static method, property/attribute, ClassVar
    constant), and a stub property is writable exactly when the runtime one is.
@@ -47,35 +52,55 @@ def public(name: str) -> bool:
     return not name.startswith("_")
 
 
+def public_module(dotted: str) -> bool:
+    """``geometry`` is public, ``_core.wheels`` (or ``app._x``) is not."""
+    return all(public(part) for part in dotted.split("."))
+
+
+def _dotted(path: Path, stem: str) -> str | None:
+    """``_core.wheels`` for ``PKG_DIR/_core/wheels.<suffix>``; None if a part of the name
+    is not an identifier (build leftovers)."""
+    parts = (*path.parent.relative_to(PKG_DIR).parts, stem)
+    return ".".join(parts) if all(p.isidentifier() for p in parts) else None
+
+
 def compiled_modules(*, private: bool = False) -> list[str]:
-    """Public (or all) extension modules of the package (``drivekin/<name>.<ext-suffix>``)."""
+    """Public (or all) extension modules of the package, at any depth
+    (``drivekin/<name>.<ext-suffix>``, ``drivekin/_core/<name>.<ext-suffix>``)."""
     suffixes = sorted(importlib.machinery.EXTENSION_SUFFIXES, key=len, reverse=True)
     names = set()
-    for path in PKG_DIR.iterdir():
+    for path in PKG_DIR.rglob("*"):
         for suffix in suffixes:                       # ".cpython-311-...so" before ".so"
-            if path.name.endswith(suffix):
-                names.add(path.name[: -len(suffix)])
+            if path.name.endswith(suffix) and path.is_file():
+                if (name := _dotted(path, path.name[: -len(suffix)])) is not None:
+                    names.add(name)
                 break
-    return sorted(n for n in names if n.isidentifier() and (private or public(n)))
+    return sorted(n for n in names if private or public_module(n))
 
 
 def stub_files() -> list[str]:
-    return sorted(p.stem for p in PKG_DIR.glob("*.pyi"))
+    return sorted(_dotted(p, p.stem) or str(p) for p in PKG_DIR.rglob("*.pyi"))
+
+
+def stub_path(module: str) -> Path:
+    return PKG_DIR.joinpath(*module.split(".")).with_suffix(".pyi")
 
 
 MODULES = compiled_modules()
 # Modules with a stub: the public ones and private ones whose classes the public stubs
-# derive from (drivekin._wheels).
+# derive from (drivekin._core.wheels, drivekin._core.drivetrain).
 STUBBED = stub_files()
 
 
 def test_modules_discovered():
-    # Guards the parametrisation below against an empty or broken discovery.
-    assert {"geometry", "kinematics"} <= set(MODULES), MODULES
+    # Guards the parametrisation below against an empty or broken discovery (also of the
+    # subpackages: the private compiled modules live in drivekin._core).
+    assert {"geometry", "chassis", "swerve"} <= set(MODULES), MODULES
+    assert {"_core.wheels", "_core.drivetrain"} <= set(compiled_modules(private=True))
 
 
 def test_every_compiled_module_has_a_stub_and_vice_versa():
-    assert sorted(MODULES) == [m for m in stub_files() if public(m)]
+    assert sorted(MODULES) == [m for m in stub_files() if public_module(m)]
     # A private module may have a stub (for the bases it provides); it must exist too.
     assert sorted(set(stub_files()) - set(compiled_modules(private=True))) == []
 
@@ -93,20 +118,23 @@ class StubMember:
 @dataclass
 class StubClass:
     doc: str | None
-    bases: list[str]               # as written: "_Wheel2", "_WheelValues", "_wheels._WheelValues"
+    bases: list[str]               # as written: "_Wheel2", "_WheelValues", "wheels._WheelValues"
     members: dict[str, StubMember]
 
 
 @dataclass
 class Stub:
-    module: str                    # "geometry", "_wheels"
+    module: str                    # "geometry", "_core.wheels"
     doc: str | None
     classes: dict[str, StubClass]
     others: set[str]               # public module-level functions, constants, aliases
     functions: dict[str, StubMember]       # module-level functions (kind "function")
-    # Names bound to another stub module ("_wheels") or to a class of one: from
-    # drivekin._wheels import _WheelValues -> {"_WheelValues": ("_wheels", "_WheelValues")};
-    # import drivekin._wheels as _wheels -> {"_wheels": ("_wheels", None)}.
+    # Names bound to another stub module ("_core.wheels") or to a class of one:
+    # from drivekin._core.wheels import _WheelValues
+    #     -> {"_WheelValues": ("_core.wheels", "_WheelValues")};
+    # from drivekin._core import wheels -> {"wheels": ("_core.wheels", None)};
+    # import drivekin._core.wheels as wheels -> {"wheels": ("_core.wheels", None)};
+    # import drivekin._core.wheels -> {"drivekin._core.wheels": ("_core.wheels", None)}.
     imports: dict[str, tuple[str, str | None]] = field(default_factory=dict)
 
 
@@ -161,21 +189,35 @@ def _parse_class(node: ast.ClassDef) -> StubClass:
     return StubClass(ast.get_docstring(node, clean=True), bases, members)
 
 
-def _stub_module(dotted: str | None, level: int) -> str | None:
-    """The stub module ("_wheels") that ``from <dotted> import`` (``level`` dots) names,
-    or None if it is not a drivekin module with a stub."""
-    if level == 0 and dotted and dotted.startswith("drivekin."):
-        dotted = dotted[len("drivekin."):]
-    elif level != 1:
-        return None
-    if dotted and (PKG_DIR / f"{dotted}.pyi").is_file():
-        return dotted
+def _package_relative(dotted: str | None, level: int, importer: str) -> str | None:
+    """The package-relative name ("_core.wheels", "" for drivekin itself) of the module
+    that ``from <dotted> import`` (``level`` dots) in the stub of ``importer`` names, or
+    None if it is outside drivekin."""
+    if level == 0:
+        if dotted == "drivekin":
+            return ""
+        if not dotted or not dotted.startswith("drivekin."):
+            return None
+        return dotted[len("drivekin."):]
+    package = importer.split(".")[:-1]             # "_core.wheels" -> ["_core"]
+    if level - 1 > len(package):
+        return None                                # above drivekin
+    parts = package[: len(package) - (level - 1)] + (dotted.split(".") if dotted else [])
+    return ".".join(parts)
+
+
+def _stub_module(dotted: str | None, level: int, importer: str) -> str | None:
+    """The stub module ("_core.wheels") that ``from <dotted> import`` (``level`` dots) in
+    the stub of ``importer`` names, or None if it is not a drivekin module with a stub."""
+    name = _package_relative(dotted, level, importer)
+    if name and stub_path(name).is_file():
+        return name
     return None
 
 
 @functools.lru_cache(maxsize=None)
 def parse_stub(module: str) -> Stub:
-    tree = ast.parse((PKG_DIR / f"{module}.pyi").read_text(encoding="utf-8"))
+    tree = ast.parse(stub_path(module).read_text(encoding="utf-8"))
     classes: dict[str, StubClass] = {}
     others: set[str] = set()
     functions: dict[str, StubMember] = {}
@@ -188,18 +230,20 @@ def parse_stub(module: str) -> Stub:
             functions.setdefault(node.name, StubMember("function")).docs.append(
                 ast.get_docstring(node, clean=True))
         elif isinstance(node, ast.ImportFrom):
-            source = _stub_module(node.module, node.level)
+            source = _stub_module(node.module, node.level, module)
+            package = _package_relative(node.module, node.level, module)
             for alias in node.names:
                 if source is not None:
                     imports[alias.asname or alias.name] = (source, alias.name)
-                elif node.level == 1 and not node.module:      # from . import _wheels
-                    if (sub := _stub_module(alias.name, 1)) is not None:
+                elif package is not None:           # from drivekin._core import wheels
+                    sub = f"{package}.{alias.name}" if package else alias.name
+                    if stub_path(sub).is_file():
                         imports[alias.asname or alias.name] = (sub, None)
         elif isinstance(node, ast.Import):
             for alias in node.names:
-                sub = _stub_module(alias.name, 0)
-                if sub is not None and alias.asname:
-                    imports[alias.asname] = (sub, None)
+                sub = _stub_module(alias.name, 0, module)
+                if sub is not None:                 # the full dotted name without "as"
+                    imports[alias.asname or alias.name] = (sub, None)
         elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
             others.add(node.target.id)
         elif isinstance(node, ast.Assign):
@@ -210,7 +254,8 @@ def parse_stub(module: str) -> Stub:
 def resolve_base(stub: Stub, base: str) -> tuple[Stub, str] | None:
     """The stub and class name of a base class as written in ``stub``: a class of the same
     file, or one of another stub imported by name or reached through an imported module
-    (``_wheels._WheelValues``); None for anything else (``object``, typing constructs)."""
+    (``wheels._WheelValues``, ``drivekin._core.wheels._WheelValues``); None for anything
+    else (``object``, typing constructs)."""
     head, _, attr = base.rpartition(".")
     if not head:
         if base in stub.classes:
@@ -227,7 +272,7 @@ def resolve_base(stub: Stub, base: str) -> tuple[Stub, str] | None:
 
 def stub_class_members(stub: Stub, name: str) -> dict[str, StubMember]:
     """Members of a stub class including those of its stub base classes, in the same file
-    or in another stub (drivekin._wheels._WheelValues)."""
+    or in another stub (drivekin._core.wheels._WheelValues)."""
     cls = stub.classes[name]
     members: dict[str, StubMember] = {}
     for base in reversed(cls.bases):
@@ -476,10 +521,10 @@ def test_cython_attribute_type_doc_counts_as_missing():
 
 def test_signature_stripping_on_the_real_modules():
     import drivekin.geometry as geometry
-    import drivekin.kinematics as kinematics
-    from drivekin.kinematics import SwerveDriveKinematics
+    import drivekin.swerve as swerve
+    from drivekin.swerve import SwerveDriveKinematics
 
-    assert module_embeds_signatures(geometry) and module_embeds_signatures(kinematics)
+    assert module_embeds_signatures(geometry) and module_embeds_signatures(swerve)
     # The embedded line equals the source's own first line here: exactly one goes.
     raw = SwerveDriveKinematics.__doc__
     first, blank, second = raw.split("\n")[:3]
