@@ -87,7 +87,7 @@ import numpy as np
 
 from drivekin import wpistruct
 from drivekin._core.errors import type_name
-from drivekin.kinematics import SwerveDriveKinematics
+from drivekin._core import catalog
 
 __all__ = ["DataLogError", "EntryInfo", "LogData", "Writer", "listEntries", "read"]
 
@@ -128,20 +128,25 @@ class EntryInfo(NamedTuple):
 # Schemas drivekin knows even when a log does not publish them: drivekin's own types
 # (WPILib 2027 names) and the 2026 names of the same layouts.
 _KNOWN_SCHEMAS: dict[str, str] = {}
-for _cls in wpistruct.STRUCT_TYPES:
-    if _cls is not SwerveDriveKinematics:
-        _KNOWN_SCHEMAS[wpistruct.getTypeName(_cls)] = wpistruct.getSchema(_cls)
+# Repeated structs (one type per member count, SwerveDriveKinematics__N): name -> entry.
+_REPEATED: dict[str, catalog.Entry] = {}
+for _e in catalog.ENTRIES:
+    if _e.struct is not None:
+        if _e.struct.repeats is None:
+            _KNOWN_SCHEMAS[_e.struct.name] = _e.struct.schema
+        else:
+            _REPEATED[_e.struct.name] = _e
 _KNOWN_SCHEMAS.update({
     "ChassisSpeeds": "double vx;double vy;double omega",
     "SwerveModuleState": "double speed;Rotation2d angle",
     "MecanumDriveWheelSpeeds": _KNOWN_SCHEMAS["MecanumDriveWheelVelocities"],
     "DifferentialDriveWheelSpeeds": _KNOWN_SCHEMAS["DifferentialDriveWheelVelocities"],
 })
-del _cls
+del _e
 
 _DECL = re.compile(r"\s*(?P<enum>enum\s*\{[^}]*\}\s*)?(?P<type>\w+)\s+(?P<name>\w+)\s*"
                    r"(?:\[\s*(?P<count>\d+)\s*\])?\s*(?P<bits>:\s*\d+)?\s*")
-_SWERVE_KIN = re.compile(r"SwerveDriveKinematics__(\d+)")
+_REPEATED_NAME = re.compile("(" + "|".join(_REPEATED) + r")__(\d+)")
 
 
 def _struct_columns(name: str, schemas: dict[str, str],
@@ -154,9 +159,9 @@ def _struct_columns(name: str, schemas: dict[str, str],
     schema = schemas.get(name)
     if schema is None:
         schema = _KNOWN_SCHEMAS.get(name)
-        m = _SWERVE_KIN.fullmatch(name)
+        m = _REPEATED_NAME.fullmatch(name)
         if schema is None and m:
-            schema = f"Translation2d modules[{m.group(1)}]"
+            schema = f"{_REPEATED[m.group(1)].struct.schema}[{m.group(2)}]"  # type: ignore[union-attr]
     if schema is None:
         raise DataLogError(f"no schema for struct:{name} in the log, and it is not a "
                            f"WPILib type drivekin knows")
@@ -453,9 +458,8 @@ def listEntries(source: str | os.PathLike[str] | bytes, *,
 # ---------------------------------------------------------------------------------------
 # Writing
 
-_STRUCT_CLASSES: dict[str, type] = {wpistruct.getTypeName(c): c
-                                    for c in wpistruct.STRUCT_TYPES
-                                    if c is not SwerveDriveKinematics}
+_STRUCT_CLASSES: dict[str, type] = {e.struct.name: e.cls for e in catalog.ENTRIES
+                                    if e.struct is not None and e.struct.repeats is None}
 
 # robotpy-wpiutil 2026.2.2's DataLogWriter blocks forever once about 1 MiB is buffered
 # without a flush() (no thread empties its buffers), so the writer flushes well before.
@@ -512,10 +516,10 @@ class Writer:
         if not base.startswith("struct:"):
             return
         name = base[7:]
-        m = _SWERVE_KIN.fullmatch(name)
+        m = _REPEATED_NAME.fullmatch(name)
         if m:
-            cls: type | None = SwerveDriveKinematics
-            kw: dict[str, int] = {"numModules": int(m.group(1))}
+            cls: type | None = _REPEATED[m.group(1)].cls
+            kw: dict[str, int] = {"numModules": int(m.group(2))}
         else:
             cls, kw = _STRUCT_CLASSES.get(name), {}
         if cls is None:
@@ -621,7 +625,7 @@ class Writer:
         if base == "double":
             k = 1
         elif base.startswith("struct:") and (base[7:] in _STRUCT_CLASSES
-                                             or _SWERVE_KIN.fullmatch(base[7:])):
+                                             or _REPEATED_NAME.fullmatch(base[7:])):
             k = len(_struct_columns(base[7:], {}))
         else:
             raise ValueError(f"appendSeries() writes double, double[] and drivekin's "

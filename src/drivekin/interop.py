@@ -53,29 +53,31 @@ from collections.abc import Callable
 from types import ModuleType
 from typing import TYPE_CHECKING, Any, NamedTuple, overload
 
-from drivekin.differential import (
-    DifferentialDriveKinematics,
-    DifferentialDriveWheelPositions,
-    DifferentialDriveWheelVelocities,
-)
-from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
-# The exact (cos, sin) constructor pickle uses; private, so the stub does not declare it.
-from drivekin.geometry import _rotation_from_cos_sin  # type: ignore[attr-defined]
-from drivekin.kinematics import (
-    ChassisVelocities,
-    SwerveDriveKinematics,
-    SwerveModulePosition,
-    SwerveModuleVelocity,
-)
-from drivekin.mecanum import (
-    MecanumDriveKinematics,
-    MecanumDriveWheelPositions,
-    MecanumDriveWheelVelocities,
-)
+from drivekin._core import catalog
+from drivekin._core.catalog import SWERVE_MODULE_COUNTS, qualified as _qualified
 
 if TYPE_CHECKING:
+    # The overloads below give each conversion its static types.
     import wpimath.geometry as wpg
     import wpimath.kinematics as wpk
+
+    from drivekin import (
+        ChassisVelocities,
+        DifferentialDriveKinematics,
+        DifferentialDriveWheelPositions,
+        DifferentialDriveWheelVelocities,
+        MecanumDriveKinematics,
+        MecanumDriveWheelPositions,
+        MecanumDriveWheelVelocities,
+        Pose2d,
+        Rotation2d,
+        SwerveDriveKinematics,
+        SwerveModulePosition,
+        SwerveModuleVelocity,
+        Transform2d,
+        Translation2d,
+        Twist2d,
+    )
 
 __all__ = ["fromWpimath", "toWpimath"]
 
@@ -110,215 +112,13 @@ def _load() -> _Wpimath:
     return _wpimath
 
 
-# ---- drivekin -> wpimath ---------------------------------------------------------------
-
-def _check_unit(c: float, s: float, r: object, where: str) -> None:
-    # A rotation is a unit (cos, sin) pair, or the NaN pair of a non-finite angle. Both
-    # libraries store (0, 0) for Rotation2d(x, y) when hypot(x, y) overflows (x/inf);
-    # that is no rotation, and neither side can rebuild it from its pair.
-    if not (c != c and s != s) and not abs((c * c + s * s) - 1.0) <= 1e-9:
-        raise ValueError(f"{where}: this {_qualified(r)} stores (cos, sin) = ({c!r}, {s!r}), "
-                         "which is not a unit vector")
-
-
-def _rotation_to(r: Rotation2d, w: _Wpimath) -> Any:
-    c, s = r.getCos(), r.getSin()
-    _check_unit(c, s, r, "toWpimath()")
-    if c == c and s == s:
-        # robotpy's Rotation2d(x, y) divides by hypot(x, y): exact whenever that is 1.0
-        # (division by a positive number keeps the sign of zero, so == suffices here).
-        out = w.geometry.Rotation2d(c, s)
-        if out.cos() == c and out.sin() == s:
-            return out
-    # Otherwise (and for the NaN pair of a non-finite angle) fromMatrix copies R(0,0) and
-    # R(1,0) as they are; NaN passes its orthogonality check.
-    return w.geometry.Rotation2d.fromMatrix(((c, -s), (s, c)))
-
-
-def _translation_to(t: Translation2d, w: _Wpimath) -> Any:
-    return w.geometry.Translation2d(t.x, t.y)
-
-
-def _pose_to(p: Pose2d, w: _Wpimath) -> Any:
-    return w.geometry.Pose2d(p.x, p.y, _rotation_to(p.getRotation(), w))
-
-
-def _transform_to(t: Transform2d, w: _Wpimath) -> Any:
-    return w.geometry.Transform2d(t.x, t.y, _rotation_to(t.getRotation(), w))
-
-
-def _twist_to(t: Twist2d, w: _Wpimath) -> Any:
-    return w.geometry.Twist2d(t.dx, t.dy, t.dtheta)
-
-
-def _chassis_to(v: ChassisVelocities, w: _Wpimath) -> Any:
-    return w.kinematics.ChassisSpeeds(v.vx, v.vy, v.omega)
-
-
-def _module_velocity_to(m: SwerveModuleVelocity, w: _Wpimath) -> Any:
-    return w.kinematics.SwerveModuleState(m.velocity, _rotation_to(m.angle, w))
-
-
-def _module_position_to(m: SwerveModulePosition, w: _Wpimath) -> Any:
-    return w.kinematics.SwerveModulePosition(m.distance, _rotation_to(m.angle, w))
-
-
-def _mecanum_velocities_to(m: MecanumDriveWheelVelocities, w: _Wpimath) -> Any:
-    return w.kinematics.MecanumDriveWheelSpeeds(m.frontLeft, m.frontRight, m.rearLeft,
-                                                m.rearRight)
-
-
-def _mecanum_positions_to(m: MecanumDriveWheelPositions, w: _Wpimath) -> Any:
-    out = w.kinematics.MecanumDriveWheelPositions()  # robotpy's takes no arguments
-    out.frontLeft, out.frontRight = m.frontLeft, m.frontRight
-    out.rearLeft, out.rearRight = m.rearLeft, m.rearRight
-    return out
-
-
-def _differential_velocities_to(d: DifferentialDriveWheelVelocities, w: _Wpimath) -> Any:
-    return w.kinematics.DifferentialDriveWheelSpeeds(d.left, d.right)
-
-
-def _differential_positions_to(d: DifferentialDriveWheelPositions, w: _Wpimath) -> Any:
-    out = w.kinematics.DifferentialDriveWheelPositions()  # robotpy's takes no arguments
-    out.left, out.right = d.left, d.right
-    return out
-
-
-SWERVE_MODULE_COUNTS = (2, 3, 4, 6)  # robotpy-wpimath 2026's SwerveDriveNKinematics
-
-
-def _swerve_to(k: SwerveDriveKinematics, w: _Wpimath) -> Any:
-    n = k.getNumModules()
-    if n not in SWERVE_MODULE_COUNTS:
-        raise ValueError(
-            f"toWpimath(): robotpy-wpimath 2026 has SwerveDrive2Kinematics, "
-            f"SwerveDrive3Kinematics, SwerveDrive4Kinematics and SwerveDrive6Kinematics "
-            f"only; this SwerveDriveKinematics has {n} modules")
-    cls = getattr(w.kinematics, f"SwerveDrive{n}Kinematics")
-    return cls(*(_translation_to(t, w) for t in k.getModules()))
-
-
-def _mecanum_to(k: MecanumDriveKinematics, w: _Wpimath) -> Any:
-    return w.kinematics.MecanumDriveKinematics(
-        _translation_to(k.getFrontLeft(), w), _translation_to(k.getFrontRight(), w),
-        _translation_to(k.getRearLeft(), w), _translation_to(k.getRearRight(), w))
-
-
-def _differential_to(k: DifferentialDriveKinematics, w: _Wpimath) -> Any:
-    return w.kinematics.DifferentialDriveKinematics(k.trackwidth)
-
+# ---- the converters: the catalog's robotpy-wpimath peers ---------------------------------
 
 _TO: dict[type, Callable[[Any, _Wpimath], Any]] = {
-    Translation2d: _translation_to,
-    Rotation2d: _rotation_to,
-    Pose2d: _pose_to,
-    Transform2d: _transform_to,
-    Twist2d: _twist_to,
-    ChassisVelocities: _chassis_to,
-    SwerveModuleVelocity: _module_velocity_to,
-    SwerveModulePosition: _module_position_to,
-    MecanumDriveWheelVelocities: _mecanum_velocities_to,
-    MecanumDriveWheelPositions: _mecanum_positions_to,
-    DifferentialDriveWheelVelocities: _differential_velocities_to,
-    DifferentialDriveWheelPositions: _differential_positions_to,
-    SwerveDriveKinematics: _swerve_to,
-    MecanumDriveKinematics: _mecanum_to,
-    DifferentialDriveKinematics: _differential_to,
-}
-
+    e.cls: e.peer.to for e in catalog.ENTRIES if e.peer is not None}
 # drivekin classes that robotpy-wpimath 2026 has no counterpart for, and why.
-_NO_PEER_2027 = ("ChassisAccelerations", "SwerveModuleAcceleration",
-                 "MecanumDriveWheelAccelerations", "DifferentialDriveWheelAccelerations")
-_NO_PEER_DRIVEKIN = ("DeadWheelKinematics", "DifferentialSwerveModuleKinematics",
-                     "DifferentialSwerveModuleVelocities", "DifferentialSwerveMotorVelocities")
-
-
-# ---- wpimath -> drivekin ---------------------------------------------------------------
-
-def _rotation_from(r: Any) -> Rotation2d:
-    c, s = r.cos(), r.sin()
-    # The stored pair is copied as is (a unit vector, or NaN for a non-finite angle).
-    # Rotation2d(x, y) would renormalise it, and Rotation2d(angle) would recompute it.
-    _check_unit(c, s, r, "fromWpimath()")
-    return _rotation_from_cos_sin(c, s)  # type: ignore[no-any-return]
-
-
-def _translation_from(t: Any) -> Translation2d:
-    return Translation2d(t.x, t.y)
-
-
-def _pose_from(p: Any) -> Pose2d:
-    return Pose2d(p.x, p.y, _rotation_from(p.rotation()))
-
-
-def _transform_from(t: Any) -> Transform2d:
-    return Transform2d(t.x, t.y, _rotation_from(t.rotation()))
-
-
-def _twist_from(t: Any) -> Twist2d:
-    return Twist2d(t.dx, t.dy, t.dtheta)
-
-
-def _chassis_from(v: Any) -> ChassisVelocities:
-    return ChassisVelocities(v.vx, v.vy, v.omega)
-
-
-def _module_state_from(m: Any) -> SwerveModuleVelocity:
-    return SwerveModuleVelocity(m.speed, _rotation_from(m.angle))
-
-
-def _module_position_from(m: Any) -> SwerveModulePosition:
-    return SwerveModulePosition(m.distance, _rotation_from(m.angle))
-
-
-def _mecanum_speeds_from(m: Any) -> MecanumDriveWheelVelocities:
-    return MecanumDriveWheelVelocities(m.frontLeft, m.frontRight, m.rearLeft, m.rearRight)
-
-
-def _mecanum_positions_from(m: Any) -> MecanumDriveWheelPositions:
-    return MecanumDriveWheelPositions(m.frontLeft, m.frontRight, m.rearLeft, m.rearRight)
-
-
-def _differential_speeds_from(d: Any) -> DifferentialDriveWheelVelocities:
-    return DifferentialDriveWheelVelocities(d.left, d.right)
-
-
-def _differential_positions_from(d: Any) -> DifferentialDriveWheelPositions:
-    return DifferentialDriveWheelPositions(d.left, d.right)
-
-
-def _swerve_from(k: Any) -> SwerveDriveKinematics:
-    return SwerveDriveKinematics([_translation_from(t) for t in k.getModules()])
-
-
-def _mecanum_from(k: Any) -> MecanumDriveKinematics:
-    return MecanumDriveKinematics(
-        _translation_from(k.getFrontLeft()), _translation_from(k.getFrontRight()),
-        _translation_from(k.getRearLeft()), _translation_from(k.getRearRight()))
-
-
-def _differential_from(k: Any) -> DifferentialDriveKinematics:
-    return DifferentialDriveKinematics(k.trackWidth)
-
-
-_FROM_NAMES: tuple[tuple[str, str, Callable[[Any], Any]], ...] = (
-    ("geometry", "Translation2d", _translation_from),
-    ("geometry", "Rotation2d", _rotation_from),
-    ("geometry", "Pose2d", _pose_from),
-    ("geometry", "Transform2d", _transform_from),
-    ("geometry", "Twist2d", _twist_from),
-    ("kinematics", "ChassisSpeeds", _chassis_from),
-    ("kinematics", "SwerveModuleState", _module_state_from),
-    ("kinematics", "SwerveModulePosition", _module_position_from),
-    ("kinematics", "MecanumDriveWheelSpeeds", _mecanum_speeds_from),
-    ("kinematics", "MecanumDriveWheelPositions", _mecanum_positions_from),
-    ("kinematics", "DifferentialDriveWheelSpeeds", _differential_speeds_from),
-    ("kinematics", "DifferentialDriveWheelPositions", _differential_positions_from),
-    *(("kinematics", f"SwerveDrive{n}Kinematics", _swerve_from) for n in SWERVE_MODULE_COUNTS),
-    ("kinematics", "MecanumDriveKinematics", _mecanum_from),
-    ("kinematics", "DifferentialDriveKinematics", _differential_from),
-)
+_NO_PEER: dict[str, str] = {e.cls.__name__: e.no_peer.format(e.cls.__name__)
+                            for e in catalog.ENTRIES if e.no_peer is not None}
 _from: dict[type, Callable[[Any], Any]] | None = None
 
 
@@ -326,18 +126,12 @@ def _from_table() -> dict[type, Callable[[Any], Any]]:
     global _from
     if _from is None:
         w = _load()
-        _from = {getattr(getattr(w, mod), name): fn for mod, name, fn in _FROM_NAMES}
+        _from = {getattr(getattr(w, e.peer.module), name): e.peer.frm
+                 for e in catalog.ENTRIES if e.peer is not None for name in e.peer.names}
     return _from
 
 
 # ---- dispatch ----------------------------------------------------------------------------
-
-def _qualified(obj: object) -> str:
-    # Both libraries have a Pose2d, a Rotation2d, ...: always say whose (builtins aside).
-    t = type(obj)
-    module = getattr(t, "__module__", None) or "?"
-    return t.__qualname__ if module == "builtins" else f"{module}.{t.__qualname__}"
-
 
 def _lookup(table: dict[type, Callable[..., Any]], obj: object) -> Callable[..., Any] | None:
     # The exact class first, then its bases (a user's subclass of a robotpy class).
@@ -378,10 +172,8 @@ def _to_one(obj: object, where: str) -> Any:
         reason = "only a plain list or tuple is converted, and only one level deep"
     elif _is_wpimath(obj):
         reason = "it is already a robotpy-wpimath object (fromWpimath converts to drivekin)"
-    elif _is_drivekin(obj) and name in _NO_PEER_2027:
-        reason = f"robotpy-wpimath 2026 has no {name} (it is new in WPILib 2027)"
-    elif _is_drivekin(obj) and name in _NO_PEER_DRIVEKIN:
-        reason = f"robotpy-wpimath 2026 has no counterpart of {name}"
+    elif _is_drivekin(obj) and name in _NO_PEER:
+        reason = _NO_PEER[name]
     elif _is_drivekin(obj) and name.endswith(("Odometry", "PoseEstimator")):
         reason = _STATEFUL
     else:

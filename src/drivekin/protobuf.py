@@ -77,30 +77,11 @@ import threading
 from collections.abc import Callable
 from typing import Any, TypeVar, Union
 
+from drivekin._core import catalog
+from drivekin._core import buffers
+from drivekin._core.catalog import GEOMETRY2D_FILE, KINEMATICS_FILE
+from drivekin._core.catalog import SerializableValue as ProtobufValue
 from drivekin._core.errors import type_name
-from drivekin.differential import (
-    DifferentialDriveKinematics,
-    DifferentialDriveWheelAccelerations,
-    DifferentialDriveWheelPositions,
-    DifferentialDriveWheelVelocities,
-)
-from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
-from drivekin.kinematics import (
-    ChassisAccelerations,
-    ChassisVelocities,
-    SwerveDriveKinematics,
-    SwerveModuleAcceleration,
-    SwerveModulePosition,
-    SwerveModuleVelocity,
-)
-from drivekin.mecanum import (
-    MecanumDriveKinematics,
-    MecanumDriveWheelAccelerations,
-    MecanumDriveWheelPositions,
-    MecanumDriveWheelVelocities,
-)
-# The buffer checks are wpistruct's: one rule for which bytes-like inputs are plain data.
-from drivekin.wpistruct import _nbytes, _view
 
 __all__ = [
     "GEOMETRY2D_FILE",
@@ -117,15 +98,6 @@ __all__ = [
     "unpack",
 ]
 
-ProtobufValue = Union[
-    Translation2d, Rotation2d, Pose2d, Transform2d, Twist2d,
-    ChassisVelocities, ChassisAccelerations,
-    SwerveModuleVelocity, SwerveModulePosition, SwerveModuleAcceleration,
-    MecanumDriveWheelVelocities, MecanumDriveWheelPositions, MecanumDriveWheelAccelerations,
-    DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
-    DifferentialDriveWheelAccelerations,
-    DifferentialDriveKinematics, MecanumDriveKinematics, SwerveDriveKinematics,
-]
 """Any object this module can pack (a union of the supported drivekin classes)."""
 
 #: Bytes-like input: anything exporting the buffer protocol as C-contiguous memory.
@@ -135,9 +107,8 @@ T = TypeVar("T")
 
 #: The protobuf package of every message here.
 PACKAGE = "wpi.proto"
-#: File names WPILib 2027 gives its descriptors (the schema names are ``"proto:"`` + these).
-GEOMETRY2D_FILE = "wpimath/protobuf/geometry2d.proto"
-KINEMATICS_FILE = "wpimath/protobuf/kinematics.proto"
+# GEOMETRY2D_FILE and KINEMATICS_FILE (from the catalog): the file names WPILib 2027
+# gives its descriptors (the schema names are ``"proto:"`` + these).
 #: The NetworkTables/DataLog type of a schema entry holding a serialized FileDescriptorProto.
 SCHEMA_TYPE = "proto:FileDescriptorProto"
 
@@ -146,52 +117,19 @@ _INSTALL_HINT = 'drivekin.protobuf needs the "protobuf" package (>= 4.22): ' \
 
 
 # ---------------------------------------------------------------------------------------
-# The schemas, as data. A field is (name, number, message type or None for double,
-# repeated). The descriptors are built from these tables, so there is no generated code
-# and no .proto file to ship.
+# The schemas, as data: the catalog's messages, by file in WPILib's declaration order.
+# A field is (name, number, message type or None for double, repeated). The descriptors
+# are built from these tables, so there is no generated code and no .proto file to ship.
 
-_Field = tuple[str, int, Union[str, None], bool]
-
-
-def _doubles(*names: str) -> tuple[_Field, ...]:
-    return tuple((n, i, None, False) for i, n in enumerate(names, 1))
-
-
-def _value_and_angle(name: str) -> tuple[_Field, ...]:
-    return ((name, 1, None, False), ("angle", 2, "ProtobufRotation2d", False))
-
-
-_POSE_FIELDS: tuple[_Field, ...] = (("translation", 1, "ProtobufTranslation2d", False),
-                                    ("rotation", 2, "ProtobufRotation2d", False))
-_MECANUM = ("front_left", "front_right", "rear_left", "rear_right")
-
-# file name -> (dependencies, [(message, fields), ...]) in WPILib's declaration order.
-_FILES: dict[str, tuple[tuple[str, ...], tuple[tuple[str, tuple[_Field, ...]], ...]]] = {
-    GEOMETRY2D_FILE: ((), (
-        ("ProtobufTranslation2d", _doubles("x", "y")),
-        ("ProtobufRotation2d", _doubles("value")),
-        ("ProtobufPose2d", _POSE_FIELDS),
-        ("ProtobufTransform2d", _POSE_FIELDS),
-        ("ProtobufTwist2d", _doubles("dx", "dy", "dtheta")),
-    )),
-    KINEMATICS_FILE: ((GEOMETRY2D_FILE,), (
-        ("ProtobufChassisVelocities", _doubles("vx", "vy", "omega")),
-        ("ProtobufChassisAccelerations", _doubles("ax", "ay", "alpha")),
-        ("ProtobufDifferentialDriveKinematics", _doubles("trackwidth")),
-        ("ProtobufDifferentialDriveWheelVelocities", _doubles("left", "right")),
-        ("ProtobufDifferentialDriveWheelAccelerations", _doubles("left", "right")),
-        ("ProtobufDifferentialDriveWheelPositions", _doubles("left", "right")),
-        ("ProtobufMecanumDriveKinematics",
-         tuple((n, i, "ProtobufTranslation2d", False) for i, n in enumerate(_MECANUM, 1))),
-        ("ProtobufMecanumDriveWheelPositions", _doubles(*_MECANUM)),
-        ("ProtobufMecanumDriveWheelVelocities", _doubles(*_MECANUM)),
-        ("ProtobufMecanumDriveWheelAccelerations", _doubles(*_MECANUM)),
-        ("ProtobufSwerveDriveKinematics", (("modules", 1, "ProtobufTranslation2d", True),)),
-        ("ProtobufSwerveModulePosition", _value_and_angle("distance")),
-        ("ProtobufSwerveModuleVelocity", _value_and_angle("velocity")),
-        ("ProtobufSwerveModuleAcceleration", _value_and_angle("acceleration")),
-    )),
-}
+_DEPENDENCIES: dict[str, tuple[str, ...]] = {GEOMETRY2D_FILE: (),
+                                             KINEMATICS_FILE: (GEOMETRY2D_FILE,)}
+_PROTOS = sorted((e.proto for e in catalog.ENTRIES if e.proto is not None),
+                 key=lambda p: (p.file != GEOMETRY2D_FILE, p.index))
+_FIELDS: dict[str, tuple[catalog.Field, ...]] = {p.message: p.fields for p in _PROTOS}
+# file name -> (dependencies, [(message, fields), ...])
+_FILES: dict[str, tuple[tuple[str, ...], tuple[tuple[str, tuple[catalog.Field, ...]], ...]]] = {
+    f: (deps, tuple((p.message, p.fields) for p in _PROTOS if p.file == f))
+    for f, deps in _DEPENDENCIES.items()}
 
 
 # ---------------------------------------------------------------------------------------
@@ -257,139 +195,73 @@ def _runtime() -> _Runtime:
 
 
 # ---------------------------------------------------------------------------------------
-# Per-type conversions. ``make(M, obj)`` builds the message (``M``: message classes by
-# name); ``read(msg)`` builds the drivekin object. Nested messages are passed to the
-# constructor, which marks them present even when all their fields are zero.
+# Conversions, from the catalog's wire forms: a message holds the same doubles as the
+# struct, in field order, nested messages contributing theirs in place (a repeated field
+# takes the rest). Nested messages are passed to the constructor, which marks them
+# present even when all their fields are zero. (The recursion follows the schema, whose
+# depth is fixed, never the input.)
+
+def _make(M: dict[str, Any], message: str, v: tuple[float, ...], i: int) -> tuple[Any, int]:
+    fields: dict[str, Any] = {}
+    for name, _, sub, repeated in _FIELDS[message]:
+        if sub is None:
+            fields[name] = v[i]
+            i += 1
+        elif repeated:
+            items = []
+            while i < len(v):
+                item, i = _make(M, sub, v, i)
+                items.append(item)
+            fields[name] = items
+        else:
+            fields[name], i = _make(M, sub, v, i)
+    return M[message](**fields), i
+
+
+def _read(msg: Any, message: str, out: list[float]) -> None:
+    for name, _, sub, repeated in _FIELDS[message]:
+        value = getattr(msg, name)
+        if sub is None:
+            out.append(value)
+        elif repeated:
+            for item in value:
+                _read(item, sub, out)
+        else:
+            _read(value, sub, out)
+
 
 class _Spec:
-    __slots__ = ("cls", "message", "file", "typeName", "typeString", "make", "read")
+    __slots__ = ("cls", "message", "file", "typeName", "typeString", "flatten", "build")
 
-    def __init__(self, cls: type, message: str, file: str,
-                 make: Callable[[dict[str, Any], Any], Any],
-                 read: Callable[[Any], Any]) -> None:
-        self.cls, self.message, self.file = cls, message, file
-        self.typeName = f"{PACKAGE}.{message}"
+    def __init__(self, e: catalog.Entry) -> None:
+        assert e.proto is not None and e.flatten is not None and e.build is not None
+        self.cls, self.message, self.file = e.cls, e.proto.message, e.proto.file
+        self.typeName = f"{PACKAGE}.{self.message}"
         self.typeString = "proto:" + self.typeName
-        self.make, self.read = make, read
+        self.flatten = e.flatten
+        self.build = _checked(self.typeName, e.build) if e.kind == "kinematics" else e.build
+
+    def make(self, M: dict[str, Any], obj: Any) -> Any:
+        return _make(M, self.message, self.flatten(obj), 0)[0]
+
+    def read(self, msg: Any) -> Any:
+        values: list[float] = []
+        _read(msg, self.message, values)
+        return self.build(*values)
 
 
-_SPECS: dict[type, _Spec] = {}
-
-
-def _register(cls: type, message: str, file: str,
-              make: Callable[[dict[str, Any], Any], Any], read: Callable[[Any], Any],
-              checked: bool = False) -> None:
-    if checked:
-        read = _checked(f"{PACKAGE}.{message}", read)
-    _SPECS[cls] = _Spec(cls, message, file, make, read)
-
-
-def _checked(name: str, read: Callable[[Any], Any]) -> Callable[[Any], Any]:
+def _checked(name: str, build: Callable[..., Any]) -> Callable[..., Any]:
     """Values a kinematics constructor rejects surface as ``ValueError("cannot unpack
     <message>: ...")``."""
-    def checked(msg: Any) -> Any:
+    def checked(*v: float) -> Any:
         try:
-            return read(msg)
+            return build(*v)
         except ValueError as e:   # includes numpy.linalg.LinAlgError
             raise ValueError(f"cannot unpack {name}: {e}") from e
     return checked
 
 
-_R = Rotation2d
-_T = Translation2d
-_G = GEOMETRY2D_FILE
-_K = KINEMATICS_FILE
-
-
-def _tr(M: dict[str, Any], t: Translation2d) -> Any:
-    return M["ProtobufTranslation2d"](x=t.getX(), y=t.getY())
-
-
-def _rot(M: dict[str, Any], r: Rotation2d) -> Any:
-    return M["ProtobufRotation2d"](value=r.getRadians())
-
-
-def _make_pose(message: str) -> Callable[[dict[str, Any], Any], Any]:
-    def make(M: dict[str, Any], p: Any) -> Any:
-        return M[message](translation=M["ProtobufTranslation2d"](x=p.getX(), y=p.getY()),
-                          rotation=_rot(M, p.getRotation()))
-    return make
-
-
-_register(Translation2d, "ProtobufTranslation2d", _G, _tr, lambda m: _T(m.x, m.y))
-_register(Rotation2d, "ProtobufRotation2d", _G, _rot, lambda m: _R(m.value))
-_register(Pose2d, "ProtobufPose2d", _G, _make_pose("ProtobufPose2d"),
-          lambda m: Pose2d(m.translation.x, m.translation.y, _R(m.rotation.value)))
-_register(Transform2d, "ProtobufTransform2d", _G, _make_pose("ProtobufTransform2d"),
-          lambda m: Transform2d(m.translation.x, m.translation.y, _R(m.rotation.value)))
-_register(Twist2d, "ProtobufTwist2d", _G,
-          lambda M, t: M["ProtobufTwist2d"](dx=t.dx, dy=t.dy, dtheta=t.dtheta),
-          lambda m: Twist2d(m.dx, m.dy, m.dtheta))
-_register(ChassisVelocities, "ProtobufChassisVelocities", _K,
-          lambda M, c: M["ProtobufChassisVelocities"](vx=c.vx, vy=c.vy, omega=c.omega),
-          lambda m: ChassisVelocities(m.vx, m.vy, m.omega))
-_register(ChassisAccelerations, "ProtobufChassisAccelerations", _K,
-          lambda M, c: M["ProtobufChassisAccelerations"](ax=c.ax, ay=c.ay, alpha=c.alpha),
-          lambda m: ChassisAccelerations(m.ax, m.ay, m.alpha))
-_register(SwerveModuleVelocity, "ProtobufSwerveModuleVelocity", _K,
-          lambda M, s: M["ProtobufSwerveModuleVelocity"](velocity=s.velocity,
-                                                         angle=_rot(M, s.angle)),
-          lambda m: SwerveModuleVelocity(m.velocity, _R(m.angle.value)))
-_register(SwerveModulePosition, "ProtobufSwerveModulePosition", _K,
-          lambda M, s: M["ProtobufSwerveModulePosition"](distance=s.distance,
-                                                         angle=_rot(M, s.angle)),
-          lambda m: SwerveModulePosition(m.distance, _R(m.angle.value)))
-_register(SwerveModuleAcceleration, "ProtobufSwerveModuleAcceleration", _K,
-          lambda M, s: M["ProtobufSwerveModuleAcceleration"](acceleration=s.acceleration,
-                                                             angle=_rot(M, s.angle)),
-          lambda m: SwerveModuleAcceleration(m.acceleration, _R(m.angle.value)))
-
-
-def _wheels(cls: type, kind: str) -> None:
-    message = f"Protobuf{cls.__name__}"
-    if kind == "mecanum":
-        _register(cls, message, _K,
-                  lambda M, w: M[message](front_left=w.frontLeft, front_right=w.frontRight,
-                                          rear_left=w.rearLeft, rear_right=w.rearRight),
-                  lambda m: cls(m.front_left, m.front_right, m.rear_left, m.rear_right))
-    else:
-        _register(cls, message, _K, lambda M, w: M[message](left=w.left, right=w.right),
-                  lambda m: cls(m.left, m.right))
-
-
-_wcls: type
-for _wcls in (MecanumDriveWheelVelocities, MecanumDriveWheelPositions,
-              MecanumDriveWheelAccelerations):
-    _wheels(_wcls, "mecanum")
-for _wcls in (DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
-              DifferentialDriveWheelAccelerations):
-    _wheels(_wcls, "differential")
-del _wcls
-
-_register(DifferentialDriveKinematics, "ProtobufDifferentialDriveKinematics", _K,
-          lambda M, k: M["ProtobufDifferentialDriveKinematics"](trackwidth=k.trackwidth),
-          lambda m: DifferentialDriveKinematics(m.trackwidth), checked=True)
-_register(MecanumDriveKinematics, "ProtobufMecanumDriveKinematics", _K,
-          lambda M, k: M["ProtobufMecanumDriveKinematics"](
-              front_left=_tr(M, k.getFrontLeft()), front_right=_tr(M, k.getFrontRight()),
-              rear_left=_tr(M, k.getRearLeft()), rear_right=_tr(M, k.getRearRight())),
-          lambda m: MecanumDriveKinematics(
-              _T(m.front_left.x, m.front_left.y), _T(m.front_right.x, m.front_right.y),
-              _T(m.rear_left.x, m.rear_left.y), _T(m.rear_right.x, m.rear_right.y)),
-          checked=True)
-
-
-def _read_swerve(m: Any) -> SwerveDriveKinematics:
-    modules = [_T(t.x, t.y) for t in m.modules]
-    if len(modules) < 2:
-        raise ValueError(f"a swerve drive needs at least 2 modules, got {len(modules)}")
-    return SwerveDriveKinematics(modules)
-
-
-_register(SwerveDriveKinematics, "ProtobufSwerveDriveKinematics", _K,
-          lambda M, k: M["ProtobufSwerveDriveKinematics"](
-              modules=[_tr(M, t) for t in k.getModules()]),
-          _read_swerve, checked=True)
+_SPECS: dict[type, _Spec] = {e.cls: _Spec(e) for e in catalog.ENTRIES if e.proto is not None}
 
 #: Every drivekin class this module can serialize.
 PROTOBUF_TYPES: tuple[type, ...] = tuple(_SPECS)
@@ -504,8 +376,8 @@ def unpack(cls: type[T], data: BytesLike) -> T:
     spec = _spec_of_class(cls, "unpack")
     rt = _runtime()
     if type(data) is not bytes:
-        with _view(data) as mv:
-            _nbytes(mv)                        # C-contiguous, or TypeError
+        with buffers.view(data) as mv:
+            buffers.nbytes(mv)                # C-contiguous, or TypeError
             data = mv.tobytes()                # a copy: the caller may change theirs
     msg = rt.classes[spec.message]()
     try:

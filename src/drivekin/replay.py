@@ -54,6 +54,7 @@ from typing import Any
 import numpy as np
 
 from drivekin import batch, datalog
+from drivekin._core import catalog
 from drivekin.datalog import DataLogError, LogData
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
@@ -75,13 +76,11 @@ GAP_PERIODS = 3.0       # a wheel-sample interval this many median periods long 
 POSE_ENTRY = "/drivekin/ReplayPose"
 ERROR_ENTRY = "/drivekin/ReplayError"
 
-_POSITION_TYPES = {
-    "struct:SwerveModulePosition[]": "swerve",
-    "struct:MecanumDriveWheelPositions": "mecanum",
-    "struct:DifferentialDriveWheelPositions": "differential",
-}
-_ODOMETRY = {"swerve": "SwerveDriveOdometry", "mecanum": "MecanumDriveOdometry",
-             "differential": "DifferentialDriveOdometry", "deadwheel": "DeadWheelOdometry"}
+# The log types that identify a drivetrain, and each drivetrain's odometry: the catalog's.
+_POSITION_TYPES = {e.positions: e.drivetrain for e in catalog.entries("odometry")
+                   if e.positions is not None}
+_ODOMETRY = {e.drivetrain: e.cls.__name__ for e in catalog.entries("odometry")
+             if e.drivetrain in DRIVETRAINS}
 
 
 @dataclass

@@ -83,34 +83,15 @@ from __future__ import annotations
 
 import functools
 import operator
-import re
 import struct
 import sys
 from collections.abc import Callable, Iterable
 from typing import Any, TypeVar, Union
 
+from drivekin._core import catalog
+from drivekin._core import buffers
+from drivekin._core.catalog import SerializableValue as StructValue
 from drivekin._core.errors import type_name
-from drivekin.differential import (
-    DifferentialDriveKinematics,
-    DifferentialDriveWheelAccelerations,
-    DifferentialDriveWheelPositions,
-    DifferentialDriveWheelVelocities,
-)
-from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
-from drivekin.kinematics import (
-    ChassisAccelerations,
-    ChassisVelocities,
-    SwerveDriveKinematics,
-    SwerveModuleAcceleration,
-    SwerveModulePosition,
-    SwerveModuleVelocity,
-)
-from drivekin.mecanum import (
-    MecanumDriveKinematics,
-    MecanumDriveWheelAccelerations,
-    MecanumDriveWheelPositions,
-    MecanumDriveWheelVelocities,
-)
 
 __all__ = [
     "MAX_SWERVE_MODULES",
@@ -130,15 +111,6 @@ __all__ = [
     "unpackFrom",
 ]
 
-StructValue = Union[
-    Translation2d, Rotation2d, Pose2d, Transform2d, Twist2d,
-    ChassisVelocities, ChassisAccelerations,
-    SwerveModuleVelocity, SwerveModulePosition, SwerveModuleAcceleration,
-    MecanumDriveWheelVelocities, MecanumDriveWheelPositions, MecanumDriveWheelAccelerations,
-    DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
-    DifferentialDriveWheelAccelerations,
-    DifferentialDriveKinematics, MecanumDriveKinematics, SwerveDriveKinematics,
-]
 """Any object this module can pack (a union of the supported drivekin classes)."""
 
 #: Bytes-like input: anything exporting the buffer protocol as C-contiguous memory.
@@ -174,21 +146,8 @@ class _Spec:
 
 
 # ---------------------------------------------------------------------------------------
-# Per-type flatten / build functions. Every member is a double, so a struct is a flat run
-# of little-endian doubles; nested structs contribute their doubles in place.
-
-_R = Rotation2d
-_T = Translation2d
-
-_MECANUM_WHEELS = "double front_left;double front_right;double rear_left;double rear_right"
-_DIFF_WHEELS = "double left;double right"
-
-
-def _flat_mecanum_kinematics(k: MecanumDriveKinematics) -> tuple[float, ...]:
-    fl, fr, rl, rr = k.getFrontLeft(), k.getFrontRight(), k.getRearLeft(), k.getRearRight()
-    return (fl.getX(), fl.getY(), fr.getX(), fr.getY(),
-            rl.getX(), rl.getY(), rr.getX(), rr.getY())
-
+# The specs, from the catalog's wire forms. Every member is a double, so a struct is a
+# flat run of little-endian doubles; nested structs contribute their doubles in place.
 
 def _checked(name: str, build: Callable[..., Any]) -> Callable[..., Any]:
     """Wrap a kinematics constructor so that values it rejects (trackwidth <= 0, NaN/inf
@@ -201,80 +160,27 @@ def _checked(name: str, build: Callable[..., Any]) -> Callable[..., Any]:
     return checked
 
 
+def _spec(e: catalog.Entry, name: str, schema: str, count: int) -> _Spec:
+    assert e.struct is not None and e.flatten is not None and e.build is not None
+    build = _checked(name, e.build) if e.kind == "kinematics" else e.build
+    return _Spec(e.cls, name, schema, count, e.struct.nested, e.flatten, build)
+
+
 _SPECS: dict[type, _Spec] = {}
-
-
-def _register(cls: type, name: str, schema: str, count: int, nested: tuple[type, ...],
-              flatten: Callable[[Any], tuple[float, ...]],
-              build: Callable[..., Any]) -> None:
-    _SPECS[cls] = _Spec(cls, name, schema, count, nested, flatten, build)
-
-
-# Flatteners read attributes/getters: iterating the drivekin objects (their __iter__) is
-# about twice as slow.
-_register(Translation2d, "Translation2d", "double x;double y", 2, (),
-          lambda t: (t.getX(), t.getY()), lambda x, y: _T(x, y))
-_register(Rotation2d, "Rotation2d", "double value", 1, (),
-          lambda r: (r.getRadians(),), _R)
-_register(Pose2d, "Pose2d", "Translation2d translation;Rotation2d rotation", 3,
-          (Translation2d, Rotation2d),
-          lambda p: (p.getX(), p.getY(), p.getRotation().getRadians()),
-          lambda x, y, r: Pose2d(x, y, _R(r)))
-_register(Transform2d, "Transform2d", "Translation2d translation;Rotation2d rotation", 3,
-          (Translation2d, Rotation2d),
-          lambda p: (p.getX(), p.getY(), p.getRotation().getRadians()),
-          lambda x, y, r: Transform2d(x, y, _R(r)))
-_register(Twist2d, "Twist2d", "double dx;double dy;double dtheta", 3, (),
-          lambda t: (t.dx, t.dy, t.dtheta), Twist2d)
-_register(ChassisVelocities, "ChassisVelocities", "double vx;double vy;double omega", 3, (),
-          lambda c: (c.vx, c.vy, c.omega), ChassisVelocities)
-_register(ChassisAccelerations, "ChassisAccelerations", "double ax;double ay;double alpha", 3,
-          (), lambda c: (c.ax, c.ay, c.alpha), ChassisAccelerations)
-_register(SwerveModuleVelocity, "SwerveModuleVelocity", "double velocity;Rotation2d angle", 2,
-          (Rotation2d,), lambda s: (s.velocity, s.angle.getRadians()),
-          lambda m, a: SwerveModuleVelocity(m, _R(a)))
-_register(SwerveModulePosition, "SwerveModulePosition", "double distance;Rotation2d angle", 2,
-          (Rotation2d,), lambda s: (s.distance, s.angle.getRadians()),
-          lambda m, a: SwerveModulePosition(m, _R(a)))
-# WPILib 2027 publishes SwerveModuleAcceleration under the plural name (sic).
-_register(SwerveModuleAcceleration, "SwerveModuleAccelerations",
-          "double acceleration;Rotation2d angle", 2, (Rotation2d,),
-          lambda s: (s.acceleration, s.angle.getRadians()),
-          lambda m, a: SwerveModuleAcceleration(m, _R(a)))
-
-
-_wcls: type
-for _wcls in (MecanumDriveWheelVelocities, MecanumDriveWheelPositions,
-              MecanumDriveWheelAccelerations):
-    _register(_wcls, _wcls.__name__, _MECANUM_WHEELS, 4, (),
-              lambda w: (w.frontLeft, w.frontRight, w.rearLeft, w.rearRight), _wcls)
-for _wcls in (DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
-              DifferentialDriveWheelAccelerations):
-    _register(_wcls, _wcls.__name__, _DIFF_WHEELS, 2, (),
-              lambda w: (w.left, w.right), _wcls)
-del _wcls
-_register(DifferentialDriveKinematics, "DifferentialDriveKinematics", "double trackwidth", 1,
-          (), lambda k: (k.trackwidth,),
-          _checked("DifferentialDriveKinematics",
-                   DifferentialDriveKinematics))
-_register(MecanumDriveKinematics, "MecanumDriveKinematics",
-          "Translation2d front_left;Translation2d front_right;"
-          "Translation2d rear_left;Translation2d rear_right", 8,
-          (Translation2d,), _flat_mecanum_kinematics,
-          _checked("MecanumDriveKinematics",
-                   lambda *v: MecanumDriveKinematics(
-                       _T(v[0], v[1]), _T(v[2], v[3]), _T(v[4], v[5]), _T(v[6], v[7]))))
+# Repeated structs (one type per member count): their catalog entries.
+_REPEATED: dict[type, catalog.Entry] = {}
+for _e in catalog.ENTRIES:
+    if _e.struct is None:
+        continue
+    if _e.struct.repeats is None:
+        _SPECS[_e.cls] = _spec(_e, _e.struct.name, _e.struct.schema, _e.struct.count)
+    else:
+        _REPEATED[_e.cls] = _e
+del _e
 
 #: Largest module count a SwerveDriveKinematics struct may declare: its 16·N bytes must
 #: fit in one buffer (a Py_ssize_t byte count).
 MAX_SWERVE_MODULES = sys.maxsize // 16
-
-
-def _flat_swerve(k: SwerveDriveKinematics) -> tuple[float, ...]:
-    out: list[float] = []
-    for m in k.getModules():
-        out += (m.getX(), m.getY())
-    return tuple(out)
 
 
 def _int_text(n: int) -> str:
@@ -283,34 +189,34 @@ def _int_text(n: int) -> str:
                                                   else "a huge number")
 
 
-def _swerve_spec(n: int) -> _Spec:
+def _repeated_spec(cls: type, n: int) -> _Spec:
     # Range checks come before the cache, so no spec is built for a count that cannot be
     # valid, whatever its size.
-    if n < 2:
-        raise ValueError(f"a SwerveDriveKinematics struct needs numModules >= 2, "
+    st = _REPEATED[cls].struct
+    assert st is not None
+    if n < st.least:
+        raise ValueError(f"a {st.name} struct needs numModules >= {st.least}, "
                          f"got {_int_text(n)}")
     if n > MAX_SWERVE_MODULES:
-        raise ValueError(f"a SwerveDriveKinematics struct needs numModules <= "
-                         f"{MAX_SWERVE_MODULES} (16·N bytes must fit in a buffer), "
-                         f"got {_int_text(n)}")
-    return _cached_swerve_spec(n)
+        raise ValueError(f"a {st.name} struct needs numModules <= "
+                         f"{MAX_SWERVE_MODULES} ({8 * st.count}·N bytes must fit in a "
+                         f"buffer), got {_int_text(n)}")
+    return _cached_repeated_spec(cls, n)
 
 
 # Bounded: a caller iterating over many module counts must not keep a spec for each.
 @functools.lru_cache(maxsize=32)
-def _cached_swerve_spec(n: int) -> _Spec:
-    def build(*v: float) -> SwerveDriveKinematics:
-        return SwerveDriveKinematics([_T(v[j], v[j + 1]) for j in range(0, len(v), 2)])
-
-    return _Spec(SwerveDriveKinematics, f"SwerveDriveKinematics__{n}",
-                 f"Translation2d modules[{n}]", 2 * n, (Translation2d,),
-                 _flat_swerve, _checked(f"SwerveDriveKinematics__{n}", build))
+def _cached_repeated_spec(cls: type, n: int) -> _Spec:
+    e = _REPEATED[cls]
+    assert e.struct is not None
+    return _spec(e, f"{e.struct.name}__{n}", f"{e.struct.schema}[{n}]", e.struct.count * n)
 
 
 #: Every drivekin class this module can serialize (SwerveDriveKinematics: any N >= 2).
-STRUCT_TYPES: tuple[type, ...] = (*_SPECS, SwerveDriveKinematics)
+STRUCT_TYPES: tuple[type, ...] = tuple(e.cls for e in catalog.ENTRIES if e.struct)
 
 _SUPPORTED = ", ".join(c.__name__ for c in STRUCT_TYPES)
+_REPEATED_NAMES = " and ".join(c.__name__ for c in _REPEATED)
 
 
 # ---------------------------------------------------------------------------------------
@@ -333,31 +239,33 @@ def _spec_of(x: object, numModules: int | None = None) -> _Spec:
         spec = _SPECS.get(x)
         if spec is not None:
             if numModules is not None:
-                raise TypeError(f"numModules applies only to SwerveDriveKinematics, "
+                raise TypeError(f"numModules applies only to {_REPEATED_NAMES}, "
                                 f"not {x.__name__}")
             return spec
-        if x is SwerveDriveKinematics:
+        if x in _REPEATED:
             if numModules is None:
                 raise TypeError(
-                    "the SwerveDriveKinematics struct type depends on the module count: "
+                    f"the {x.__name__} struct type depends on the module count: "
                     "pass numModules=N or an instance")
-            return _swerve_spec(_num_modules(numModules))
+            return _repeated_spec(x, _num_modules(numModules))
         raise TypeError(f"{x.__module__}.{x.__qualname__} has no WPILib struct "
                         f"serialization here; supported: {_SUPPORTED}")
     spec = _SPECS.get(type(x))
     if spec is not None:
         if numModules is not None:
-            raise TypeError(f"numModules applies only to SwerveDriveKinematics, "
+            raise TypeError(f"numModules applies only to {_REPEATED_NAMES}, "
                             f"not {type(x).__name__}")
         return spec
-    if type(x) is SwerveDriveKinematics:
-        n = x.getNumModules()
+    e = _REPEATED.get(type(x))
+    if e is not None:
+        assert e.struct is not None and e.struct.repeats is not None
+        n = e.struct.repeats(x)
         if numModules is not None:
             given = _num_modules(numModules)
             if given != n:
                 raise ValueError(f"numModules={_int_text(given)} does not match the "
                                  f"instance's {n} modules")
-        return _swerve_spec(n)
+        return _repeated_spec(type(x), n)
     raise TypeError(f"cannot serialize a {type(x).__module__}.{type(x).__qualname__}; "
                     f"supported drivekin types: {_SUPPORTED}")
 
@@ -379,12 +287,6 @@ def _spec_of_class(cls: object, numModules: int | None, what: str) -> _Spec:
     return _spec_of(cls, numModules)
 
 
-def _nbytes(mv: memoryview) -> int:
-    if not mv.c_contiguous:
-        raise TypeError("the buffer must be C-contiguous")
-    return mv.nbytes
-
-
 def _check_offset(offset: object) -> int:
     try:
         off = operator.index(offset)  # type: ignore[arg-type]
@@ -393,36 +295,6 @@ def _check_offset(offset: object) -> int:
     if off < 0:
         raise ValueError(f"offset must be >= 0, got {off}")
     return off
-
-
-# Item formats of buffers whose memory is plain bytes or numbers (optionally with a
-# byte-order prefix; "Zd" etc. are numpy's complex types, "5s" fixed-size bytes). Anything
-# else is refused: object arrays ("O") hold PyObject pointers that raw doubles must never
-# overwrite or be read from, and pointer ("P", "&d"), structured ("T{...}") or text formats
-# are not plain data either.
-_PLAIN_FORMAT = re.compile(r"[@=<>!]?(?:[bBchHiIlLqQnNefdg?]|Z[fdg]|\d*s)")
-
-
-def _view(data: object) -> memoryview:
-    """A memoryview of ``data`` after checking it holds plain bytes or numbers.
-
-    Callers keep the view (``with``) for as long as they use its memory: while it is
-    held the exporter cannot resize or free the memory (a bytearray refuses to resize, a
-    released memoryview stays alive underneath). Validate every other argument, which
-    may run Python code (``__index__``), before taking the view."""
-    try:
-        mv = memoryview(data)  # type: ignore[arg-type]
-    except TypeError:
-        raise TypeError(f"expected a bytes-like object (bytes, bytearray, memoryview), "
-                        f"got {type(data).__name__}") from None
-    fmt = mv.format
-    if _PLAIN_FORMAT.fullmatch(fmt) is None:
-        mv.release()
-        what = "object (dtype=object)" if fmt.lstrip("@=<>!") == "O" else repr(fmt)
-        raise TypeError(f"expected a buffer of plain bytes or numbers (bytes, bytearray, "
-                        f"a numeric numpy array, ...), got {type(data).__name__} with "
-                        f"item format {what}")
-    return mv
 
 
 # ---------------------------------------------------------------------------------------
@@ -465,8 +337,9 @@ def getNested(x: object) -> tuple[type, ...]:
     for the swerve module values, ``(Translation2d,)`` for MecanumDriveKinematics and
     SwerveDriveKinematics (any N), ``()`` for the plain-double types. Their own schemas
     must be published too; :func:`forEachNested` walks the whole tree."""
-    if x is SwerveDriveKinematics or type(x) is SwerveDriveKinematics:
-        return (Translation2d,)
+    e = _REPEATED.get(x if isinstance(x, type) else type(x))
+    if e is not None and e.struct is not None:
+        return e.struct.nested
     return _spec_of(x).nested
 
 
@@ -517,11 +390,11 @@ def packInto(obj: StructValue, buffer: BytesLike, offset: int = 0) -> None:
         return
     off = _check_offset(offset)
     values = spec.flatten(obj)
-    with _view(buffer) as mv:
+    with buffers.view(buffer) as mv:
         if mv.readonly:
             raise TypeError(f"packInto() needs a writable buffer, got a read-only "
                             f"{type(buffer).__name__}")
-        avail = _nbytes(mv) - off
+        avail = buffers.nbytes(mv) - off
         if avail < spec.size:
             raise ValueError(f"{spec.typeString} needs {spec.size} bytes at offset {off}, "
                              f"the buffer has {max(avail, 0)}")
@@ -539,11 +412,12 @@ def packArray(seq: Iterable[StructValue]) -> bytes:
     first = items[0]
     spec = _spec_of_instance(first)
     cls = type(first)
-    if cls is SwerveDriveKinematics:
-        counts = {o.getNumModules() for o in items if type(o) is cls}
+    e = _REPEATED.get(cls)
+    if e is not None and e.struct is not None and e.struct.repeats is not None:
+        counts = {e.struct.repeats(o) for o in items if type(o) is cls}
         if len(counts) > 1:
             raise TypeError(f"packArray() elements must share one struct type; got "
-                            f"SwerveDriveKinematics with {sorted(counts)} modules")
+                            f"{cls.__name__} with {sorted(counts)} modules")
     flatten = spec.flatten
     pack_one = spec.struct.pack
     parts = []
@@ -585,23 +459,28 @@ def unpack(cls: type[T], data: BytesLike, offset: int = 0, *,
     # Every argument that may run Python code (numModules.__index__, offset.__index__)
     # is validated before the buffer is viewed.
     spec: _Spec | None = None
-    if not (cls is SwerveDriveKinematics and numModules is None):
+    repeated = (_REPEATED.get(cls) if isinstance(cls, type) and numModules is None
+                else None)
+    if repeated is None:
         spec = _spec_of_class(cls, numModules, "unpack")
     off = _check_offset(offset)
-    with _view(data) as mv:
-        avail = _nbytes(mv) - off
+    with buffers.view(data) as mv:
+        avail = buffers.nbytes(mv) - off
         if spec is None:
-            if avail < 32 or avail % 16:
+            st = repeated.struct  # type: ignore[union-attr]
+            assert st is not None
+            member = 8 * st.count
+            if avail < member * st.least or avail % member:
                 raise ValueError(
-                    f"cannot infer the module count of a SwerveDriveKinematics from "
-                    f"{max(avail, 0)} bytes: need a multiple of 16 bytes, at least 32 "
-                    f"(N >= 2 modules)")
-            spec = _swerve_spec(avail // 16)
+                    f"cannot infer the module count of a {st.name} from "
+                    f"{max(avail, 0)} bytes: need a multiple of {member} bytes, at least "
+                    f"{member * st.least} (N >= {st.least} modules)")
+            spec = _repeated_spec(cls, avail // member)
         else:
             if avail != spec.size:
                 raise ValueError(f"{spec.typeString} is {spec.size} bytes, got "
-                                 f"{max(avail, 0)} (buffer of {_nbytes(mv)} bytes, "
-                                 f"offset {off})")
+                                 f"{max(avail, 0)} (buffer of {buffers.nbytes(mv)} "
+                                 f"bytes, offset {off})")
         values = spec.struct.unpack_from(mv, off)
     obj: T = spec.build(*values)
     return obj
@@ -615,8 +494,8 @@ def unpackFrom(cls: type[T], data: BytesLike, offset: int = 0, *,
     ValueError if fewer than :func:`getSize` bytes follow ``offset``."""
     spec = _spec_of_class(cls, numModules, "unpackFrom")
     off = _check_offset(offset)
-    with _view(data) as mv:
-        avail = _nbytes(mv) - off
+    with buffers.view(data) as mv:
+        avail = buffers.nbytes(mv) - off
         if avail < spec.size:
             raise ValueError(f"{spec.typeString} is {spec.size} bytes, only "
                              f"{max(avail, 0)} available at offset {off}")
@@ -631,8 +510,8 @@ def unpackArray(cls: type[T], data: BytesLike, *,
     :func:`getSize` (an empty buffer gives ``[]``). For SwerveDriveKinematics pass
     ``numModules`` (the element size cannot be inferred from an array)."""
     spec = _spec_of_class(cls, numModules, "unpackArray")
-    with _view(data) as mv:
-        nbytes = _nbytes(mv)
+    with buffers.view(data) as mv:
+        nbytes = buffers.nbytes(mv)
         if nbytes % spec.size:
             raise ValueError(f"a {spec.typeString}[] value must be a multiple of "
                              f"{spec.size} bytes, got {nbytes}")

@@ -21,7 +21,7 @@ from __future__ import annotations
 import operator
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Optional
+from typing import Any, Optional, Union
 
 import drivekin as _dk
 from drivekin.chassis import ChassisAccelerations, ChassisVelocities
@@ -47,6 +47,18 @@ from drivekin.swerve import (
     SwerveModuleVelocity,
 )
 
+#: Every value a serialization packs (the classes with a struct and a protobuf message);
+#: written out for type checkers, and checked against the entries by the tests.
+SerializableValue = Union[
+    Translation2d, Rotation2d, Pose2d, Transform2d, Twist2d,
+    ChassisVelocities, ChassisAccelerations,
+    SwerveModuleVelocity, SwerveModulePosition, SwerveModuleAcceleration,
+    MecanumDriveWheelVelocities, MecanumDriveWheelPositions, MecanumDriveWheelAccelerations,
+    DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,
+    DifferentialDriveWheelAccelerations,
+    DifferentialDriveKinematics, MecanumDriveKinematics, SwerveDriveKinematics,
+]
+
 GEOMETRY2D_FILE = "wpimath/protobuf/geometry2d.proto"
 KINEMATICS_FILE = "wpimath/protobuf/kinematics.proto"
 
@@ -56,14 +68,16 @@ Field = tuple[str, int, Optional[str], bool]
 
 @dataclass(frozen=True)
 class Struct:
-    """A WPILib struct type. ``repeated``: one type per count N, ``name__N`` with the
-    schema ``"<schema>[N]"`` (SwerveDriveKinematics); ``count`` doubles per value (per
-    repeated member)."""
+    """A WPILib struct type: ``count`` doubles per value. A repeated struct has one type
+    per count N >= ``least`` of its member, named ``name__N`` with the schema
+    ``"<schema>[N]"`` (SwerveDriveKinematics); ``repeats(obj)`` is an instance's N and
+    ``count`` is per member."""
     name: str
     schema: str
     count: int
     nested: tuple[type, ...] = ()
-    repeated: bool = False
+    repeats: Callable[[Any], int] | None = None
+    least: int = 0
 
 
 @dataclass(frozen=True)
@@ -96,7 +110,7 @@ class Entry:
     struct: Struct | None = None
     proto: Proto | None = None
     peer: Peer | None = None
-    no_peer: str | None = None     # why robotpy-wpimath 2026 has no peer
+    no_peer: str | None = None     # why robotpy-wpimath 2026 has no peer ({}: the name)
     positions: str | None = None   # odometry: the log type of one positions sample
     steered: bool = False          # kinematics: its wheels are steered modules
 
@@ -234,9 +248,8 @@ def _wheel_values(cls: type, drivetrain: str, attrs: tuple[str, ...],
                  peer=peer, no_peer=no_peer)
 
 
-_NEW_2027 = "it is new in WPILib 2027"
-_DRIVEKIN_ONLY = "robotpy-wpimath 2026 has no counterpart of it"
-_STATEFUL = "stateful"
+_NEW_2027 = "robotpy-wpimath 2026 has no {} (it is new in WPILib 2027)"
+_DRIVEKIN_ONLY = "robotpy-wpimath 2026 has no counterpart of {}"
 
 # ---------------------------------------------------------------------------------------
 # The entries. Order within a drivetrain follows WPILib; nothing depends on it except
@@ -314,7 +327,8 @@ ENTRIES: tuple[Entry, ...] = (
           flatten=lambda k: _flat_translations(k.getModules()),
           build=lambda *v: SwerveDriveKinematics(_translations(v)),
           struct=Struct("SwerveDriveKinematics", "Translation2d modules", 2,
-                        (Translation2d,), repeated=True), steered=True,
+                        (Translation2d,), repeats=lambda k: k.getNumModules(), least=2),
+          steered=True,
           proto=Proto("ProtobufSwerveDriveKinematics", KINEMATICS_FILE, 10,
                       (("modules", 1, "ProtobufTranslation2d", True),)),
           peer=Peer("kinematics", tuple(f"SwerveDrive{n}Kinematics"
