@@ -20,6 +20,8 @@ from typing_extensions import Self, disjoint_base
 
 from drivekin.geometry import Rotation2d, Twist2d
 
+__all__ = ["ChassisAccelerations", "ChassisVelocities"]
+
 @disjoint_base
 class _ChassisVector:
     """Shared arithmetic of ChassisVelocities and ChassisAccelerations (x, y, angular)."""

@@ -11,6 +11,8 @@ from drivekin.geometry cimport Rotation2d, new_twist
 from drivekin._core.errors import refuse_delete, type_name
 from drivekin._core.format import f2
 
+__all__ = ["ChassisAccelerations", "ChassisVelocities"]
+
 
 # Freelists live on the two base classes: Cython only lets the base manage them, and the
 # subclasses add no fields, so they share it.

@@ -29,9 +29,7 @@ from drivekin._core.args cimport read_floats
 from drivekin._core.kernels cimport (pose, pose_interpolate, pose_relative_to, pose_transform_by,
                                 rot_cs, rot_times, transform_inverse, twist_exp_cs, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
-from drivekin.swerve cimport SwerveDriveKinematics
-from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
-from drivekin.deadwheel cimport DeadWheelKinematics
+from drivekin.mecanum cimport MecanumDriveWheelPositions
 from drivekin.differential cimport DifferentialDriveWheelPositions
 from drivekin._core.wheels cimport _WheelValues
 from drivekin.odometry cimport (DeadWheelOdometry, DifferentialDriveOdometry,
@@ -476,7 +474,7 @@ cdef class SwerveDrivePoseEstimator(_PoseEstimator):
     standard deviations of x (m), y (m) and heading (rad).
     """
 
-    def __init__(self, SwerveDriveKinematics kinematics not None, Rotation2d gyroAngle not None,
+    def __init__(self, kinematics, Rotation2d gyroAngle not None,
                  modulePositions, Pose2d initialPose not None,
                  stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
         self._start()
@@ -520,7 +518,7 @@ cdef class MecanumDrivePoseEstimator(_PoseEstimator):
     (rad).
     """
 
-    def __init__(self, MecanumDriveKinematics kinematics not None, Rotation2d gyroAngle not None,
+    def __init__(self, kinematics, Rotation2d gyroAngle not None,
                  MecanumDriveWheelPositions wheelPositions not None, Pose2d initialPose not None,
                  stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.45, 0.45, 0.45)):
         self._start()
@@ -687,7 +685,7 @@ cdef class DeadWheelPoseEstimator(_PoseEstimator):
     fused with vision.
     """
 
-    def __init__(self, DeadWheelKinematics kinematics not None, wheelPositions,
+    def __init__(self, kinematics, wheelPositions,
                  gyroAngle=None, initialPose=None, stateStdDevs=_DEFAULT_STATE,
                  visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
         self._start()

@@ -30,6 +30,9 @@ from drivekin._core.drivetrain import Drivetrain
 from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.geometry import Rotation2d, Translation2d, Twist2d
 
+__all__ = ["SwerveDriveKinematics", "SwerveModuleAcceleration", "SwerveModulePosition",
+           "SwerveModuleVelocity"]
+
 @disjoint_base
 class _ModuleVector:
     """Shared behaviour of the swerve module values: a scalar and an angle."""

@@ -33,6 +33,9 @@ from drivekin._core.format import f2
 
 cnp.import_array()
 
+__all__ = ["SwerveDriveKinematics", "SwerveModuleAcceleration", "SwerveModulePosition",
+           "SwerveModuleVelocity"]
+
 cdef rot2_t IDENTITY
 IDENTITY.c = 1.0
 IDENTITY.s = 0.0
