@@ -30,5 +30,4 @@ cdef class MecanumDriveKinematics(Drivetrain):
     cdef vec2_t cor              # centre of rotation m was built for, m
     cdef tuple wheels            # the Translation2d objects
 
-    cdef void _set_cor(self, vec2_t cor) noexcept
     cdef void _inverse(self, const double* x, object cor, double* out) except *

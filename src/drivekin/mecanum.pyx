@@ -223,6 +223,7 @@ cdef class MecanumDriveKinematics(Drivetrain):
         for i in range(12):
             self.f[i] = f[i // 4, i % 4]
         self.nwheels = 4
+        self.centered = True
         self.wheels = wheels                    # last: what every method checks
 
     cdef int _ready(self) except -1:
@@ -253,11 +254,6 @@ cdef class MecanumDriveKinematics(Drivetrain):
 
     # -----------------------------------------------------------------------------------
     # The drivetrain contract (drivekin._core.drivetrain): four wheels, one 4 x 3 map
-
-    cdef int _center(self, object centerOfRotation) except -1:
-        self._set_cor((<Translation2d>centerOfRotation).v if centerOfRotation is not None
-                      else vec(0.0, 0.0))
-        return 0
 
     cdef Py_ssize_t _params(self, double* params, bint forward, bint accel) noexcept:
         # The same matrices serve velocities and accelerations (no centripetal term).

@@ -59,7 +59,6 @@ cdef class SwerveDriveKinematics(Drivetrain):
     cdef tuple modules           # the Translation2d objects, constructor order
 
     cdef int _refuse_reinit(self) except -1
-    cdef void _set_cor(self, vec2_t cor) noexcept
     cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1
     cdef int _deltas(self, object start, object end) except -1
     cdef int _read(self, object states, type cls, str what) except -1

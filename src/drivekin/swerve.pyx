@@ -16,6 +16,7 @@ from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, atan2, cos, fabs, isfinite, signbit, sin
+from libc.string cimport memcpy
 
 import numpy as np
 
@@ -410,6 +411,7 @@ cdef class SwerveDriveKinematics(Drivetrain):
         self.n = n
         self.nwheels = n
         self.steered = True
+        self.centered = True
         self.modules = mods
         self.mx = buf
         self.my = self.mx + n
@@ -510,25 +512,13 @@ cdef class SwerveDriveKinematics(Drivetrain):
     # -----------------------------------------------------------------------------------
     # The drivetrain contract (drivekin._core.drivetrain): a steered drivetrain of n modules
 
-    cdef int _center(self, object centerOfRotation) except -1:
-        self._set_cor((<Translation2d>centerOfRotation).v if centerOfRotation is not None
-                      else vec(0.0, 0.0))
-        return 0
-
     cdef Py_ssize_t _params(self, double* params, bint forward, bint accel) noexcept:
-        # Inverse: the CoR rows and the heading memory; forward: the pseudo-inverse.
-        cdef Py_ssize_t j, n = self.n, count = (8 if accel else 6) * n if forward else 4 * n
-        if params == NULL:
-            return count
-        if forward:
-            for j in range(count):
-                params[j] = self.f2[j] if accel else self.f1[j]
-            return count
-        for j in range(n):
-            params[j] = self.rx[j]
-            params[n + j] = self.ry[j]
-            params[2 * n + j] = self.hc[j]
-            params[3 * n + j] = self.hs[j]
+        # Inverse: the CoR rows and the heading memory (rx, ry, hc, hs: adjacent in buf);
+        # forward: the pseudo-inverse.
+        cdef Py_ssize_t count = ((8 if accel else 6) if forward else 4) * self.n
+        if params != NULL:
+            memcpy(params, (self.f2 if accel else self.f1) if forward else self.rx,
+                   sizeof(double) * count)
         return count
 
     cdef void _inverse_many(self, Py_ssize_t k, const double* chassis, const double* omega,
@@ -547,11 +537,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
 
     cdef void _inverse_done(self, const double* params, bint accel) noexcept:
         # The velocity map leaves the heading memory as that many calls would.
-        cdef Py_ssize_t j, n = self.n
         if not accel:
-            for j in range(n):
-                self.hc[j] = params[2 * n + j]
-                self.hs[j] = params[3 * n + j]
+            memcpy(self.hc, params + 2 * self.n, sizeof(double) * 2 * self.n)
 
     cdef void _forward_many(self, Py_ssize_t k, const double* m, const double* c,
                             const double* s, const double* gyro, bint accel,
@@ -697,12 +684,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
     def toTwist2dInto(self, moduleDeltas, Twist2d out not None):
         """Allocation-free :meth:`toTwist2d` for N deltas (SwerveModulePosition objects or an
         (N, 2) float64 array ``[distance m, angle rad]``), written into ``out``."""
-        cdef double r[3]
         self._read(moduleDeltas, SwerveModulePosition, "moduleDeltas")
-        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
-        out.t.dx = r[0]
-        out.t.dy = r[1]
-        out.t.dtheta = r[2]
+        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, &out.t.dx)
 
     def interpolate(self, startValue, endValue, double t):
         """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""

@@ -14,15 +14,20 @@
 # the object's own caches, such as the swerve heading memory or a centre of rotation,
 # while a batch runs). Dispatch costs one indirect call per chunk of samples.
 
+from drivekin._core.types cimport vec2_t
+
+
 cdef class Drivetrain:
     cdef Py_ssize_t nwheels      # W: wheel values or modules per sample
     cdef bint steered            # a sample is (W, 2) [magnitude, angle rad]; else (W,)
     cdef bint gyro_forward       # the forward map may take the heading rate per sample
+    cdef bint centered           # the inverse maps take a centre of rotation
 
     cdef int _ready(self) except -1
     # Use ``centerOfRotation`` (a Translation2d or None) for the inverse maps that follow,
-    # or refuse it (TypeError) if the drivetrain has none.
+    # or refuse it (TypeError) if the drivetrain has none; _set_cor moves the rows.
     cdef int _center(self, object centerOfRotation) except -1
+    cdef void _set_cor(self, vec2_t cor) noexcept
     # Refuse a forward map the layout cannot do (dead wheels that do not observe the
     # heading change, without a gyro).
     cdef int _forward_check(self, bint gyro, bint accel) except -1

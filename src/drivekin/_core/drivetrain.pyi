@@ -1,6 +1,6 @@
-"""The drivetrain contract's base class (declared in drivetrain.pxd). Every method is
-overridden by each kinematics class; these bodies only keep a half-built subclass from
-computing.
+"""The drivetrain contract's base class (declared in drivetrain.pxd): the centre-of-rotation
+rule written once, defaults for what most drivetrains do not need, and map bodies that
+keep a subclass that does not override them from computing.
 """
 
 # Hand-written stub for the private compiled module drivekin._core.drivetrain

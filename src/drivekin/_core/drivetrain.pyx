@@ -1,6 +1,9 @@
-"""The drivetrain contract's base class (declared in drivetrain.pxd). Every method is
-overridden by each kinematics class; these bodies only keep a half-built subclass from
-computing."""
+"""The drivetrain contract's base class (declared in drivetrain.pxd): the centre-of-rotation
+rule written once, defaults for what most drivetrains do not need, and map bodies that
+keep a subclass that does not override them from computing."""
+from drivekin._core.kernels cimport vec
+from drivekin._core.types cimport vec2_t
+from drivekin.geometry cimport Translation2d
 
 
 cdef class Drivetrain:
@@ -9,9 +12,17 @@ cdef class Drivetrain:
         raise TypeError(f"{type(self).__name__} does not implement the drivetrain contract")
 
     cdef int _center(self, object centerOfRotation) except -1:
-        if centerOfRotation is not None:
+        # Callers have checked that centerOfRotation is None or a Translation2d.
+        if centerOfRotation is None:
+            self._set_cor(vec(0.0, 0.0))
+        elif self.centered:
+            self._set_cor((<Translation2d>centerOfRotation).v)
+        else:
             raise TypeError(f"{type(self).__name__} has no centre of rotation argument")
         return 0
+
+    cdef void _set_cor(self, vec2_t cor) noexcept:
+        pass
 
     cdef int _forward_check(self, bint gyro, bint accel) except -1:
         return 0
