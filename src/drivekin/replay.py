@@ -55,6 +55,7 @@ import numpy as np
 
 from drivekin import batch, datalog
 from drivekin._core import catalog
+from drivekin._core.plotting import pyplot
 from drivekin.datalog import DataLogError, LogData
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
@@ -537,21 +538,10 @@ def writeReplayLog(result: ReplayResult, path: str | os.PathLike[str]) -> None:
                            metadata='{"unit":"m","against":"' + result.entries["pose"] + '"}')
 
 
-def _matplotlib() -> Any:
-    try:
-        import matplotlib
-    except ImportError as e:
-        raise ImportError('matplotlib is needed to draw the plot: pip install '
-                          '"drivekin[plot]"') from e
-    matplotlib.use("Agg", force=True)
-    import matplotlib.pyplot as plt
-    return plt
-
-
 def plotReplay(result: ReplayResult, path: str | os.PathLike[str]) -> None:
     """Draw the replayed path, the logged one (and the truth) and the position errors
     over time into a PNG at ``path`` (matplotlib, Agg backend)."""
-    plt = _matplotlib()
+    plt = pyplot()
     fig, (ax, ax2) = plt.subplots(1, 2, figsize=(12, 5.2),
                                   gridspec_kw={"width_ratios": [1.15, 1]})
     try:

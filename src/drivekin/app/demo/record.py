@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 
 from drivekin import Pose2d, SwerveDriveKinematics, Twist2d
+from drivekin._core.plotting import pyplot
 from drivekin.app.demo.measure import Simulation
 from drivekin.app.demo.script import DT
 
@@ -132,21 +133,9 @@ def write_log(path: str, rec: dict[str, Any]) -> int:
     return len(rec["series"]) + (rec["kinematics"] is not None)
 
 
-def _matplotlib() -> Any:
-    """matplotlib.pyplot on the Agg backend (as :func:`drivekin.replay.plotReplay` draws)."""
-    try:
-        import matplotlib
-    except ImportError as e:
-        raise ImportError('matplotlib is needed to draw the plot: pip install '
-                          '"drivekin[plot]"') from e
-    matplotlib.use("Agg", force=True)
-    import matplotlib.pyplot as plt
-    return plt
-
-
 def plot_run(path: str, rec: dict[str, Any], title: str) -> None:
     """The demo's PNG: the true and odometry paths, and the odometry's position error."""
-    plt = _matplotlib()
+    plt = pyplot()
     series = rec["series"]
     truth = series["/Sim/TruePose"][1]
     odo = series["/Odometry/Robot"][1]
