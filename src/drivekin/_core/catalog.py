@@ -11,6 +11,7 @@ Each :class:`Entry` gives the class's kind and drivetrain, and, where they exist
   :mod:`drivekin.interop`), or why there is none;
 * for an odometry class, the **log entry type** of its position samples, by which
   :mod:`drivekin.replay` recognises a drivetrain in a log.
+* an **example**: a factory of one typical valid instance (the tests' and tools' fixture).
 
 ``tests/api/test_catalog.py`` fails, naming the class, when a public class of drivekin
 has no entry. The test registries (adversarial suite, allocation tests, leak check,
@@ -18,6 +19,7 @@ benchmarks) take their lists of drivetrains from here.
 """
 from __future__ import annotations
 
+import math
 import operator
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -113,6 +115,9 @@ class Entry:
     no_peer: str | None = None     # why robotpy-wpimath 2026 has no peer ({}: the name)
     positions: str | None = None   # odometry: the log type of one positions sample
     steered: bool = False          # kinematics: its wheels are steered modules
+    # One typical valid instance (None: the class has no instances); the test registries
+    # (adversarial suite, allocation tests, leak check, benchmarks) and tools use it.
+    example: Callable[[], Any] | None = None
 
 
 # ---------------------------------------------------------------------------------------
@@ -233,7 +238,7 @@ def _module_value(cls: type, field: str, message: str, struct_name: str, index: 
                  struct=Struct(struct_name, f"double {field};Rotation2d angle", 2,
                                (Rotation2d,)),
                  proto=Proto(message, KINEMATICS_FILE, index, _value_and_angle(field)),
-                 peer=peer, no_peer=no_peer)
+                 peer=peer, no_peer=no_peer, example=lambda: cls(1.0, _R(0.5)))
 
 
 def _wheel_values(cls: type, drivetrain: str, attrs: tuple[str, ...],
@@ -245,7 +250,48 @@ def _wheel_values(cls: type, drivetrain: str, attrs: tuple[str, ...],
                                len(fields)),
                  proto=Proto(f"Protobuf{cls.__name__}", KINEMATICS_FILE, index,
                              _doubles(*fields)),
-                 peer=peer, no_peer=no_peer)
+                 peer=peer, no_peer=no_peer,
+                 example=lambda: cls(*(float(i) for i in range(1, len(attrs) + 1))))
+
+
+# ---------------------------------------------------------------------------------------
+# The examples' robot: a 4-module swerve at (±0.3, ±0.3) m, a mecanum drive with its wheels
+# at the same points, a differential drive of trackwidth 0.6 m, three dead wheels that
+# observe the heading; odometry and estimators start at gyro 0 rad with zero readings, at
+# (1 m, 2 m, 0.5 rad). Value examples are small distinct numbers (wheel values 1, 2, ...;
+# module values 1 at 0.5 rad).
+
+_CORNERS = ((0.3, 0.3), (0.3, -0.3), (-0.3, 0.3), (-0.3, -0.3))
+
+
+def _swerve() -> SwerveDriveKinematics:
+    return SwerveDriveKinematics([_T(x, y) for x, y in _CORNERS])
+
+
+def _mecanum() -> MecanumDriveKinematics:
+    return MecanumDriveKinematics(*(_T(x, y) for x, y in _CORNERS))
+
+
+def _dead_wheels() -> DeadWheelKinematics:
+    # Asymmetric, and observable without a gyro (a perpendicular third wheel).
+    return DeadWheelKinematics([Pose2d(0.0, 0.3, _R(0.0)), Pose2d(0.1, -0.2, _R(0.1)),
+                                Pose2d(-0.2, 0.05, _R(math.pi / 2))])
+
+
+def _swerve_zeros() -> list[SwerveModulePosition]:
+    return [SwerveModulePosition(0.0, _R(0.0)) for _ in _CORNERS]
+
+
+def _start() -> Pose2d:
+    return Pose2d(1.0, 2.0, _R(0.5))
+
+
+def _double_buffer() -> Any:
+    # A 1.5 s double buffer holding three samples.
+    b = _dk.TimeInterpolatableBuffer.createDoubleBuffer(1.5)
+    for t, v in ((0.0, 1.0), (0.25, -2.0), (1.0, 4.0)):
+        b.addSample(t, v)
+    return b
 
 
 _NEW_2027 = "robotpy-wpimath 2026 has no {} (it is new in WPILib 2027)"
@@ -261,19 +307,22 @@ ENTRIES: tuple[Entry, ...] = (
           flatten=lambda t: (t.getX(), t.getY()), build=lambda x, y: _T(x, y),
           struct=Struct("Translation2d", "double x;double y", 2),
           proto=Proto("ProtobufTranslation2d", GEOMETRY2D_FILE, 0, _doubles("x", "y")),
-          peer=Peer("geometry", ("Translation2d",), _translation_to, _translation_from)),
+          peer=Peer("geometry", ("Translation2d",), _translation_to, _translation_from),
+          example=lambda: _T(1.0, 2.0)),
     Entry(Rotation2d, "value",
           flatten=lambda r: (r.getRadians(),), build=_R,
           struct=Struct("Rotation2d", "double value", 1),
           proto=Proto("ProtobufRotation2d", GEOMETRY2D_FILE, 1, _doubles("value")),
-          peer=Peer("geometry", ("Rotation2d",), _rotation_to, _rotation_from)),
+          peer=Peer("geometry", ("Rotation2d",), _rotation_to, _rotation_from),
+          example=lambda: _R(0.5)),
     Entry(Pose2d, "value",
           flatten=_flat_pose, build=lambda x, y, r: Pose2d(x, y, _R(r)),
           struct=Struct("Pose2d", _POSE_SCHEMA, 3, (Translation2d, Rotation2d)),
           proto=Proto("ProtobufPose2d", GEOMETRY2D_FILE, 2, _POSE_FIELDS),
           peer=Peer("geometry", ("Pose2d",),
                     lambda p, w: w.geometry.Pose2d(p.x, p.y, _rotation_to(p.getRotation(), w)),
-                    lambda p: Pose2d(p.x, p.y, _rotation_from(p.rotation())))),
+                    lambda p: Pose2d(p.x, p.y, _rotation_from(p.rotation()))),
+          example=_start),
     Entry(Transform2d, "value",
           flatten=_flat_pose, build=lambda x, y, r: Transform2d(x, y, _R(r)),
           struct=Struct("Transform2d", _POSE_SCHEMA, 3, (Translation2d, Rotation2d)),
@@ -281,14 +330,16 @@ ENTRIES: tuple[Entry, ...] = (
           peer=Peer("geometry", ("Transform2d",),
                     lambda t, w: w.geometry.Transform2d(t.x, t.y,
                                                         _rotation_to(t.getRotation(), w)),
-                    lambda t: Transform2d(t.x, t.y, _rotation_from(t.rotation())))),
+                    lambda t: Transform2d(t.x, t.y, _rotation_from(t.rotation()))),
+          example=lambda: Transform2d(0.5, -1.0, _R(0.25))),
     Entry(Twist2d, "value",
           flatten=lambda t: (t.dx, t.dy, t.dtheta), build=Twist2d,
           struct=Struct("Twist2d", "double dx;double dy;double dtheta", 3),
           proto=Proto("ProtobufTwist2d", GEOMETRY2D_FILE, 4, _doubles("dx", "dy", "dtheta")),
           peer=Peer("geometry", ("Twist2d",),
                     lambda t, w: w.geometry.Twist2d(t.dx, t.dy, t.dtheta),
-                    lambda t: Twist2d(t.dx, t.dy, t.dtheta))),
+                    lambda t: Twist2d(t.dx, t.dy, t.dtheta)),
+          example=lambda: Twist2d(0.5, 0.25, 0.125)),
     # Chassis
     Entry(ChassisVelocities, "value",
           flatten=lambda c: (c.vx, c.vy, c.omega), build=ChassisVelocities,
@@ -297,13 +348,14 @@ ENTRIES: tuple[Entry, ...] = (
                       _doubles("vx", "vy", "omega")),
           peer=Peer("kinematics", ("ChassisSpeeds",),
                     lambda v, w: w.kinematics.ChassisSpeeds(v.vx, v.vy, v.omega),
-                    lambda v: ChassisVelocities(v.vx, v.vy, v.omega))),
+                    lambda v: ChassisVelocities(v.vx, v.vy, v.omega)),
+          example=lambda: ChassisVelocities(1.0, 0.5, 0.25)),
     Entry(ChassisAccelerations, "value",
           flatten=lambda c: (c.ax, c.ay, c.alpha), build=ChassisAccelerations,
           struct=Struct("ChassisAccelerations", "double ax;double ay;double alpha", 3),
           proto=Proto("ProtobufChassisAccelerations", KINEMATICS_FILE, 1,
                       _doubles("ax", "ay", "alpha")),
-          no_peer=_NEW_2027),
+          no_peer=_NEW_2027, example=lambda: ChassisAccelerations(1.0, 0.5, 0.25)),
     # Swerve
     _module_value(SwerveModuleVelocity, "velocity", "ProtobufSwerveModuleVelocity",
                   "SwerveModuleVelocity", 12,
@@ -335,10 +387,15 @@ ENTRIES: tuple[Entry, ...] = (
                                         for n in SWERVE_MODULE_COUNTS),
                     _swerve_to,
                     lambda k: SwerveDriveKinematics([_translation_from(t)
-                                                     for t in k.getModules()]))),
+                                                     for t in k.getModules()])),
+          example=_swerve),
     Entry(_dk.SwerveDriveOdometry, "odometry", "swerve",
-          positions="struct:SwerveModulePosition[]"),
-    Entry(_dk.SwerveDrivePoseEstimator, "estimator", "swerve"),
+          positions="struct:SwerveModulePosition[]",
+          example=lambda: _dk.SwerveDriveOdometry(_swerve(), _R(0.0), _swerve_zeros(),
+                                                  _start())),
+    Entry(_dk.SwerveDrivePoseEstimator, "estimator", "swerve",
+          example=lambda: _dk.SwerveDrivePoseEstimator(_swerve(), _R(0.0), _swerve_zeros(),
+                                                       _start())),
     # Mecanum
     _wheel_values(MecanumDriveWheelVelocities, "mecanum", _MECANUM_ATTRS, _MECANUM, 8,
                   Peer("kinematics", ("MecanumDriveWheelSpeeds",),
@@ -375,10 +432,16 @@ ENTRIES: tuple[Entry, ...] = (
                         _translation_from(k.getFrontLeft()),
                         _translation_from(k.getFrontRight()),
                         _translation_from(k.getRearLeft()),
-                        _translation_from(k.getRearRight())))),
+                        _translation_from(k.getRearRight()))),
+          example=_mecanum),
     Entry(_dk.MecanumDriveOdometry, "odometry", "mecanum",
-          positions="struct:MecanumDriveWheelPositions"),
-    Entry(_dk.MecanumDrivePoseEstimator, "estimator", "mecanum"),
+          positions="struct:MecanumDriveWheelPositions",
+          example=lambda: _dk.MecanumDriveOdometry(_mecanum(), _R(0.0),
+                                                   MecanumDriveWheelPositions(), _start())),
+    Entry(_dk.MecanumDrivePoseEstimator, "estimator", "mecanum",
+          example=lambda: _dk.MecanumDrivePoseEstimator(_mecanum(), _R(0.0),
+                                                        MecanumDriveWheelPositions(),
+                                                        _start())),
     # Differential
     _wheel_values(DifferentialDriveWheelVelocities, "differential", ("left", "right"),
                   ("left", "right"), 3,
@@ -403,26 +466,42 @@ ENTRIES: tuple[Entry, ...] = (
                       _doubles("trackwidth")),
           peer=Peer("kinematics", ("DifferentialDriveKinematics",),
                     lambda k, w: w.kinematics.DifferentialDriveKinematics(k.trackwidth),
-                    lambda k: DifferentialDriveKinematics(k.trackWidth))),
+                    lambda k: DifferentialDriveKinematics(k.trackWidth)),
+          example=lambda: DifferentialDriveKinematics(0.6)),
     Entry(_dk.DifferentialDriveOdometry, "odometry", "differential",
-          positions="struct:DifferentialDriveWheelPositions"),
-    Entry(_dk.DifferentialDrivePoseEstimator, "estimator", "differential"),
+          positions="struct:DifferentialDriveWheelPositions",
+          example=lambda: _dk.DifferentialDriveOdometry(_R(0.0), 0.0, 0.0, _start())),
+    Entry(_dk.DifferentialDrivePoseEstimator, "estimator", "differential",
+          example=lambda: _dk.DifferentialDrivePoseEstimator(_R(0.0), 0.0, 0.0, _start())),
     # Dead wheels
-    Entry(DeadWheelKinematics, "kinematics", "deadwheel", no_peer=_DRIVEKIN_ONLY),
-    Entry(_dk.DeadWheelOdometry, "odometry", "deadwheel"),
-    Entry(_dk.DeadWheelPoseEstimator, "estimator", "deadwheel"),
-    Entry(_dk.TwoDeadWheelOdometry, "odometry", "twodeadwheel"),
-    Entry(_dk.TwoDeadWheelPoseEstimator, "estimator", "twodeadwheel"),
-    # Differential swerve pods (per pod: not a drivetrain of their own)
+    Entry(DeadWheelKinematics, "kinematics", "deadwheel", no_peer=_DRIVEKIN_ONLY,
+          example=_dead_wheels),
+    Entry(_dk.DeadWheelOdometry, "odometry", "deadwheel",
+          example=lambda: _dk.DeadWheelOdometry(_dead_wheels(), [0.0, 0.0, 0.0], _R(0.0),
+                                                _start())),
+    Entry(_dk.DeadWheelPoseEstimator, "estimator", "deadwheel",
+          example=lambda: _dk.DeadWheelPoseEstimator(_dead_wheels(), [0.0, 0.0, 0.0],
+                                                     _R(0.0), _start())),
+    # Two dead wheels 0.1 m ahead and 0.2 m to the right of the centre, and a gyro.
+    Entry(_dk.TwoDeadWheelOdometry, "odometry", "twodeadwheel",
+          example=lambda: _dk.TwoDeadWheelOdometry(0.1, -0.2, 0.0, 0.0, _R(0.0), _start())),
+    Entry(_dk.TwoDeadWheelPoseEstimator, "estimator", "twodeadwheel",
+          example=lambda: _dk.TwoDeadWheelPoseEstimator(0.1, -0.2, 0.0, 0.0, _R(0.0),
+                                                        _start())),
+    # Differential swerve pods (per pod: not a drivetrain of their own); the example pod
+    # has azimuth ratio 3, wheel ratio 5 and a 0.05 m wheel.
     Entry(_dk.DifferentialSwerveModuleKinematics, "kinematics", "diffswerve",
-          no_peer=_DRIVEKIN_ONLY),
+          no_peer=_DRIVEKIN_ONLY,
+          example=lambda: _dk.DifferentialSwerveModuleKinematics(3.0, 5.0, 0.05)),
     Entry(_dk.DifferentialSwerveModuleVelocities, "value", "diffswerve",
-          no_peer=_DRIVEKIN_ONLY),
+          no_peer=_DRIVEKIN_ONLY,
+          example=lambda: _dk.DifferentialSwerveModuleVelocities(1.5, -0.5)),
     Entry(_dk.DifferentialSwerveMotorVelocities, "value", "diffswerve",
-          no_peer=_DRIVEKIN_ONLY),
-    # Helpers
-    Entry(_dk.MathSharedStore, "helper"),
-    Entry(_dk.TimeInterpolatableBuffer, "helper"),
+          no_peer=_DRIVEKIN_ONLY,
+          example=lambda: _dk.DifferentialSwerveMotorVelocities(1.0, -2.0)),
+    # Helpers (Units has static methods only and refuses instances: no example)
+    Entry(_dk.MathSharedStore, "helper", example=_dk.MathSharedStore),
+    Entry(_dk.TimeInterpolatableBuffer, "helper", example=_double_buffer),
     Entry(_dk.Units, "helper"),
 )
 
