@@ -6,10 +6,15 @@ each positional argument is (a value object, a sequence of them, a float, a nump
 buffer, an ``out`` target). From a ``Sig`` the suite builds a valid call
 (:meth:`Sig.build`) and then breaks one argument at a time (``cases.py``).
 
-``test_registry.py`` enumerates the public API by introspection and fails, naming the
-member, when something is missing here — so a new class or method joins the suite by
-construction. To add a class: add a factory to :data:`VALID`, say whether it is
-immutable in :data:`IMMUTABLE` / :data:`INIT_ONCE`, and give every member a ``Sig``.
+The classes come from the catalog (``drivekin._core.catalog``; ``tests/api/test_catalog.py``
+checks that it holds every public class): ``test_registry.py`` enumerates its entries,
+introspects each class's members and fails, naming the member, when something is missing
+here — so a new class or method joins the suite by construction. Each class's valid
+instance (:data:`VALID`) is its catalog ``example``, except the few listed in
+:data:`SPECIAL` with the state the suite needs; :data:`KINEMATICS`, :data:`ODOMETRY`,
+:data:`ESTIMATORS` and :data:`INIT_ONCE` follow from the entries' kinds. To add a class:
+its catalog entry (with an ``example``), a second instance in :data:`ALT` if it is a value,
+whether it is immutable (:data:`IMMUTABLE`), and a ``Sig`` for every member.
 """
 from __future__ import annotations
 
@@ -22,6 +27,7 @@ import drivekin
 import drivekin.batch as batch
 import drivekin.protobuf as protobuf
 import drivekin.wpistruct as wpistruct
+from drivekin._core import catalog
 from drivekin import (
     ChassisAccelerations as CA,
     ChassisVelocities as CV,
@@ -67,15 +73,16 @@ N = 4  # modules of the registry's swerve drive
 GYRO0 = 0.0
 
 
+def example(cls):
+    """A fresh instance of ``cls``: its catalog entry's ``example``."""
+    return catalog.BY_CLASS[cls].example()
+
+
 def _swerve() -> SwerveDriveKinematics:
     k = SwerveDriveKinematics(T(0.3, 0.3), T(0.3, -0.3), T(-0.3, 0.3), T(-0.3, -0.25))
     # Distinct remembered headings, so a call that wrongly touches them is visible.
     k.resetHeadings([R(1.0), R(2.0), R(-1.0), R(3.0)])
     return k
-
-
-def _mecanum() -> MecanumDriveKinematics:
-    return MecanumDriveKinematics(T(0.3, 0.3), T(0.3, -0.3), T(-0.3, 0.3), T(-0.3, -0.3))
 
 
 def _diffswerve() -> DSK:
@@ -87,49 +94,27 @@ def _diffswerve() -> DSK:
 
 
 def _dead_wheels() -> DeadWheelKinematics:
-    # Three wheels, asymmetric, observable without a gyro.
-    return DeadWheelKinematics([Pose2d(0.0, 0.3, R(0.0)), Pose2d(0.1, -0.2, R(0.1)),
-                                Pose2d(-0.2, 0.05, R(np.pi / 2))])
+    # The catalog's three wheels: asymmetric, observable without a gyro.
+    return example(DeadWheelKinematics)
 
 
 DEAD_WHEELS = 3
 
-
-VALID = {  # a fresh, valid, non-trivial instance of each class
-    T: lambda: T(1.0, 2.0),
-    R: lambda: R(0.5),
-    Pose2d: lambda: Pose2d(1.0, 2.0, R(0.5)),
-    Transform2d: lambda: Transform2d(0.5, -1.0, R(0.25)),
-    Twist2d: lambda: Twist2d(0.5, 0.25, 0.125),
-    CV: lambda: CV(1.0, 0.5, 0.25),
-    CA: lambda: CA(1.0, 0.5, 0.25),
-    SMV: lambda: SMV(1.0, R(0.5)),
-    SMP: lambda: SMP(1.0, R(0.5)),
-    SMA: lambda: SMA(1.0, R(0.5)),
-    MWV: lambda: MWV(1.0, 2.0, 3.0, 4.0),
-    MWP: lambda: MWP(1.0, 2.0, 3.0, 4.0),
-    MWA: lambda: MWA(1.0, 2.0, 3.0, 4.0),
-    DWV: lambda: DWV(1.0, 2.0),
-    DWP: lambda: DWP(1.0, 2.0),
-    DWA: lambda: DWA(1.0, 2.0),
-    SwerveDriveKinematics: _swerve,
-    MecanumDriveKinematics: _mecanum,
-    DifferentialDriveKinematics: lambda: DifferentialDriveKinematics(0.6),
-    DSMV: lambda: DSMV(1.0, -2.0),
-    DSModV: lambda: DSModV(1.5, -0.5),
-    DSK: _diffswerve,
-    SwerveDriveOdometry: lambda: SwerveDriveOdometry(
-        _swerve(), R(GYRO0), [SMP(0.0, R(0.0)) for _ in range(N)], Pose2d(1.0, 2.0, R(0.5))),
-    MecanumDriveOdometry: lambda: MecanumDriveOdometry(
-        _mecanum(), R(GYRO0), MWP(0.0, 0.0, 0.0, 0.0), Pose2d(1.0, 2.0, R(0.5))),
-    DifferentialDriveOdometry: lambda: DifferentialDriveOdometry(
-        R(GYRO0), 0.0, 0.0, Pose2d(1.0, 2.0, R(0.5))),
-    DeadWheelKinematics: _dead_wheels,
-    DeadWheelOdometry: lambda: DeadWheelOdometry(
-        _dead_wheels(), [0.0] * DEAD_WHEELS, R(GYRO0), Pose2d(1.0, 2.0, R(0.5))),
-    TwoDeadWheelOdometry: lambda: TwoDeadWheelOdometry(
-        0.1, -0.2, 0.0, 0.0, R(GYRO0), Pose2d(1.0, 2.0, R(0.5))),
+# A fresh, valid, non-trivial instance of each class: the catalog's example. The odometry
+# and estimator examples start at gyro GYRO0 with zero readings, as the probe needs.
+VALID = {e.cls: e.example for e in catalog.ENTRIES if e.example is not None}
+# The classes whose instance here is not the catalog's example, and why (the factories
+# are set below: the estimators' in "pose estimators", Units' in "Units").
+SPECIAL = {
+    SwerveDriveKinematics: "remembered headings (and an asymmetric layout), so that a call "
+                           "that wrongly touches the heading memory is visible",
+    DSK: "small ratios for drive-level factors in (0, 1), and a reset offset",
+    **{e.cls: "one odometry sample at t = 0, so sampleAt and vision measurements have "
+              "history" for e in catalog.entries("estimator")},
+    Units: "no instances: the receiver of its static methods is the class itself",
 }
+VALID[SwerveDriveKinematics] = _swerve
+VALID[DSK] = _diffswerve
 
 ALT = {  # a second valid instance, different from VALID's
     T: lambda: T(-2.0, 0.5),
@@ -174,19 +159,17 @@ def make(cls):
     return (ALT if _alt() and cls in ALT else VALID)[cls]()
 
 
-# Values whose __init__ must refuse to run twice (and every object whose __init__ did
-# not run must refuse to compute): immutables, kinematics and odometry.
+# Objects whose __init__ must refuse to run twice (and every object whose __init__ did
+# not run must refuse to compute): immutable values, kinematics, odometry, estimators and
+# the interpolation buffer. Immutability is a property of the class that the catalog does
+# not record, so IMMUTABLE is listed here; the rest follows from the catalog's kinds.
 IMMUTABLE = {T, R, Pose2d, Transform2d}
-INIT_ONCE = IMMUTABLE | {SwerveDriveKinematics, MecanumDriveKinematics,
-                         DifferentialDriveKinematics, SwerveDriveOdometry,
-                         MecanumDriveOdometry, DifferentialDriveOdometry,
-                         DeadWheelKinematics, DeadWheelOdometry, TwoDeadWheelOdometry}
-KINEMATICS = {SwerveDriveKinematics, MecanumDriveKinematics, DifferentialDriveKinematics,
-              DeadWheelKinematics}
-ODOMETRY = {SwerveDriveOdometry, MecanumDriveOdometry, DifferentialDriveOdometry,
-            DeadWheelOdometry, TwoDeadWheelOdometry}
-INIT_ONCE |= {DSK}
-KINEMATICS |= {DSK}
+KINEMATICS = {e.cls for e in catalog.entries("kinematics")}
+ODOMETRY = {e.cls for e in catalog.entries("odometry")}
+ESTIMATORS = {e.cls for e in catalog.entries("estimator")}
+INIT_ONCE = IMMUTABLE | KINEMATICS | ODOMETRY | ESTIMATORS | {TIB}
+STATEFUL = ODOMETRY | ESTIMATORS | {TIB}   # no value semantics: not copyable, no str of values
+NAMESPACES = {MathSharedStore, Units}      # static methods only; the clock is not deterministic
 
 
 # ---- argument kinds ---------------------------------------------------------------
@@ -670,30 +653,17 @@ def _estimator(make, *update):
     return build
 
 
-VALID[SwerveDrivePoseEstimator] = _estimator(
-    lambda: SwerveDrivePoseEstimator(_swerve(), R(GYRO0), [SMP(0.0, R(0.0)) for _ in range(N)],
-                                     Pose2d(1.0, 2.0, R(0.5))),
-    R(GYRO0), [SMP(0.0, R(0.0)) for _ in range(N)])
-VALID[MecanumDrivePoseEstimator] = _estimator(
-    lambda: MecanumDrivePoseEstimator(_mecanum(), R(GYRO0), MWP(0.0, 0.0, 0.0, 0.0),
-                                      Pose2d(1.0, 2.0, R(0.5))),
-    R(GYRO0), MWP(0.0, 0.0, 0.0, 0.0))
-VALID[DifferentialDrivePoseEstimator] = _estimator(
-    lambda: DifferentialDrivePoseEstimator(R(GYRO0), 0.0, 0.0, Pose2d(1.0, 2.0, R(0.5))),
-    R(GYRO0), 0.0, 0.0)
-VALID[TwoDeadWheelPoseEstimator] = _estimator(
-    lambda: TwoDeadWheelPoseEstimator(0.1, -0.2, 0.0, 0.0, R(GYRO0), Pose2d(1.0, 2.0, R(0.5))),
-    0.0, 0.0, R(GYRO0))
-VALID[DeadWheelPoseEstimator] = _estimator(
-    lambda: DeadWheelPoseEstimator(_dead_wheels(), [0.0] * DEAD_WHEELS, R(GYRO0),
-                                   Pose2d(1.0, 2.0, R(0.5))),
-    [0.0] * DEAD_WHEELS, R(GYRO0))
-VALID[MathSharedStore] = MathSharedStore
-ESTIMATORS = {SwerveDrivePoseEstimator, MecanumDrivePoseEstimator,
-              DifferentialDrivePoseEstimator, TwoDeadWheelPoseEstimator, DeadWheelPoseEstimator}
-INIT_ONCE |= ESTIMATORS
-STATEFUL = ODOMETRY | ESTIMATORS   # no value semantics: not copyable, no str of values
-NAMESPACES = {MathSharedStore}     # static methods only; the clock is not deterministic
+# The update's readings: the catalog examples' starting readings (per drivetrain, as the
+# positions' form differs).
+_UPDATE = {
+    SwerveDrivePoseEstimator: (R(GYRO0), [SMP(0.0, R(0.0)) for _ in range(N)]),
+    MecanumDrivePoseEstimator: (R(GYRO0), MWP(0.0, 0.0, 0.0, 0.0)),
+    DifferentialDrivePoseEstimator: (R(GYRO0), 0.0, 0.0),
+    TwoDeadWheelPoseEstimator: (0.0, 0.0, R(GYRO0)),
+    DeadWheelPoseEstimator: ([0.0] * DEAD_WHEELS, R(GYRO0)),
+}
+for _cls in ESTIMATORS:
+    VALID[_cls] = _estimator(catalog.BY_CLASS[_cls].example, *_UPDATE[_cls])
 
 
 def _estimator_api(init, update_kinds, reset_kinds):
@@ -748,15 +718,8 @@ class ClockSource(Kind):
 API[MathSharedStore] = {"getTimestamp": S(), "setTimestampSource": S(ClockSource())}
 
 # ---- TimeInterpolatableBuffer ----------------------------------------------------
-# The registry's buffer is a double buffer (so samples are floats, and a hostile sample
-# is a hostile number) holding three samples inside its history.
-
-def _double_buffer():
-    b = TIB.createDoubleBuffer(1.5)
-    for t, v in ((0.0, 1.0), (0.25, -2.0), (1.0, 4.0)):
-        b.addSample(t, v)
-    return b
-
+# The registry's buffer is the catalog's: a double buffer (so samples are floats, and a
+# hostile sample is a hostile number) holding three samples inside its 1.5 s history.
 
 class Interpolator(Kind):
     """An interpolation function f(start, end, t): the valid one is the double buffer's
@@ -767,9 +730,6 @@ class Interpolator(Kind):
         return drivekin.interpolation._lerp
 
 
-VALID[TIB] = _double_buffer
-INIT_ONCE |= {TIB}
-STATEFUL |= {TIB}
 API[TIB] = {
     "__init__": S(Interpolator(), Num(1.5)),
     "createBuffer": [S(Num(1.5)), S(Interpolator(), Num(1.5))],
@@ -790,7 +750,6 @@ for _m in ("__init__", "resetPosition", "update"):
 
 # Units: static methods only and no instances (like the Java class), so the receiver is the
 # class itself and the instance lifecycle cases do not apply.
-NAMESPACES |= {Units}
 VALID[Units] = lambda: Units
 API[Units] = {name: S(NUM) for name in (
     "metersToFeet", "feetToMeters", "metersToInches", "inchesToMeters", "degreesToRadians",
@@ -871,4 +830,6 @@ def members(cls):
 
 
 def public_classes():
-    return [getattr(drivekin, n) for n in drivekin.__all__]
+    """The classes under attack: every catalog entry's (test_catalog.py checks that the
+    catalog holds every public class)."""
+    return [e.cls for e in catalog.ENTRIES]

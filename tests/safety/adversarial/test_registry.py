@@ -1,6 +1,8 @@
-"""The registry covers the whole public API: a public callable that is not registered
-fails here by name, so new classes and methods join the adversarial suite by
-construction (see registry.py for how to add one)."""
+"""The registry covers the whole public API: every class of the catalog
+(``drivekin._core.catalog``, which ``tests/api/test_catalog.py`` holds to every public
+class) with every member found by introspection; a public callable that is not registered
+fails here by name, so new classes and methods join the adversarial suite by construction
+(see registry.py for how to add one)."""
 from __future__ import annotations
 
 import drivekin
@@ -8,8 +10,10 @@ import drivekin.batch as batch
 import drivekin.protobuf as protobuf
 import drivekin.wpistruct as wpistruct
 import pytest
+from drivekin._core import catalog
 
 from tests.safety.adversarial import registry as reg
+from tests.safety.adversarial import support
 
 
 def _public_members(cls):
@@ -20,8 +24,9 @@ def _public_members(cls):
     return names
 
 
-@pytest.mark.parametrize("cls", reg.public_classes(), ids=lambda c: c.__name__)
-def test_every_public_member_is_registered(cls):
+@pytest.mark.parametrize("entry", catalog.ENTRIES, ids=lambda e: e.cls.__name__)
+def test_every_public_member_is_registered(entry):
+    cls = entry.cls
     assert cls in reg.API, f"{cls.__name__} has no entry in registry.API"
     assert cls in reg.VALID, f"{cls.__name__} has no factory in registry.VALID"
     missing = _public_members(cls) - set(reg.API[cls])
@@ -45,4 +50,44 @@ def test_every_protobuf_function_is_registered():
 
 
 def test_registry_has_no_unknown_classes():
-    assert set(reg.API) == set(reg.public_classes())
+    catalogued = {e.cls for e in catalog.ENTRIES}
+    assert set(reg.public_classes()) == catalogued
+    assert set(reg.API) == catalogued, sorted(c.__name__ for c in set(reg.API) ^ catalogued)
+    assert set(reg.VALID) == catalogued, sorted(c.__name__ for c in set(reg.VALID) ^ catalogued)
+
+
+@pytest.mark.parametrize("entry", catalog.ENTRIES, ids=lambda e: e.cls.__name__)
+def test_valid_instances_are_the_catalog_examples(entry):
+    # A factory of the registry's own is a SPECIAL case, with its reason.
+    cls = entry.cls
+    if cls in reg.SPECIAL:
+        assert reg.VALID[cls] is not entry.example, f"{cls.__name__} is not special"
+    else:
+        assert reg.VALID[cls] is entry.example, (
+            f"{cls.__name__}: registry.VALID has its own factory; use the catalog's "
+            "example, or say why in registry.SPECIAL")
+    obj = reg.VALID[cls]()
+    if entry.example is None:           # Units: its static methods' receiver is the class
+        assert obj is cls
+    else:
+        assert type(obj) is cls
+
+
+def test_kinds_follow_the_catalog():
+    assert reg.KINEMATICS == {e.cls for e in catalog.entries("kinematics")}
+    assert reg.ODOMETRY == {e.cls for e in catalog.entries("odometry")}
+    assert reg.ESTIMATORS == {e.cls for e in catalog.entries("estimator")}
+    assert reg.IMMUTABLE <= {e.cls for e in catalog.entries("value")}
+    assert reg.INIT_ONCE >= reg.KINEMATICS | reg.ODOMETRY | reg.ESTIMATORS | reg.IMMUTABLE
+
+
+@pytest.mark.parametrize("cls", sorted(reg.ODOMETRY, key=lambda c: c.__name__),
+                         ids=lambda c: c.__name__)
+def test_odometry_starts_at_the_probe_readings(cls):
+    # support's snapshot of an odometry object updates it with the probe's readings
+    # (gyro GYRO0, zero distances): a no-op only if the factory starts there.
+    obj = reg.VALID[cls]()
+    pose = (obj.getPose().x, obj.getPose().y, obj.getPose().getRotation().getRadians())
+    assert support.snap(obj) == support.snap(obj)
+    assert (obj.getPose().x, obj.getPose().y,
+            obj.getPose().getRotation().getRadians()) == pose
