@@ -8,6 +8,8 @@ malloc/calloc/realloc calls counted by ``drivekin._core.alloccount.AllocationCou
 once and refill, or as a float64 array (contiguous and strided); ``pose = odo.update(...)``
 and ``toTwist2d`` return objects from drivekin's freelists, which are not allocator calls.
 Each loop alternates two readings so every call integrates (or solves) something new.
+The loop that only reads the pose runs on every catalogued odometry class, these two
+included, in ``test_allocation_drivetrains.py``.
 """
 from __future__ import annotations
 
@@ -193,24 +195,3 @@ def test_to_twist2d(form, gyro):
             t = kin.toTwist2d(db, gyro)         # noqa: F841
 
     assert_no_allocations(loop, f"DeadWheelKinematics.toTwist2d({form}, {gyro})")
-
-
-# ---------------------------------------------------------------------------------------
-# A 50 Hz loop that reads the dead-wheel pose
-
-
-@pytest.mark.parametrize("make", [
-    lambda: DeadWheelOdometry(three(), [0.0, 0.0, 0.0], None, START),
-    lambda: TwoDeadWheelOdometry(0.1, -0.15, 0.0, 0.0, Rotation2d(0.0), START),
-], ids=["DeadWheelOdometry", "TwoDeadWheelOdometry"])
-def test_reading_the_pose(make):
-    odo = make()
-
-    def loop(it):
-        for _ in it:
-            pose = odo.getPose()
-            x = pose.getX()
-            heading = pose.getRotation().getRadians()   # noqa: F841
-            del x
-
-    assert_no_allocations(loop, "reading odo.getPose()")

@@ -7,6 +7,10 @@ self-tests): it warms up again after ``gc.collect()``, so bodies that return flo
 CPython's float freelist measure as the zero they are. Objects drawn from a freelist
 (drivekin's Cython freelists, CPython's float freelist) are not allocator calls; that is how
 ``pose = odo.update(...)`` and ``pose.getX()`` stay free.
+
+The pose-reading loops run on every odometry class and every estimator of the catalog
+(``drivekin._core.catalog``: each entry's ``example``), so a new drivetrain's are covered
+without an edit here.
 """
 from __future__ import annotations
 
@@ -14,6 +18,7 @@ import numpy as np
 import pytest
 
 from tests._support.alloc import assert_no_allocations
+from drivekin._core import catalog
 from drivekin import (
     ChassisVelocities,
     DifferentialDriveKinematics,
@@ -215,12 +220,14 @@ def test_differential_odometry_update():
 
 
 # ---------------------------------------------------------------------------------------
-# A 50 Hz loop that only reads the pose
+# A 50 Hz loop that only reads the pose: every odometry class and estimator of the catalog
 
 
-@pytest.mark.parametrize("make", [lambda: swerve_odometry(4), mecanum_odometry,
-                                  differential_odometry],
-                         ids=["swerve", "mecanum", "differential"])
+def _catalogued(kind):
+    return [pytest.param(e.example, id=e.drivetrain) for e in catalog.entries(kind)]
+
+
+@pytest.mark.parametrize("make", _catalogued("odometry"))
 def test_reading_the_pose(make):
     odo = make()
 
@@ -235,3 +242,20 @@ def test_reading_the_pose(make):
             del x, y, heading, c
 
     assert_no_allocations(loop, "reading odo.getPose()")
+
+
+@pytest.mark.parametrize("make", _catalogued("estimator"))
+def test_reading_the_estimate(make):
+    est = make()
+
+    def loop(it):
+        for _ in it:
+            pose = est.getEstimatedPosition()
+            x = pose.getX()
+            y = pose.getY()
+            heading = pose.getRotation().getRadians()
+            c = pose.getRotation().getCos()
+            t = pose.getTranslation().getNorm()   # noqa: F841
+            del x, y, heading, c
+
+    assert_no_allocations(loop, "reading est.getEstimatedPosition()")
