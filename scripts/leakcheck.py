@@ -17,8 +17,12 @@ of one block per 1000 calls is 1000 blocks at the default count. Error rows must
 the listed exception; any other outcome fails the row too. A row may divide the count
 by a third element (constructors solving a pseudo-inverse take ~0.5 ms a call).
 
-Adding an operation is one line in OPERATIONS or ERRORS. Exit status: 0 if every row
-passed, 1 otherwise (the failing rows are named), 2 for bad arguments.
+Adding an operation is one line in OPERATIONS or ERRORS. Every class of the catalog
+(``drivekin._core.catalog``) also gets rows of its own, from its entry: building its
+``example``, and copying it (values and kinematics), so a new class is leak-checked by
+its catalog entry alone. The shared fixtures' swerve, mecanum and differential
+kinematics are the catalog's examples too. Exit status: 0 if every row passed, 1
+otherwise (the failing rows are named), 2 for bad arguments.
 
     python scripts/leakcheck.py                  # 10**6 calls per row, about 3 minutes
     python scripts/leakcheck.py --count 20000 -k swerve
@@ -38,24 +42,32 @@ import numpy as np
 from drivekin import (
     ChassisAccelerations, ChassisVelocities, DeadWheelKinematics, DeadWheelOdometry,
     DifferentialDriveKinematics, DifferentialDriveOdometry, DifferentialDriveWheelPositions,
-    DifferentialDriveWheelVelocities, MecanumDriveKinematics, MecanumDriveOdometry,
+    DifferentialDriveWheelVelocities, MecanumDriveOdometry,
     MecanumDriveWheelPositions, MecanumDriveWheelVelocities, Pose2d, Rotation2d,
     SwerveDriveKinematics, SwerveDriveOdometry, SwerveModuleAcceleration,
     SwerveModulePosition, SwerveModuleVelocity, Transform2d, Translation2d, Twist2d,
     TwoDeadWheelOdometry, wpistruct,
 )
+from drivekin._core import catalog
 from drivekin.geometry import _rotation_from_cos_sin as rotation_from_cos_sin
 
 SLACK_BLOCKS = 64          # one-off effects: a method cache entry, a resized dict, ...
 SLACK_BYTES = 64 * 1024
 WARMUP = 1000
 
+
+
+def example(kind, drivetrain):
+    """A new instance of the catalog's ``kind`` class of ``drivetrain`` (its example)."""
+    (entry,) = catalog.entries(kind, drivetrain=drivetrain)
+    return entry.example()
+
+
 # --- fixtures shared by the rows -------------------------------------------------------
-CORNERS = [Translation2d(0.3, 0.3), Translation2d(0.3, -0.3),
-           Translation2d(-0.3, 0.3), Translation2d(-0.3, -0.3)]
-swerve = SwerveDriveKinematics(*CORNERS)
-mecanum = MecanumDriveKinematics(*CORNERS)
-diff = DifferentialDriveKinematics(0.6)
+swerve = example("kinematics", "swerve")        # 4 modules at (±0.3, ±0.3) m
+mecanum = example("kinematics", "mecanum")      # wheels at the same points
+diff = example("kinematics", "differential")    # trackwidth 0.6 m
+CORNERS = list(swerve.getModules())
 cv = ChassisVelocities(1.0, 0.5, 0.8)
 ca = ChassisAccelerations(0.5, 0.2, 0.3)
 angle = Rotation2d(0.3)
@@ -405,6 +417,21 @@ ERRORS += [
     ("uninitialised diffswerve kinematics", lambda: DifferentialSwerveModuleKinematics.__new__(
         DifferentialSwerveModuleKinematics).toModulePosition(0.0, 0.0), RuntimeError),
 ]
+
+# --- every catalogued class, from its entry --------------------------------------------
+# Examples that build kinematics solve a pseudo-inverse (up to ~0.1 ms a call): those
+# kinds run a hundredth of the count; the helpers (a buffer filled in Python, ~4 µs) and
+# a copy (~2 µs through copyreg) a tenth at most.
+EXAMPLE_DIVISOR = {"kinematics": 100, "odometry": 100, "estimator": 100, "helper": 10}
+
+for _e in catalog.ENTRIES:
+    if _e.example is None:
+        continue                                  # no instances (Units)
+    _div = EXAMPLE_DIVISOR.get(_e.kind, 1)
+    OPERATIONS.append((f"{_e.cls.__name__} example", _e.example, _div))
+    if _e.kind in ("value", "kinematics"):        # odometry and estimators do not copy
+        OPERATIONS.append((f"copy.copy({_e.cls.__name__} example)",
+                           lambda obj=_e.example(): copy.copy(obj), max(_div, 10)))
 
 
 def expect(fn, exc):
