@@ -1,6 +1,11 @@
 """Shared set-up for the drivekin benchmarks: the fixed robot, the fixed inputs, the
 prebuilt robotpy / drivekin argument objects, the loop compiler and the machine description.
 
+drivekin's kinematics are the catalog's examples (``drivekin._core.catalog``), checked to
+be the robot of :data:`INPUTS`, from which the robotpy objects (and the numpy code of
+``batch_table.py``) are built independently. ``rp.kinematics`` / ``dk.kinematics`` and
+``rp.ik_wheels`` / ``dk.ik_wheels`` hold them by the catalog's drivetrain key.
+
 Used by ``registry.py`` and ``conftest.py`` for the ``bench_*.py`` files (pytest-benchmark;
 ``_bench.bench_tests`` writes their test functions) and by ``ratio_table.py`` (stand-alone
 timer), so both measure exactly the same statements on exactly the same inputs. It imports
@@ -79,6 +84,9 @@ def build_robotpy(inp: Inputs = INPUTS) -> SimpleNamespace:
     dt = inp.dt
     return SimpleNamespace(
         g=g, k=k,
+        # by the catalog's drivetrain key (registry.py's drivetrain loop reads these)
+        kinematics={"swerve": kin, "mecanum": mkin, "differential": dkin},
+        ik_wheels={"mecanum": mwheels, "differential": dwheels},
         Kinematics=k.SwerveDrive4Kinematics,
         ChassisSpeeds=k.ChassisSpeeds,
         kin=kin,
@@ -133,12 +141,28 @@ def kinematics_available() -> bool:
     return True
 
 
+def catalog_kinematics(drivetrain: str, inp: Inputs = INPUTS):
+    """A new instance of the catalog's example kinematics of ``drivetrain`` (a catalog
+    drivetrain key), checked to be the robot of ``inp`` (ValueError if not)."""
+    from drivekin._core import catalog
+
+    (entry,) = catalog.entries("kinematics", drivetrain=drivetrain)
+    kin = entry.example()
+    got = entry.flatten(kin)               # the wire form: module positions, or trackwidth
+    want = ((inp.trackwidth,) if drivetrain == "differential"
+            else tuple(c for module in inp.modules for c in module))
+    if got != want:
+        raise ValueError(f"the catalog's {drivetrain} example {got} is not the benchmark "
+                         f"robot {want} (Inputs)")
+    return kin
+
+
 def build_drivekin(inp: Inputs = INPUTS) -> SimpleNamespace:
     """drivekin objects. Needs drivekin.kinematics (ImportError otherwise)."""
     from drivekin import kinematics as k
 
     ns = build_drivekin_geometry(inp)
-    kin = k.SwerveDriveKinematics(*(ns.g.Translation2d(x, y) for x, y in inp.modules))
+    kin = catalog_kinematics("swerve", inp)
     cv = k.ChassisVelocities(inp.vx, inp.vy, inp.omega)
     ns.k = k
     ns.Kinematics = k.SwerveDriveKinematics
@@ -157,12 +181,14 @@ def _add_drivetrains(ns: SimpleNamespace, inp: Inputs) -> None:
 
     k, dt = ns.k, inp.dt
     ns.m, ns.d, ns.o = m, d, o
-    ns.mkin = m.MecanumDriveKinematics(*(ns.g.Translation2d(x, y) for x, y in inp.modules))
+    ns.mkin = catalog_kinematics("mecanum", inp)
     ns.MecanumDriveWheelVelocities = m.MecanumDriveWheelVelocities
     ns.mwheels = ns.mkin.toWheelVelocities(ns.cv)
-    ns.dkin = d.DifferentialDriveKinematics(inp.trackwidth)
+    ns.dkin = catalog_kinematics("differential", inp)
     ns.DifferentialDriveWheelVelocities = d.DifferentialDriveWheelVelocities
     ns.dwheels = ns.dkin.toWheelVelocities(ns.cv)
+    ns.kinematics = {"swerve": ns.kin, "mecanum": ns.mkin, "differential": ns.dkin}
+    ns.ik_wheels = {"mecanum": ns.mwheels, "differential": ns.dwheels}
     ns.SwerveDriveOdometry = o.SwerveDriveOdometry
     ns.MecanumDriveOdometry = o.MecanumDriveOdometry
     ns.DifferentialDriveOdometry = o.DifferentialDriveOdometry
@@ -179,23 +205,11 @@ def fresh_states(dk: SimpleNamespace) -> list:
     return [dk.SwerveModuleVelocity(s.velocity, s.angle) for s in dk.states]
 
 
-def rp_mecanum_speeds(rp: SimpleNamespace):
-    """A new robotpy MecanumDriveWheelSpeeds equal to rp.mwheels (desaturate mutates)."""
-    w = rp.mwheels
-    return rp.MecanumDriveWheelSpeeds(w.frontLeft, w.frontRight, w.rearLeft, w.rearRight)
-
-
-def dk_mecanum_velocities(dk: SimpleNamespace):
-    w = dk.mwheels
-    return dk.MecanumDriveWheelVelocities(w.frontLeft, w.frontRight, w.rearLeft, w.rearRight)
-
-
-def rp_differential_speeds(rp: SimpleNamespace):
-    return rp.DifferentialDriveWheelSpeeds(rp.dwheels.left, rp.dwheels.right)
-
-
-def dk_differential_velocities(dk: SimpleNamespace):
-    return dk.DifferentialDriveWheelVelocities(dk.dwheels.left, dk.dwheels.right)
+def copy_wheels(w, values):
+    """A new wheel object equal to ``w`` (desaturate mutates): its class called with
+    ``values(w)``, the wheel values in constructor order (robotpy 2026's wheel speeds and
+    drivekin's wheel velocities take the same)."""
+    return type(w)(*values(w))
 
 
 def positions_array(positions):

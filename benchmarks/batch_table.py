@@ -35,7 +35,7 @@ from typing import Callable, Optional  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from _common import INPUTS, machine_description  # noqa: E402
+from _common import INPUTS, catalog_kinematics, machine_description  # noqa: E402
 
 RATIO_TARGET = 1.5          # drivekin batch / numpy-vectorised throughput
 REPLAY_TARGET = 20.0        # M samples/s, swerve odometry replay
@@ -314,7 +314,8 @@ def poses(res):
 
 
 class Objects:
-    """drivekin and robotpy objects for the fixed robot."""
+    """drivekin and robotpy objects for the fixed robot (drivekin's swerve, mecanum and
+    differential kinematics: the catalog's examples, checked to be INPUTS' robot)."""
 
     def __init__(self):
         from drivekin import deadwheel, differential, geometry, kinematics, mecanum, odometry
@@ -322,10 +323,9 @@ class Objects:
         self.dg, self.dk, self.dm, self.dd, self.dw, self.do = (
             geometry, kinematics, mecanum, differential, deadwheel, odometry)
         self.rg, self.rk = rg, rk
-        t = [geometry.Translation2d(x, y) for x, y in INPUTS.modules]
-        self.kin = kinematics.SwerveDriveKinematics(*t)
-        self.mkin = mecanum.MecanumDriveKinematics(*t)
-        self.dkin = differential.DifferentialDriveKinematics(INPUTS.trackwidth)
+        self.kin = catalog_kinematics("swerve")
+        self.mkin = catalog_kinematics("mecanum")
+        self.dkin = catalog_kinematics("differential")
         self.wkin = deadwheel.DeadWheelKinematics(
             [geometry.Pose2d(x, y, geometry.Rotation2d(p)) for x, y, p in DEAD_WHEELS])
         rt = [rg.Translation2d(x, y) for x, y in INPUTS.modules]
@@ -334,8 +334,7 @@ class Objects:
         self.rdkin = rk.DifferentialDriveKinematics(INPUTS.trackwidth)
 
     def fresh_swerve(self):
-        return self.dk.SwerveDriveKinematics(
-            *(self.dg.Translation2d(x, y) for x, y in INPUTS.modules))
+        return catalog_kinematics("swerve")
 
 
 def build_rows(o: Objects, d: dict, n_loop: int) -> list:

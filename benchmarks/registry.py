@@ -2,25 +2,30 @@
 drivekin allocation-free path (+ optional extra variants) + target ratios.
 
 Both the pytest-benchmark files (``bench_*.py``) and ``ratio_table.py`` are generated from
-this list, so adding a drivetrain is a few lines here. The mecanum IK entry (written below
-by ``_wheel_drive_ops``, which also adds FK and desaturate) is, spelled out::
+this list. The IK, FK and desaturate entries of the wheel drives are written by
+``_wheel_drive_ops`` for every drivetrain of the catalog (``drivekin._core.catalog``) whose
+kinematics implement the drivetrain contract with unsteered wheels and have a
+robotpy-wpimath peer (today mecanum and differential); the mecanum IK entry is, spelled
+out::
 
     register(Operation(
         key="mecanum.ik", title="mecanum IK toWheelVelocities", suite="mecanum",
-        robotpy=Case("kin.toWheelSpeeds(cs)", lambda rp, dk: dict(kin=rp.mkin, cs=rp.cs),
+        robotpy=Case("kin.toWheelSpeeds(cs)",
+                     lambda rp, dk: dict(kin=rp.kinematics["mecanum"], cs=rp.cs),
                      value="wheels4(kin.toWheelSpeeds(cs))"),
-        facade=Case("kin.toWheelVelocities(cv)", lambda rp, dk: dict(kin=dk.mkin, cv=dk.cv),
+        facade=Case("kin.toWheelVelocities(cv)",
+                    lambda rp, dk: dict(kin=dk.kinematics["mecanum"], cv=dk.cv),
                     value="wheels4(kin.toWheelVelocities(cv))"),
         alloc_free=Case("kin.toWheelVelocitiesInto(cv, out)",
-                        lambda rp, dk: dict(kin=dk.mkin, cv=dk.cv,
+                        lambda rp, dk: dict(kin=dk.kinematics["mecanum"], cv=dk.cv,
                                             out=dk.MecanumDriveWheelVelocities()),
                         value="wheels4(out)", note="out: MecanumDriveWheelVelocities"),
         targets=DRIVETRAIN_TARGETS))        # (façade, alloc-free) = (0.25, 0.12)
 
-plus building ``rp.mkin`` (``wpimath.kinematics.MecanumDriveKinematics``), ``dk.mkin`` and
-``dk.MecanumDriveWheelVelocities`` (``drivekin.mecanum``) in ``_common.build_robotpy`` /
-``_add_drivetrains``, and a bench file that collects the suite (``bench_drivetrains.py``
-collects ``mecanum``, ``differential`` and ``odometry``; a new suite's file is
+A new such drivetrain needs its robotpy kinematics in ``_common.build_robotpy``
+(``rp.kinematics`` and ``rp.ik_wheels``, by its catalog key; drivekin's come from the
+catalog) and a bench file that collects its suite (``bench_drivetrains.py`` collects
+``mecanum``, ``differential`` and ``odometry``; a new suite's file is
 ``test_bench, test_values_agree = _bench.bench_tests("<suite>")``). ``ratio_table.py``
 picks new entries up by itself.
 
@@ -50,8 +55,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Callable, Optional
 
-from _common import (INPUTS, dk_differential_velocities, dk_mecanum_velocities, fresh_states,
-                     positions_array, rp_differential_speeds, rp_mecanum_speeds, states_array)
+from _common import INPUTS, copy_wheels, fresh_states, positions_array, states_array
 
 #: The three columns of the ratio table, in order.
 VARIANTS = ("robotpy", "facade", "alloc_free")
@@ -358,7 +362,15 @@ DRIVETRAIN_TARGETS = (0.25, 0.12)
 #   [unsaturated] limit 5.0 m/s, above every wheel: no case ever rescales; all three
 #                 compute max|w| and compare, identical arithmetic on every call (the
 #                 façade also allocates its returned copy).
-def _desaturate_ops(drive, label, rp_wheels, dk_wheels, flat, wheels_note):
+def _desaturate_ops(drive, label, flat, wheels_note):
+    values = VALUE_HELPERS[flat]
+
+    def rp_wheels(rp):              # a new wheel object per case: desaturate mutates
+        return copy_wheels(rp.ik_wheels[drive], values)
+
+    def dk_wheels(dk):
+        return copy_wheels(dk.ik_wheels[drive], values)
+
     for kind, m in (("saturated", INPUTS.max_speed),
                     ("unsaturated", INPUTS.max_speed_unsaturated)):
         if kind == "saturated":
@@ -384,49 +396,73 @@ def _desaturate_ops(drive, label, rp_wheels, dk_wheels, flat, wheels_note):
             targets=DRIVETRAIN_TARGETS))
 
 
-def _wheel_drive_ops(drive, kin, wheels, wheel_cls, flat, rp_wheels, dk_wheels, wheels_note):
+def _wheel_drive_ops(drive, wheel_cls, flat, wheels_note):
     """IK, FK and the two desaturate rows of a drivetrain with a wheel-speed object.
 
-    ``kin`` / ``wheels`` name the prebuilt kinematics and IK wheel objects on ``rp`` and
-    ``dk`` (``mkin`` / ``mwheels``, ...); ``wheel_cls`` is drivekin's wheel-velocity class
-    (an attribute of ``dk``); ``flat`` the value helper that flattens a wheel object."""
+    The prebuilt kinematics and IK wheel objects are ``rp.kinematics[drive]`` /
+    ``rp.ik_wheels[drive]`` and the same on ``dk``; ``wheel_cls`` names drivekin's
+    wheel-velocity class; ``flat`` the value helper that flattens a wheel object."""
+
+    def out(dk):
+        return type(dk.ik_wheels[drive])()             # a new drivekin wheel_cls
 
     register(Operation(
         key=f"{drive}.ik", title=f"{drive} IK toWheelVelocities", suite=drive,
         robotpy=Case("kin.toWheelSpeeds(cs)",
-                     lambda rp, dk: dict(kin=getattr(rp, kin), cs=rp.cs),
+                     lambda rp, dk: dict(kin=rp.kinematics[drive], cs=rp.cs),
                      value=f"{flat}(kin.toWheelSpeeds(cs))"),
         facade=Case("kin.toWheelVelocities(cv)",
-                    lambda rp, dk: dict(kin=getattr(dk, kin), cv=dk.cv),
+                    lambda rp, dk: dict(kin=dk.kinematics[drive], cv=dk.cv),
                     value=f"{flat}(kin.toWheelVelocities(cv))"),
         alloc_free=Case("kin.toWheelVelocitiesInto(cv, out)",
-                        lambda rp, dk: dict(kin=getattr(dk, kin), cv=dk.cv,
-                                            out=getattr(dk, wheel_cls)()),
+                        lambda rp, dk: dict(kin=dk.kinematics[drive], cv=dk.cv, out=out(dk)),
                         value=f"{flat}(out)", note=f"out: {wheel_cls}"),
         targets=DRIVETRAIN_TARGETS))
 
     register(Operation(
         key=f"{drive}.fk", title=f"{drive} FK toChassisVelocities", suite=drive,
         robotpy=Case("kin.toChassisSpeeds(w)",
-                     lambda rp, dk: dict(kin=getattr(rp, kin), w=getattr(rp, wheels)),
+                     lambda rp, dk: dict(kin=rp.kinematics[drive], w=rp.ik_wheels[drive]),
                      value="speeds3(kin.toChassisSpeeds(w))"),
         facade=Case("kin.toChassisVelocities(w)",
-                    lambda rp, dk: dict(kin=getattr(dk, kin), w=getattr(dk, wheels)),
+                    lambda rp, dk: dict(kin=dk.kinematics[drive], w=dk.ik_wheels[drive]),
                     value="speeds3(kin.toChassisVelocities(w))"),
         alloc_free=Case("kin.toChassisVelocitiesInto(w, out)",
-                        lambda rp, dk: dict(kin=getattr(dk, kin), w=getattr(dk, wheels),
+                        lambda rp, dk: dict(kin=dk.kinematics[drive], w=dk.ik_wheels[drive],
                                             out=dk.ChassisVelocities()),
                         value="speeds3(out)", note="out: ChassisVelocities"),
         targets=DRIVETRAIN_TARGETS))
 
-    _desaturate_ops(drive, f"{drive} {wheel_cls}", rp_wheels, dk_wheels, flat, wheels_note)
+    _desaturate_ops(drive, f"{drive} {wheel_cls}", flat, wheels_note)
 
 
-_wheel_drive_ops("mecanum", "mkin", "mwheels", "MecanumDriveWheelVelocities", "wheels4",
-                 rp_mecanum_speeds, dk_mecanum_velocities, "wheels 1.0, 2.0, -0.4, 3.4 m/s")
-_wheel_drive_ops("differential", "dkin", "dwheels", "DifferentialDriveWheelVelocities",
-                 "wheels2", rp_differential_speeds, dk_differential_velocities,
-                 "wheels 0.9, 2.1 m/s")
+def _wheel_drives():
+    """(drivetrain key, wheel-velocity class name, value helper, note) of every wheel drive
+    in the catalog: kinematics implementing the drivetrain contract, with unsteered wheels
+    and a robotpy-wpimath peer (the dead wheels have none: no robotpy baseline). The note
+    gives the example robot's IK wheel values at the benchmark input."""
+    try:
+        from drivekin import ChassisVelocities
+        from drivekin._core import catalog
+        from drivekin._core.drivetrain import Drivetrain
+    except ImportError:          # drivekin.kinematics not built: no drivetrain cases
+        return
+    cv = ChassisVelocities(INPUTS.vx, INPUTS.vy, INPUTS.omega)
+    for e in catalog.entries("kinematics"):
+        if not issubclass(e.cls, Drivetrain) or e.steered or e.peer is None:
+            continue
+        wheels = e.example().toWheelVelocities(cv)
+        values = catalog.BY_CLASS[type(wheels)].flatten(wheels)
+        # wheels4, wheels2: the same field names in robotpy 2026 and drivekin
+        flat = f"wheels{len(values)}"
+        if flat not in VALUE_HELPERS:
+            raise ValueError(f"{e.drivetrain}: no value helper {flat} for its wheels")
+        yield (e.drivetrain, type(wheels).__name__, flat,
+               "wheels " + ", ".join(f"{v:.1f}" for v in values) + " m/s")
+
+
+for _drive in _wheel_drives():
+    _wheel_drive_ops(*_drive)
 
 
 # ---------------------------------------------------------------------------------------
