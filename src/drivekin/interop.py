@@ -54,7 +54,8 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Any, NamedTuple, overload
 
 from drivekin._core import catalog
-from drivekin._core.catalog import SWERVE_MODULE_COUNTS, qualified as _qualified
+from drivekin._core.catalog import SWERVE_MODULE_COUNTS  # noqa: F401  (0.1.0 name)
+from drivekin._core.catalog import qualified as _qualified
 
 if TYPE_CHECKING:
     # The overloads below give each conversion its static types.

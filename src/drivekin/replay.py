@@ -58,20 +58,14 @@ from drivekin._core import catalog
 from drivekin._core.plotting import pyplot
 from drivekin.datalog import DataLogError, LogData
 from drivekin.deadwheel import DeadWheelKinematics
-from drivekin.geometry import Pose2d, Rotation2d, Translation2d
-from drivekin.kinematics import SwerveDriveKinematics
-from drivekin.mecanum import MecanumDriveKinematics, MecanumDriveWheelPositions
-from drivekin.odometry import (
-    DeadWheelOdometry,
-    DifferentialDriveOdometry,
-    MecanumDriveOdometry,
-    SwerveDriveOdometry,
-)
+from drivekin.geometry import Pose2d, Rotation2d
 
 __all__ = ["DriftStats", "ReplayConfig", "ReplayResult", "plotReplay", "replayLog",
            "replayPoses", "report", "writeReplayLog"]
 
-DRIVETRAINS = ("swerve", "mecanum", "differential", "deadwheel")
+#: The drivetrains a log can be replayed for: the catalog's odometry classes that can be
+#: started from a positions stack (in catalog order).
+DRIVETRAINS = tuple(e.drivetrain for e in catalog.entries("odometry") if e.start is not None)
 REPLAY_PREFIX = "/drivekin/"
 GAP_PERIODS = 3.0       # a wheel-sample interval this many median periods long is a gap
 POSE_ENTRY = "/drivekin/ReplayPose"
@@ -277,6 +271,14 @@ def _rate(t: np.ndarray) -> float:
 # ---------------------------------------------------------------------------------------
 # Replay
 
+def _kinematics_entry(kind: str) -> catalog.Entry:
+    return catalog.entries("kinematics", drivetrain=kind)[0]
+
+
+def _odometry_entry(kind: str) -> catalog.Entry:
+    return catalog.entries("odometry", drivetrain=kind)[0]
+
+
 def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig) -> tuple[Any, str]:
     """The kinematics object (or None) and a description of the geometry used."""
     kin: Any
@@ -295,7 +297,7 @@ def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig) -> tuple[A
         if len(mods) != width:
             raise DataLogError(f"{len(mods)} module offsets given, the log's module array "
                                f"has {width} modules")
-        kin = SwerveDriveKinematics([Translation2d(x, y) for x, y in mods])
+        kin = _kinematics_entry(kind).build(*[c for xy in mods for c in xy])  # type: ignore[misc]
         text = ", ".join(f"({x:g}, {y:g})" for x, y in mods)
         return kin, f"{width} modules at {text} m ({src})"
     if kind == "mecanum":
@@ -312,7 +314,7 @@ def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig) -> tuple[A
             src = f"from {name}"
         if len(mods) != 4:
             raise DataLogError(f"mecanum needs 4 wheel offsets, got {len(mods)}")
-        kin = MecanumDriveKinematics(*[Translation2d(x, y) for x, y in mods])
+        kin = _kinematics_entry(kind).build(*[c for xy in mods for c in xy])  # type: ignore[misc]
         text = ", ".join(f"({x:g}, {y:g})" for x, y in mods)
         return kin, f"wheels at {text} m ({src})"
     if kind == "deadwheel":
@@ -490,15 +492,7 @@ def replayLog(log: LogData | str | os.PathLike[str],
         x, y, th = _interp_poses(logged[0], logged[1], tw[:1])[0]
         start = Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th)))
     g0 = Rotation2d.fromRadians(float(gyro[0]))
-    if kind == "swerve":
-        odo: Any = SwerveDriveOdometry(kin, g0, np.ascontiguousarray(P[0]), start)
-    elif kind == "mecanum":
-        odo = MecanumDriveOdometry(kin, g0, MecanumDriveWheelPositions(*P[0].tolist()),
-                                   start)
-    elif kind == "differential":
-        odo = DifferentialDriveOdometry(g0, float(P[0, 0]), float(P[0, 1]), start)
-    else:
-        odo = DeadWheelOdometry(kin, np.ascontiguousarray(P[0]), g0, start)
+    odo = _odometry_entry(kind).start(kin, g0, P[0], start)  # type: ignore[misc]
     poses = replayPoses(odo, gyro, P)
 
     rates = {"positions": _rate(tw)}

@@ -25,6 +25,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, Optional, Union
 
+import numpy as np
+
 import drivekin as _dk
 from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.deadwheel import DeadWheelKinematics
@@ -114,6 +116,9 @@ class Entry:
     peer: Peer | None = None
     no_peer: str | None = None     # why robotpy-wpimath 2026 has no peer ({}: the name)
     positions: str | None = None   # odometry: the log type of one positions sample
+    # odometry: start one from its kinematics (or None), the gyro, the first row of a
+    # positions stack as drivekin.batch.replay reads it, and the start pose (log replay)
+    start: Callable[[Any, Rotation2d, Any, Pose2d], Any] | None = None
     steered: bool = False          # kinematics: its wheels are steered modules
     # One typical valid instance (None: the class has no instances); the test registries
     # (adversarial suite, allocation tests, leak check, benchmarks) and tools use it.
@@ -391,6 +396,7 @@ ENTRIES: tuple[Entry, ...] = (
           example=_swerve),
     Entry(_dk.SwerveDriveOdometry, "odometry", "swerve",
           positions="struct:SwerveModulePosition[]",
+          start=lambda k, g, row, p: _dk.SwerveDriveOdometry(k, g, np.ascontiguousarray(row), p),
           example=lambda: _dk.SwerveDriveOdometry(_swerve(), _R(0.0), _swerve_zeros(),
                                                   _start())),
     Entry(_dk.SwerveDrivePoseEstimator, "estimator", "swerve",
@@ -436,6 +442,8 @@ ENTRIES: tuple[Entry, ...] = (
           example=_mecanum),
     Entry(_dk.MecanumDriveOdometry, "odometry", "mecanum",
           positions="struct:MecanumDriveWheelPositions",
+          start=lambda k, g, row, p: _dk.MecanumDriveOdometry(
+              k, g, MecanumDriveWheelPositions(*row.tolist()), p),
           example=lambda: _dk.MecanumDriveOdometry(_mecanum(), _R(0.0),
                                                    MecanumDriveWheelPositions(), _start())),
     Entry(_dk.MecanumDrivePoseEstimator, "estimator", "mecanum",
@@ -470,6 +478,8 @@ ENTRIES: tuple[Entry, ...] = (
           example=lambda: DifferentialDriveKinematics(0.6)),
     Entry(_dk.DifferentialDriveOdometry, "odometry", "differential",
           positions="struct:DifferentialDriveWheelPositions",
+          start=lambda k, g, row, p: _dk.DifferentialDriveOdometry(g, float(row[0]),
+                                                                   float(row[1]), p),
           example=lambda: _dk.DifferentialDriveOdometry(_R(0.0), 0.0, 0.0, _start())),
     Entry(_dk.DifferentialDrivePoseEstimator, "estimator", "differential",
           example=lambda: _dk.DifferentialDrivePoseEstimator(_R(0.0), 0.0, 0.0, _start())),
@@ -477,6 +487,7 @@ ENTRIES: tuple[Entry, ...] = (
     Entry(DeadWheelKinematics, "kinematics", "deadwheel", no_peer=_DRIVEKIN_ONLY,
           example=_dead_wheels),
     Entry(_dk.DeadWheelOdometry, "odometry", "deadwheel",
+          start=lambda k, g, row, p: _dk.DeadWheelOdometry(k, np.ascontiguousarray(row), g, p),
           example=lambda: _dk.DeadWheelOdometry(_dead_wheels(), [0.0, 0.0, 0.0], _R(0.0),
                                                 _start())),
     Entry(_dk.DeadWheelPoseEstimator, "estimator", "deadwheel",
