@@ -29,18 +29,18 @@ stays safe, but the interleaving is unspecified).
 
 SIMD build. Built with ``DRIVEKIN_SIMD=1`` (setup.py; x86_64 with AVX2 and glibc ≥ 2.35),
 this module takes its sines, cosines and atan2 four at a time from glibc's libmvec
-(``SIMD`` is then True) instead of libm, and results are no longer bit-identical.
-glibc documents at most 2 ulp for libmvec's AVX2 sin and cos and 3 ulp for atan2
-(libm itself: 1 ulp). The replay also renormalises each composed heading with one Newton
-step instead of a square root and a division (within an ulp or two; it halves the
-replay's sequential latency). The bound, which tests/test_batch_simd.py checks against the
-per-call API: each per-sample result (kinematics, discretize, the rotations, exp, log)
-is within 1e-14 · max(|x|, 1) of the per-call value x; a replay's poses are within
-1e-14 · k · max(|x|, 1) after k samples, because the heading differences compose along
-the path. Measured on 10⁶ random samples (benchmarks/simd_error.py): per-sample functions
-at most 2.7e-15 (relative to max(|x|, 1)), 3.6e-15 absolute; 10⁶-sample replays at most
-2.8e-12 relative, 1.7e-11 m absolute. NaN and infinities come out where the default build
-puts them. Everything else (argument rules, state left behind, the desaturation and
+(``SIMD`` is then True) instead of libm, and results are no longer bit-identical. glibc
+documents at most 2 ulp for libmvec's AVX2 sin and cos and 3 ulp for atan2 (libm itself:
+1 ulp). The replay also renormalises each composed heading with one Newton step instead
+of a square root and a division (within an ulp or two; it halves the replay's sequential
+latency). The bound, which tests/behaviour/test_batch_simd.py checks against the per-call
+API: each per-sample result (kinematics, discretize, the rotations, exp, log) is within
+1e-14 · max(|x|, 1) of the per-call value x; a replay's poses are within 1e-14 · k ·
+max(|x|, 1) after k samples, because the heading differences compose along the path.
+Measured on 10⁶ random samples (benchmarks/simd_error.py): per-sample functions at most
+2.7e-15 (relative to max(|x|, 1)), 3.6e-15 absolute; 10⁶-sample replays at most 2.8e-12
+relative, 1.7e-11 m absolute. NaN and infinities come out where the default build puts
+them. Everything else (argument rules, state left behind, the desaturation and
 wheel-drive functions, which call no transcendental function) is the same in both builds.
 """
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
@@ -65,8 +65,8 @@ cnp.import_array()
 
 cdef extern from "_core/simd.h" nogil:
     # Array sin/cos and atan2: libm loops by default, libmvec four at a time in the
-    # DRIVEKIN_SIMD=1 build (see _simd.h). Every transcendental call of this module goes
-    # through these two, so both builds run the same code path.
+    # DRIVEKIN_SIMD=1 build (see _core/simd.h). Every transcendental call of this module
+    # goes through these two, so both builds run the same code path.
     const int DK_SIMD
     void dk_sincos_n(Py_ssize_t n, const double* x, double* s, double* c)
     void dk_atan2_n(Py_ssize_t n, const double* y, const double* x, double* r)

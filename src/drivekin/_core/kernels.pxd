@@ -1,7 +1,8 @@
 # Kernels: `cdef inline ... noexcept nogil` on C doubles, defined here once so every
 # module that cimports them gets them inlined. No Python objects, no numpy.
 # Output parameters come last and are marked OUT. Formulas follow WPILib 2027
-# (see ../shared/reference/wpilib-kinematics.md); the comments say where they are subtle.
+# (docs/DESIGN.md says where drivekin's numbers differ); the comments say where the
+# formulas are subtle.
 
 from libc.math cimport atan2, cos, fabs, hypot, signbit, sin, sqrt
 from drivekin._core.types cimport desat_t, dswerve_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
@@ -308,8 +309,8 @@ cdef inline void forward_solve_many(Py_ssize_t rows, Py_ssize_t n, Py_ssize_t co
                                     ) noexcept nogil:
     # forward_solve for count samples stored module-major (module i of sample t at
     # [i * count + t]; row k of sample t goes to out[k * count + t]), for the batch replay.
-    # Each sample gets forward_solve's operations in its order (tests/test_batch.py compares
-    # the bits), but the innermost loop runs over the independent samples, so it vectorises.
+    # Each sample gets forward_solve's operations in its order (tests/behaviour/
+    # test_batch.py compares the bits), but the innermost loop runs over the independent samples, so it vectorises.
     # forward_solve itself stays separate: with count = 1 this form recomputes the products
     # for every row (out may alias them), about 3 % more instructions per call.
     cdef Py_ssize_t k, i, t
