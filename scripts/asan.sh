@@ -12,7 +12,7 @@ shift || true
 
 flags="-fsanitize=address -fno-omit-frame-pointer -g"   # frame pointers: usable stacks
 scratch_build CFLAGS="$flags" LDFLAGS="-fsanitize=address"
-for so in "$work"/src/drivekin/*.so; do    # a build that ignored CFLAGS would prove nothing
+for so in "$work"/src/drivekin/*.so "$work"/src/drivekin/_core/*.so; do  # a build that ignored CFLAGS would prove nothing
     nm -D "$so" | grep __asan_init >/dev/null || { echo "$so is not instrumented" >&2; exit 1; }
 done
 
