@@ -425,8 +425,12 @@ def desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed,
         c = v
         p.max_speed = attainableMaxSpeed
         inputs = (v,)
-    # In place is safe: each sample's speeds are all read before any is written.
+    # In place is safe: each sample's speeds are all read before any is written. The
+    # chassis rows are read sample by sample, so they must not share memory with it.
     if out is moduleVelocities:
+        if five and np.may_share_memory(v.array, c.array):
+            raise ValueError("out must not overlap an input array other than "
+                             "moduleVelocities (desiredChassisVelocities shares its memory)")
         o = v
     else:
         o = _result(out, count, v.single, (m, 2), inputs, "moduleVelocities")

@@ -286,6 +286,23 @@ def test_out_is_filled_and_must_not_overlap():
         batch.exp(x, out=frozen)
 
 
+def test_in_place_desaturation_refuses_chassis_rows_sharing_its_memory():
+    # The reproducer of the porting issue: with out=moduleVelocities and chassis rows in
+    # the same buffer, writing sample 0 changed the rows sample 1 then read.
+    buf = np.array([1., 2, 4, 3, 5, 3, 2, 2, 5, 4, 6, 2, 3, 4, 5, 1])
+    mv, cv = buf.reshape(2, 4, 2), buf[:6].reshape(2, 3)
+    before = buf.copy()
+    with pytest.raises(ValueError, match="desiredChassisVelocities shares its memory"):
+        batch.desaturateWheelVelocities(mv, cv, 4.0, 3.0, 5.0, out=mv)
+    same(buf, before)                                     # nothing written
+    # On copies the same call gives what a copy of the inputs gives, in place too.
+    mv2, cv2 = mv.copy(), cv.copy()
+    want = batch.desaturateWheelVelocities(mv.copy(), cv.copy(), 4.0, 3.0, 5.0)
+    assert batch.desaturateWheelVelocities(mv2, cv2, 4.0, 3.0, 5.0, out=mv2) is mv2
+    same(mv2, want)
+    np.testing.assert_allclose(mv2[1, :, 0], [5.0, 6.0, 3.0, 5.0], rtol=0, atol=1e-12)
+
+
 def test_replay_refusals_leave_the_odometry_alone():
     o = DifferentialDriveOdometry(R(0.0), 0.0, 0.0, Pose2d(1, 2, R(0.5)))
     before = pose(o.getPose())
