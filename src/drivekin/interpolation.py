@@ -141,7 +141,12 @@ class TimeInterpolatableBuffer(Generic[T]):
         if i == len(entries):
             return entries[-1][1]
         (t0, a), (t1, b) = entries[i - 1], entries[i]
-        return self._f(a, b, (t - t0) / (t1 - t0))
+        d = t1 - t0
+        if math.isinf(d) and math.isfinite(t0) and math.isfinite(t1):
+            # Two finite times whose span overflows (1e308 and -1e308): the same ratio of
+            # halves (kernels.pxd's time_fraction, for the estimators) instead of inf/inf.
+            return self._f(a, b, (0.5 * t - 0.5 * t0) / (0.5 * t1 - 0.5 * t0))
+        return self._f(a, b, (t - t0) / d)
 
     def clear(self) -> None:
         """Remove every sample."""

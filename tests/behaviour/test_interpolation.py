@@ -275,3 +275,13 @@ def test_cpp_difference_4_duplicate_first_timestamp():
         buf.addSample(0.0, 2.0)
     assert ours.getInternalBuffer() == [(0.0, 2.0)] and ours.getSample(0.0) == 2.0
     assert len(theirs.getInternalBuffer()) == 2 and theirs.sample(0.0) == 1.0
+
+
+def test_huge_finite_timestamps_interpolate_without_overflow():
+    # The span 1e308 - (-1e308) overflows; the fraction must not become inf/inf = NaN
+    # (porting issue, item 7). Closed form: (9e307 + 1e308) / 2e308 = 0.95.
+    b = TimeInterpolatableBuffer.createDoubleBuffer(1.5)
+    b.addSample(1e308, 1.0)
+    b.addSample(-1e308, 0.0)
+    assert b.getSample(9e307) == pytest.approx(0.95, rel=1e-15)
+    assert b.getSample(-1e308) == 0.0 and b.getSample(1e308) == 1.0
