@@ -25,7 +25,7 @@ cdef struct record_t:
 
 cdef class _PoseEstimator:
     cdef _Odometry odo           # the concrete estimator's odometry (typed there too)
-    cdef double q[3]             # state variances (x, y, θ)
+    cdef double sd[3]            # state standard deviations (x m, y m, θ rad)
     cdef double k[3]             # per-axis vision gains
     cdef pose2_t estimate
     cdef sample_t* buf           # odometry poses, ascending time: buf[start : start + count]

@@ -18,7 +18,7 @@ history needs more room, and returned poses come from the Pose2d freelist.
 """
 cimport cython
 from cpython.mem cimport PyMem_Free, PyMem_Malloc, PyMem_Realloc
-from libc.math cimport cos, fabs, isfinite, sin, sqrt
+from libc.math cimport INFINITY, cos, fabs, isfinite, isinf, sin, sqrt
 from libc.string cimport memmove
 cimport numpy as cnp
 
@@ -96,25 +96,37 @@ cdef inline int finite_time(double t, str what) except -1:
 # Standard deviations and gains
 
 cdef int read_std_devs(object values, str what, double* out) except -1:
-    """Three finite standard deviations into ``out``, which is written only when all
-    are valid."""
+    """Three standard deviations (numbers; inf allowed, NaN not; the sign is ignored, as
+    WPILib squares them) into ``out``, which is written only when all are valid."""
     cdef double v[3]
     cdef Py_ssize_t i
     read_floats(values, 3, v, what, "standard deviations (x m, y m, θ rad)")
     for i in range(3):
-        if not isfinite(v[i]):
-            raise ValueError(f"{what}[{i}] must be finite, got {v[i]!r}")
+        if v[i] != v[i]:
+            raise ValueError(f"{what}[{i}] must be finite, or inf for no confidence at "
+                             f"all, got {v[i]!r}")
     for i in range(3):
         out[i] = v[i]
     return 0
 
 
-cdef inline double gain(double q, double r) noexcept nogil:
-    # Steady-state Kalman gain of a directly observed constant, per axis (WPILib's
-    # closed form); no state uncertainty means vision is ignored.
-    if q == 0.0:
+cdef inline double gain(double s, double v) noexcept nogil:
+    # Steady-state Kalman gain of a directly observed constant, per axis, from the state
+    # and vision standard deviations: WPILib's closed form q / (q + sqrt(q·r)) with q = s²,
+    # r = v², which is s / (s + v). WPILib's form (and its bits) wherever its squares are
+    # normal numbers; beyond that the squares overflow or underflow (s = 1e200 gave
+    # inf/inf = NaN) and s / (s + v) is used. No state uncertainty, or infinitely
+    # uncertain vision, ignores vision; an infinitely uncertain state takes it whole.
+    cdef double q = s * s, qr = q * (v * v)
+    s = fabs(s)
+    v = fabs(v)
+    if s == 0.0 or isinf(v):
         return 0.0
-    return q / (q + sqrt(q * r))
+    if isinf(s):
+        return 1.0
+    if 0.0 < q < INFINITY and (v == 0.0 or 0.0 < qr < INFINITY):
+        return q / (q + sqrt(qr))
+    return s / (s + v)
 
 
 cdef inline void set_shift(record_t* r) noexcept nogil:
@@ -183,8 +195,8 @@ cdef class _PoseEstimator:
         self.buf, self.cap, self.start, self.count = buf, INITIAL_SAMPLES, 0, 0
         self.rec, self.rcap, self.nrec = rec, INITIAL_RECORDS, 0
         for i in range(3):
-            self.q[i] = sd[i] * sd[i]
-            self.k[i] = gain(self.q[i], vd[i] * vd[i])
+            self.sd[i] = sd[i]
+            self.k[i] = gain(sd[i], vd[i])
         self.odo = odo
         self.estimate = odo.pose
         self.ready = True
@@ -352,7 +364,7 @@ cdef class _PoseEstimator:
         cdef Py_ssize_t i
         read_std_devs(values, "visionMeasurementStdDevs", vd)
         for i in range(3):
-            self.k[i] = gain(self.q[i], vd[i] * vd[i])
+            self.k[i] = gain(self.sd[i], vd[i])
         return 0
 
     def addVisionMeasurement(self, Pose2d visionRobotPose not None, double timestamp,

@@ -287,3 +287,30 @@ def test_sample_interpolation_after_wheel_only_heading_steps_beyond_pi():
         return state["t"], e.updateWithTime(state["t"], wheels.copy())
 
     _drive_and_compare(e, 40, step, np.random.default_rng(7))
+
+
+@pytest.mark.parametrize("state", [1e155, 1e200, 1.7e308, math.inf])
+def test_huge_or_infinite_state_std_devs_take_vision_whole(state):
+    # q = sd² overflowed and the gain became inf/inf = NaN for good (porting issue, item
+    # 6). The gain's limit is 1: the vision pose at t = 0.01 replaces the odometry's
+    # (0.01, 0) there, and the 0.01 m driven since are added: x = 1.0 + 0.01.
+    e = DifferentialDrivePoseEstimator(R(), 0.0, 0.0, Pose2d(), (state,) * 3, (0.5,) * 3)
+    e.updateWithTime(0.0, R(), 0.0, 0.0)
+    e.updateWithTime(0.02, R(), 0.02, 0.02)
+    e.addVisionMeasurement(Pose2d(1.0, 0.0, R()), 0.01)
+    assert_pose((1.01, 0.0, 0.0), e.getEstimatedPosition())
+
+
+def test_infinite_vision_std_devs_ignore_vision_on_that_axis():
+    e = DifferentialDrivePoseEstimator(R(), 0.0, 0.0, Pose2d(), (0.1,) * 3,
+                                       (math.inf, 0.5, math.inf))
+    e.updateWithTime(0.0, R(), 0.0, 0.0)
+    e.updateWithTime(0.02, R(), 0.02, 0.02)
+    e.addVisionMeasurement(Pose2d(1.0, 1.0, R(0.3)), 0.01)
+    p = e.getEstimatedPosition()
+    # x and heading ignore vision; y moves by WPILib's gain q / (q + sqrt(q r)).
+    q, r = 0.1 ** 2, 0.5 ** 2
+    k = q / (q + math.sqrt(q * r))
+    assert p.x == pytest.approx(0.02, abs=1e-12)
+    assert p.getRotation().getRadians() == pytest.approx(0.0, abs=1e-12)
+    assert p.y == pytest.approx(k * 1.0, abs=1e-9)
