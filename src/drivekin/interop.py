@@ -80,7 +80,7 @@ if TYPE_CHECKING:
         Twist2d,
     )
 
-__all__ = ["fromWpimath", "toWpimath"]
+__all__ = ["fromWpimath", "fromWpimath3d", "toWpimath"]
 
 INSTALL_HINT = ('install it with `pip install robotpy-wpimath` '
                 '(or `pip install "drivekin[wpimath]"`)')
@@ -190,6 +190,8 @@ def _from_one(obj: object, where: str) -> Any:
         name = type(obj).__name__
         stateful = name.endswith(("Odometry", "Odometry3d", "PoseEstimator", "PoseEstimator3d"))
         reason = _STATEFUL if stateful else "drivekin has no counterpart of it"
+        if name in ("Pose3d", "Transform3d", "Translation3d", "Rotation3d"):
+            reason += " (drivekin is 2-D: fromWpimath3d() takes its 2-D part, as toPose2d does)"
     elif isinstance(obj, (list, tuple)):
         reason = "only a plain list or tuple is converted, and only one level deep"
     elif _is_drivekin(obj):
@@ -310,3 +312,35 @@ def fromWpimath(obj: object) -> Any:
     carry their geometry only (module heading memory starts empty). TypeError for
     anything else, naming its type."""
     return _convert(obj, _from_one, "fromWpimath()")
+
+
+_FLATTEN_3D: tuple[tuple[str, Callable[[Any, _Wpimath], Any]], ...] = (
+    ("Pose3d", lambda p, w: p.toPose2d()),
+    ("Transform3d", lambda t, w: w.geometry.Transform2d(t.translation().toTranslation2d(),
+                                                        t.rotation().toRotation2d())),
+    ("Translation3d", lambda t, w: t.toTranslation2d()),
+    ("Rotation3d", lambda r, w: r.toRotation2d()),
+)
+
+
+def _from_3d(obj: object, where: str) -> Any:
+    w = _load()
+    for klass in type(obj).__mro__:
+        for name, flatten in _FLATTEN_3D:
+            if klass is getattr(w.geometry, name):
+                return _from_one(flatten(obj, w), where)
+    raise TypeError(f"{where} cannot convert {_qualified(obj)}: it is not a robotpy-wpimath "
+                    "Pose3d, Transform3d, Translation3d or Rotation3d (fromWpimath converts "
+                    "2-D objects)")
+
+
+def fromWpimath3d(obj: object) -> Any:
+    """Return the drivekin 2-D object for a robotpy-wpimath 2026 3-D one, with robotpy's
+    ``toPose2d`` semantics: a Pose3d gives a Pose2d and a Transform3d a Transform2d (x, y
+    and the rotation about z), a Translation3d a Translation2d (x, y), a Rotation3d a
+    Rotation2d (about z). robotpy computes the 2-D value (``toPose2d``,
+    ``toTranslation2d``, ``toRotation2d``) and it is then copied exactly, as by
+    :func:`fromWpimath`; for a vision pose from photonlibpy, ``fromWpimath3d(pose3d)`` is
+    ``fromWpimath(pose3d.toPose2d())``. A list or tuple gives a list or tuple of converted
+    items. TypeError for anything else."""
+    return _convert(obj, _from_3d, "fromWpimath3d()")

@@ -39,6 +39,7 @@ from drivekin import (
     Translation2d,
     Twist2d,
 )
+from drivekin import interop
 from drivekin.interop import fromWpimath, toWpimath
 
 PI = math.pi
@@ -589,3 +590,27 @@ def test_pyproject_has_the_wpimath_extra():
     with open(path, "rb") as f:
         extras = tomllib.load(f)["project"]["optional-dependencies"]
     assert any(d.startswith("robotpy-wpimath") for d in extras["wpimath"])
+
+
+def test_from_wpimath_3d_is_robotpys_own_2d_projection():
+    # photonlibpy hands out Pose3d: fromWpimath3d gives what robotpy's toPose2d (and
+    # toTranslation2d / toRotation2d) compute, copied bit for bit (porting issue, item 5).
+    g = pytest.importorskip("wpimath.geometry")
+    for roll, pitch, yaw in [(0.1, 0.2, 0.3), (0.0, 0.0, -3.0), (1.0, -0.5, 2.5)]:
+        r3 = g.Rotation3d(roll, pitch, yaw)
+        p3 = g.Pose3d(1.5, -2.0, 0.7, r3)
+        p = interop.fromWpimath3d(p3)
+        want = p3.toPose2d()
+        assert type(p) is Pose2d
+        assert (p.x, p.y) == (want.x, want.y)
+        assert (p.getRotation().getCos(), p.getRotation().getSin()) == \
+            (want.rotation().cos(), want.rotation().sin())
+        t = interop.fromWpimath3d(g.Transform3d(g.Translation3d(0.5, 0.25, 9.0), r3))
+        assert type(t) is Transform2d and (t.x, t.y) == (0.5, 0.25)
+        assert t.getRotation().getCos() == r3.toRotation2d().cos()
+        assert t.getRotation().getSin() == r3.toRotation2d().sin()
+    assert interop.fromWpimath3d([g.Translation3d(1, 2, 3)]) == [Translation2d(1.0, 2.0)]
+    with pytest.raises(TypeError, match="fromWpimath converts 2-D"):
+        interop.fromWpimath3d(g.Pose2d())
+    with pytest.raises(TypeError, match="fromWpimath3d"):
+        interop.fromWpimath(g.Pose3d())
