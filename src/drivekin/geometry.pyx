@@ -11,7 +11,7 @@ from libc.math cimport M_PI, fabs, hypot
 import numpy as np
 
 from drivekin._core.types cimport pose2_t, rot2_t, twist2_t, vec2_t
-from drivekin._core.args cimport check_float64
+from drivekin._core.args cimport check_float64, is_number
 from drivekin._core.kernels cimport (
     feet_to_meters, pose, pose_interpolate, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
     rot_neg, rot_plus, rot_rad, rot_radians, rot_times, rot_xy, transform_inverse,
@@ -475,9 +475,19 @@ cdef pose2_t _pose_args(object a, object b, object c, object translation, object
         x = a
         y = b
         return pose(vec(x, y), (<Rotation2d>c).r)
+    # robotpy converts a number where a Rotation2d is expected: Rotation2d(radians).
+    if c is None and isinstance(a, Translation2d) and is_number(b):
+        return pose((<Translation2d>a).v, rot_rad(b))
+    if is_number(c) and a is not None and b is not None:
+        x = a
+        y = b
+        return pose(vec(x, y), rot_rad(c))
+    if c is None and a is not None and b is not None and not isinstance(a, Translation2d):
+        raise TypeError(f"{cls}() is missing its rotation: pass {cls}(x, y, Rotation2d) or "
+                        f"{cls}(x, y, radians); got ({type_name(a)}, {type_name(b)})")
     raise TypeError(
-        f"{cls}() takes (), (Translation2d, Rotation2d), (x: float, y: float, Rotation2d) "
-        f"or (3x3 float64 numpy matrix); "
+        f"{cls}() takes (), (Translation2d, Rotation2d or radians), (x: float, y: float, "
+        f"Rotation2d or radians) or (3x3 float64 numpy matrix); "
         f"got ({type_name(a)}, {type_name(b)}, {type_name(c)})")
 
 

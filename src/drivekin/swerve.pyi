@@ -3,9 +3,9 @@
 Units: m, m/s, m/s², rad, rad/s, rad/s², s. Robot frame: x forward, y left, CCW positive.
 
 Every hot operation has two forms: an object-returning façade with WPILib's name, and an
-allocation-free ``...Into`` / ``...InPlace`` form that writes into objects or numpy buffers
-owned by the caller. Kinematics objects carry heading memory and are not thread-safe
-(as in WPILib); every method runs with the GIL held, so a call is never interleaved.
+allocation-free ``...Into`` / ``...InPlace`` form that writes into caller-owned objects or
+numpy buffers. Kinematics objects carry heading memory and are not thread-safe (as in
+WPILib); every method runs with the GIL held, so a call is never interleaved.
 """
 
 # Hand-written stub for the compiled module drivekin.swerve (swerve.pyx). The docstrings
@@ -60,7 +60,7 @@ class SwerveModuleVelocity(_ModuleVector):
     within 1e-9. (WPILib 2026: ``SwerveModuleState(speed, angle)``.)
     """
 
-    def __init__(self, velocity: float = 0.0, angle: Rotation2d | None = None) -> None: ...
+    def __init__(self, velocity: float = 0.0, angle: Rotation2d | float | None = None) -> None: ...
     @property
     def velocity(self) -> float:
         """Wheel velocity, m/s."""
@@ -96,7 +96,7 @@ class SwerveModulePosition(_ModuleVector):
     ``angle``. Mutable; ``==`` compares distance within 1e-9 m and the angle within 1e-9.
     """
 
-    def __init__(self, distance: float = 0.0, angle: Rotation2d | None = None) -> None: ...
+    def __init__(self, distance: float = 0.0, angle: Rotation2d | float | None = None) -> None: ...
     @property
     def distance(self) -> float:
         """Distance driven by the wheel, m."""
@@ -117,7 +117,7 @@ class SwerveModuleAcceleration(_ModuleVector):
     of the acceleration vector. Mutable; ``==`` compares within 1e-9.
     """
 
-    def __init__(self, acceleration: float = 0.0, angle: Rotation2d | None = None) -> None: ...
+    def __init__(self, acceleration: float = 0.0, angle: Rotation2d | float | None = None) -> None: ...
     @property
     def acceleration(self) -> float:
         """Acceleration magnitude, m/s²."""

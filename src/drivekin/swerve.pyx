@@ -3,10 +3,9 @@
 Units: m, m/s, m/s², rad, rad/s, rad/s², s. Robot frame: x forward, y left, CCW positive.
 
 Every hot operation has two forms: an object-returning façade with WPILib's name, and an
-allocation-free ``...Into`` / ``...InPlace`` form that writes into objects or numpy buffers
-owned by the caller. Kinematics objects carry heading memory and are not thread-safe
-(as in WPILib); every method runs with the GIL held, so a call is never interleaved.
-"""
+allocation-free ``...Into`` / ``...InPlace`` form that writes into caller-owned objects or
+numpy buffers. Kinematics objects carry heading memory and are not thread-safe (as in
+WPILib); every method runs with the GIL held, so a call is never interleaved."""
 cimport cython
 from drivekin._core.drivetrain cimport Drivetrain
 cimport numpy as cnp
@@ -21,7 +20,7 @@ from libc.string cimport memcpy
 import numpy as np
 
 from drivekin._core.types cimport desat_t, rot2_t, vec2_t, vec3_t
-from drivekin._core.args cimport as_fast, exact_type, float64_data, snapshot
+from drivekin._core.args cimport as_fast, exact_type, float64_data, is_number, snapshot
 from drivekin._core.kernels cimport (
     clamp01, desaturate_factors, forward_solve, java_equals, jmax, max_abs, rot_eq,
     rot_interp, rot_minus, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
@@ -54,7 +53,9 @@ cdef rot2_t _angle_arg(object angle) except *:
         return IDENTITY
     if isinstance(angle, Rotation2d):
         return (<Rotation2d>angle).r
-    raise TypeError(f"angle must be a Rotation2d, got {type_name(angle)}")
+    if is_number(angle):                   # robotpy's implicit Rotation2d(radians)
+        return rot_rad(angle)
+    raise TypeError(f"angle must be a Rotation2d or a float (rad), got {type_name(angle)}")
 
 
 cdef inline void optimize_into(_ModuleVector v, rot2_t current, _ModuleVector out) noexcept:

@@ -304,13 +304,13 @@ def test_non_numbers_raise_type_error(call):
 
 
 @pytest.mark.parametrize("call, needles", [
-    (lambda: Pose2d(1.0, 2.0, 3.0), ("Rotation2d",)),
-    (lambda: Pose2d(1.0, 2.0), ("Rotation2d",)),
+    (lambda: Pose2d(1.0, 2.0, "3"), ("Rotation2d",)),
+    (lambda: Pose2d(1.0, 2.0), ("Rotation2d", "missing")),
     (lambda: Transform2d(1.0), ("Rotation2d",)),
     (lambda: Pose2d().transformBy(Pose2d()), ("Transform2d", "Pose2d")),
     (lambda: Pose2d().relativeTo(None), ("Pose2d", "NoneType")),
     (lambda: Pose2d().exp(None), ("Twist2d",)),
-    (lambda: MV(1.0, 2.0), ("Rotation2d", "float")),
+    (lambda: MV(1.0, "2"), ("Rotation2d", "str")),
     (lambda: MV(1.0).optimize(None), ("Rotation2d",)),
     (lambda: MV(1.0).optimize(1.0), ("Rotation2d", "float")),
     (lambda: MV(1.0).cosineScale(1.0), ("Rotation2d",)),

@@ -47,6 +47,8 @@ SAMPLES = {
     "Translation2d": lambda: Translation2d(0.3, -0.2),
     "Rotation2d": lambda: Rotation2d(0.4),
     "Rotation2d | None": lambda: Rotation2d(0.4),
+    "Rotation2d | float": lambda: Rotation2d(0.4),
+    "Rotation2d | float | None": lambda: 0.4,
     "Pose2d": lambda: Pose2d(1.0, 2.0, Rotation2d(0.1)),
     "Pose2d | None": lambda: Pose2d(1.0, 2.0, Rotation2d(0.1)),
     "npt.NDArray[np.float64]": None,        # filled per parameter name below

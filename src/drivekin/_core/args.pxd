@@ -7,6 +7,8 @@
 # path: a .pxd cannot import at module level.
 cimport numpy as cnp
 from cpython.buffer cimport PyObject_CheckBuffer
+from cpython.float cimport PyFloat_Check
+from cpython.long cimport PyLong_CheckExact
 from cpython.list cimport PyList_CheckExact, PyList_GET_ITEM, PyList_GET_SIZE
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport Py_DECREF, Py_INCREF, PyObject
@@ -40,6 +42,12 @@ cdef extern from *:
     """
     # Exact type test on a borrowed pointer: no reference counting on the hot loops.
     bint exact_type "drivekin_exact"(PyObject* o, PyObject* t) noexcept
+
+
+cdef inline bint is_number(object x) noexcept:
+    # A float (numpy.float64 included) or an exact int: what robotpy converts implicitly
+    # to a Rotation2d in radians (never a bool, a str or an object with __float__).
+    return PyFloat_Check(x) or PyLong_CheckExact(x)
 
 
 # Sequences of value objects

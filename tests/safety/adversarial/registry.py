@@ -413,7 +413,9 @@ def _chassis(cls, fields):
 
 def _module(cls, field):
     return {
-        "__init__": S(NUM, Obj(R, none_ok=True)), "__reduce__": S(), "__eq__": S(Obj(cls)),
+        # A float angle is robotpy's implicit Rotation2d(radians) (porting issue, item 2).
+        "__init__": S(NUM, Obj(R, none_ok=True, float_ok=True)), "__reduce__": S(),
+        "__eq__": S(Obj(cls)),
         "__iter__": S(), field: Prop(NUM), "angle": Prop(Obj(R)),
         "interpolate": S(Obj(cls), NUM), "compareTo": S(Obj(cls)),
     }
@@ -478,7 +480,7 @@ API = {
     },
     Pose2d: {
         **_FRAME,
-        "__init__": [S(), S(Obj(T), Obj(R)), S(NUM, NUM, Obj(R)),
+        "__init__": [S(), S(Obj(T), Obj(R, float_ok=True)), S(NUM, NUM, Obj(R, float_ok=True)),
                      S(Arr((3, 3), fill=[[1.0, 0.0, 1.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])),
                      S(kw={"translation": VALID[T], "rotation": VALID[R]}),
                      S(kw={"x": lambda: 1.0, "y": lambda: 2.0, "rotation": VALID[R]})],
@@ -493,7 +495,7 @@ API = {
     Transform2d: {
         **_FRAME,
         "__eq__": S(Obj(Transform2d)),
-        "__init__": [S(), S(Obj(T), Obj(R)), S(NUM, NUM, Obj(R)),
+        "__init__": [S(), S(Obj(T), Obj(R, float_ok=True)), S(NUM, NUM, Obj(R, float_ok=True)),
                      S(Arr((3, 3), fill=[[1.0, 0.0, 1.0], [0.0, 1.0, 2.0], [0.0, 0.0, 1.0]])),
                      S(Obj(Pose2d), Obj(Pose2d)),
                      S(kw={"translation": VALID[T], "rotation": VALID[R]})],
