@@ -99,3 +99,9 @@ __all__ += [
 from drivekin.units import Units
 
 __all__ += ["Units"]
+
+# robotpy-wpimath 2026 names on these classes raise an AttributeError naming the 2027 one.
+from drivekin._core import renames as _renames
+
+_renames.install(globals())
+del _renames

@@ -29,6 +29,7 @@ import importlib.machinery
 import importlib.util
 import inspect
 import os
+import re
 import subprocess
 import sys
 import types
@@ -302,10 +303,14 @@ def runtime_public_names(mod: types.ModuleType) -> set[str]:
 
 def runtime_class_members(cls: type) -> dict[str, object]:
     """Public members of ``cls`` and of its bases (private bases such as _ChassisVector
-    included: their methods are part of the public class's API); raw ``__dict__`` values."""
+    included: their methods are part of the public class's API); raw ``__dict__`` values.
+    robotpy-wpimath 2026 names, which only raise (drivekin._core.renames), are not
+    members."""
+    from drivekin._core.renames import Renamed
     members: dict[str, object] = {}
     for klass in reversed(cls.__mro__[:-1]):          # without object
-        members.update({k: v for k, v in vars(klass).items() if public(k)})
+        members.update({k: v for k, v in vars(klass).items()
+                        if public(k) and not isinstance(v, Renamed)})
     return members
 
 
@@ -594,8 +599,16 @@ def test_stubtest(tmp_path):
     env["PYTHONPATH"] = os.pathsep.join(
         [str(PKG_DIR.parent)] + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
     env["MYPY_CACHE_DIR"] = str(tmp_path / "mypy_cache")   # keep the work tree clean
+    # The robotpy-wpimath 2026 names that only raise (drivekin._core.renames) are in the
+    # classes' dictionaries and deliberately not in the stubs: allowed, by their table.
+    from drivekin._core.renames import RENAMES
+    renamed = tmp_path / "renamed-allowlist.txt"
+    renamed.write_text("".join(
+        f"{re.escape(getattr(drivekin, cls).__module__)}\\.{cls}\\.{old}\n"
+        for cls, names in RENAMES.items() for old in names))
     cmd = [sys.executable, "-m", "mypy.stubtest",
-           *(f"drivekin.{m}" for m in STUBBED), "--allowlist", str(ALLOWLIST)]
+           *(f"drivekin.{m}" for m in STUBBED), "--allowlist", str(ALLOWLIST),
+           "--allowlist", str(renamed)]
     proc = subprocess.run(cmd, cwd=tmp_path, env=env, capture_output=True, text=True,
                           timeout=300)
     assert proc.returncode == 0, proc.stdout + proc.stderr

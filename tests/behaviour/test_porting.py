@@ -50,3 +50,28 @@ def test_a_missing_rotation_is_named():
         Pose2d(1.0, 2.0)
     with pytest.raises(TypeError, match=r"Transform2d\(\) is missing its rotation"):
         Transform2d(1.0, 2.0)
+
+
+def _renames():
+    from drivekin._core.renames import RENAMES
+    return [(cls, old, new) for cls, names in RENAMES.items() for old, new in names.items()]
+
+
+@pytest.mark.parametrize("cls, old, new", _renames())
+def test_a_2026_name_raises_an_attribute_error_naming_the_2027_one(cls, old, new):
+    import drivekin
+    from drivekin._core import catalog
+    klass = getattr(drivekin, cls)
+    entry = catalog.BY_CLASS[klass]
+    # The old name really is robotpy-wpimath 2026's, on the peer class.
+    peer = getattr(pytest.importorskip(f"wpimath.{entry.peer.module}"), entry.peer.names[-1])
+    assert hasattr(peer, old), f"{entry.peer.names[-1]}.{old} is not a robotpy 2026 name"
+    # The replacement exists on drivekin's class (its first identifier, where it names one).
+    first = new.split("(")[0].split(" ")[0].lstrip(".")
+    assert first == cls or hasattr(klass, first), (cls, new)
+    instance = entry.example()
+    for where in (klass, instance):
+        with pytest.raises(AttributeError) as info:
+            getattr(where, old)
+        assert new in str(info.value) and old in str(info.value)
+    assert not hasattr(instance, old)

@@ -41,3 +41,6 @@ class _WheelValues:
     def __truediv__(self, other: float) -> Self: ...
     def __iter__(self) -> Iterator[float]: ...
 
+def set_type_attr(cls: type, name: str, value: object) -> None:
+    """Put ``value`` into the dictionary of the extension type ``cls`` under ``name`` (what
+    Python code cannot assign on a static type): the 2026 names of _core.renames."""

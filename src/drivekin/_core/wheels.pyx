@@ -132,3 +132,9 @@ cdef int install_bare_new(tuple classes, Py_ssize_t count) except -1:
     for cls in classes:
         drivekin_set_type_attr(cls, "__new__", staticmethod(__new__))
     return 0
+
+
+def set_type_attr(type cls, str name, object value):
+    """Put ``value`` into the dictionary of the extension type ``cls`` under ``name`` (what
+    Python code cannot assign on a static type): the 2026 names of _core.renames."""
+    drivekin_set_type_attr(cls, name, value)
