@@ -242,13 +242,21 @@ cdef class _PoseEstimator:
         # sequence's Python protocol) may have taken the slot reserved for this one.
         if self.start + self.count == self.cap:
             self._reserve()
-        # Remove, oldest first, every sample at least HISTORY older than t.
-        while self.count > 0 and t - self.buf[self.start].t >= HISTORY:
+        # Remove, oldest first, every sample at least HISTORY older than the newest time:
+        # t, or the newest stored sample when t is older. (WPILib measures from t, so a
+        # clock that runs backwards keeps every sample; here the history stays bounded.)
+        cdef double newest = t
+        if self.count > 0 and self.buf[self.start + self.count - 1].t > t:
+            newest = self.buf[self.start + self.count - 1].t
+        while self.count > 0 and newest - self.buf[self.start].t >= HISTORY:
             self.start += 1
             self.count -= 1
         b = self.buf + self.start
         n = self.count
-        if n == 0 or t > b[n - 1].t:
+        if n > 0 and newest - t >= HISTORY:
+            # Older than the whole history: nothing would keep it, so it is not stored.
+            self.tail_is_odometry = False
+        elif n == 0 or t > b[n - 1].t:
             b[n].t = t
             b[n].p = p
             b[n].tw = self.odo.twist

@@ -314,3 +314,26 @@ def test_infinite_vision_std_devs_ignore_vision_on_that_axis():
     assert p.x == pytest.approx(0.02, abs=1e-12)
     assert p.getRotation().getRadians() == pytest.approx(0.0, abs=1e-12)
     assert p.y == pytest.approx(k * 1.0, abs=1e-9)
+
+
+def test_a_clock_running_backwards_keeps_a_bounded_history():
+    # Each update older than every stored sample was kept and inserted at the front (a
+    # memmove each: quadratic time, unbounded memory; porting issue, item 9). Now only
+    # samples within 1.5 s of the newest are kept: t = 0 and t = -0.02·i down to -1.48.
+    import tracemalloc
+    e = DifferentialDrivePoseEstimator(R(), 0.0, 0.0, Pose2d())
+    for i in range(200):
+        e.updateWithTime(-0.02 * i, R(), 0.001 * i, 0.001 * i)
+    tracemalloc.start()
+    try:
+        before = tracemalloc.get_traced_memory()[0]
+        for i in range(200, 20200):
+            e.updateWithTime(-0.02 * i, R(), 0.001 * i, 0.001 * i)
+        grown = tracemalloc.get_traced_memory()[0] - before
+    finally:
+        tracemalloc.stop()
+    assert grown < 4096, grown
+    assert_pose((0.074, 0.0, 0.0), e.sampleAt(-1.48))      # the oldest sample kept
+    assert_pose((0.074, 0.0, 0.0), e.sampleAt(-100.0))     # clamped to it
+    assert_pose((0.0, 0.0, 0.0), e.sampleAt(0.0))          # the newest
+    assert_pose((20.199, 0.0, 0.0), e.getEstimatedPosition())  # the odometry, as always
