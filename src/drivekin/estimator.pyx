@@ -27,7 +27,7 @@ import time
 from drivekin._core.types cimport pose2_t, rot2_t
 from drivekin._core.args cimport read_floats
 from drivekin._core.kernels cimport (pose, pose_interpolate, pose_relative_to,
-                                     pose_transform_by, rot_cs, rot_times, time_fraction,
+                                     pose_transform_by, rot_cs, rot_times,
                                      transform_inverse, twist_exp_cs, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.mecanum cimport MecanumDriveWheelPositions
@@ -315,7 +315,8 @@ cdef class _PoseEstimator:
         if b[lo].t == t:
             out[0] = b[lo].p
         else:
-            out[0] = interpolate_samples(b + lo, b + hi, time_fraction(t, b[lo].t, b[hi].t))
+            # The history spans at most HISTORY (_after_update), so no overflow here.
+            out[0] = interpolate_samples(b + lo, b + hi, (t - b[lo].t) / (b[hi].t - b[lo].t))
         return True
 
     cdef Py_ssize_t _floor_record(self, double t) noexcept:

@@ -144,7 +144,8 @@ class TimeInterpolatableBuffer(Generic[T]):
         d = t1 - t0
         if math.isinf(d) and math.isfinite(t0) and math.isfinite(t1):
             # Two finite times whose span overflows (1e308 and -1e308): the same ratio of
-            # halves (kernels.pxd's time_fraction, for the estimators) instead of inf/inf.
+            # halves (exact scalings, so the same value where the plain form is finite)
+            # instead of inf/inf. (The estimators' history spans at most 1.5 s.)
             return self._f(a, b, (0.5 * t - 0.5 * t0) / (0.5 * t1 - 0.5 * t0))
         return self._f(a, b, (t - t0) / d)
 

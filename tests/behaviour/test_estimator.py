@@ -337,3 +337,13 @@ def test_a_clock_running_backwards_keeps_a_bounded_history():
     assert_pose((0.074, 0.0, 0.0), e.sampleAt(-100.0))     # clamped to it
     assert_pose((0.0, 0.0, 0.0), e.sampleAt(0.0))          # the newest
     assert_pose((20.199, 0.0, 0.0), e.getEstimatedPosition())  # the odometry, as always
+
+
+def test_huge_finite_timestamps_give_no_nan():
+    # (t - t0) / (t1 - t0) overflowed between samples at ±1e308 (porting issue, item 7):
+    # the history now spans at most 1.5 s, so the -1e308 update is not stored.
+    e = DifferentialDrivePoseEstimator(R(), 0.0, 0.0, Pose2d())
+    e.updateWithTime(1e308, R(), 1.0, 1.0)
+    e.updateWithTime(-1e308, R(), 0.0, 0.0)
+    for t in (9e307, -9e307, 0.0):
+        assert_pose((1.0, 0.0, 0.0), e.sampleAt(t))

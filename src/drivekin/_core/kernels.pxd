@@ -30,15 +30,6 @@ cdef inline bint java_equals(double a, double b) noexcept nogil:
         return a != a and b != b
     return a == b and signbit(a) == signbit(b)
 
-cdef inline double time_fraction(double t, double t0, double t1) noexcept nogil:
-    # (t - t0) / (t1 - t0) for t0 <= t <= t1. When the span of two finite times overflows
-    # (1e308 and -1e308), the same ratio of halves (exact scalings, so the same value
-    # wherever the plain form is finite) instead of inf/inf.
-    cdef double d = t1 - t0
-    if d - d != 0.0 and t0 - t0 == 0.0 and t1 - t1 == 0.0:
-        return (0.5 * t - 0.5 * t0) / (0.5 * t1 - 0.5 * t0)
-    return (t - t0) / d
-
 cdef inline double clamp01(double t) noexcept nogil:
     # MathUtil.clamp(t, 0, 1); NaN stays NaN.
     return jmax(0.0, jmin(t, 1.0))
