@@ -80,6 +80,7 @@ from typing import Any, TypeVar, Union
 from drivekin._core import catalog
 from drivekin._core import buffers
 from drivekin._core.catalog import GEOMETRY2D_FILE, KINEMATICS_FILE
+# ProtobufValue: any object this module can pack (the catalog's union of its classes).
 from drivekin._core.catalog import SerializableValue as ProtobufValue
 from drivekin._core.errors import type_name
 
@@ -97,8 +98,6 @@ __all__ = [
     "pack",
     "unpack",
 ]
-
-"""Any object this module can pack (a union of the supported drivekin classes)."""
 
 #: Bytes-like input: anything exporting the buffer protocol as C-contiguous memory.
 BytesLike = Union[bytes, bytearray, memoryview, Any]

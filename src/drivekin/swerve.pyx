@@ -19,7 +19,7 @@ from libc.string cimport memcpy
 
 import numpy as np
 
-from drivekin._core.types cimport desat_t, rot2_t, vec2_t, vec3_t
+from drivekin._core.types cimport desat_t, rot2_t, vec2_t
 from drivekin._core.args cimport as_fast, exact_type, float64_data, is_number, snapshot
 from drivekin._core.kernels cimport (
     clamp01, desaturate_factors, forward_solve, java_equals, jmax, max_abs, rot_eq,

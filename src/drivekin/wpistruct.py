@@ -90,6 +90,7 @@ from typing import Any, TypeVar, Union
 
 from drivekin._core import catalog
 from drivekin._core import buffers
+# StructValue: any object this module can pack (the catalog's union of its classes).
 from drivekin._core.catalog import SerializableValue as StructValue
 from drivekin._core.errors import type_name
 
@@ -110,8 +111,6 @@ __all__ = [
     "unpackArray",
     "unpackFrom",
 ]
-
-"""Any object this module can pack (a union of the supported drivekin classes)."""
 
 #: Bytes-like input: anything exporting the buffer protocol as C-contiguous memory.
 BytesLike = Union[bytes, bytearray, memoryview, Any]

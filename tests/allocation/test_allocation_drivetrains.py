@@ -223,17 +223,20 @@ def test_differential_odometry_update():
 # A 50 Hz loop that only reads the pose: every odometry class and estimator of the catalog
 
 
-def _catalogued(kind):
-    return [pytest.param(e.example, id=e.drivetrain) for e in catalog.entries(kind)]
+def _catalogued():
+    # (factory, the method that returns its pose) for every odometry and estimator class.
+    return [pytest.param(e.example, getter, id=f"{e.kind}-{e.drivetrain}")
+            for kind, getter in (("odometry", "getPose"), ("estimator", "getEstimatedPosition"))
+            for e in catalog.entries(kind)]
 
 
-@pytest.mark.parametrize("make", _catalogued("odometry"))
-def test_reading_the_pose(make):
-    odo = make()
+@pytest.mark.parametrize("make, getter", _catalogued())
+def test_reading_the_pose(make, getter):
+    read = getattr(make(), getter)
 
     def loop(it):
         for _ in it:
-            pose = odo.getPose()
+            pose = read()
             x = pose.getX()
             y = pose.getY()
             heading = pose.getRotation().getRadians()
@@ -241,21 +244,4 @@ def test_reading_the_pose(make):
             t = pose.getTranslation().getNorm()   # noqa: F841
             del x, y, heading, c
 
-    assert_no_allocations(loop, "reading odo.getPose()")
-
-
-@pytest.mark.parametrize("make", _catalogued("estimator"))
-def test_reading_the_estimate(make):
-    est = make()
-
-    def loop(it):
-        for _ in it:
-            pose = est.getEstimatedPosition()
-            x = pose.getX()
-            y = pose.getY()
-            heading = pose.getRotation().getRadians()
-            c = pose.getRotation().getCos()
-            t = pose.getTranslation().getNorm()   # noqa: F841
-            del x, y, heading, c
-
-    assert_no_allocations(loop, "reading est.getEstimatedPosition()")
+    assert_no_allocations(loop, f"reading {getter}()")

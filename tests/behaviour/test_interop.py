@@ -610,7 +610,8 @@ def test_from_wpimath_3d_is_robotpys_own_2d_projection():
         assert t.getRotation().getCos() == r3.toRotation2d().cos()
         assert t.getRotation().getSin() == r3.toRotation2d().sin()
     assert interop.fromWpimath3d([g.Translation3d(1, 2, 3)]) == [Translation2d(1.0, 2.0)]
-    with pytest.raises(TypeError, match="fromWpimath converts 2-D"):
-        interop.fromWpimath3d(g.Pose2d())
+    for bad in (g.Pose2d(), None, Pose2d(), [[g.Pose3d()]], (g.Pose3d() for _ in ())):
+        with pytest.raises(TypeError, match="cannot convert"):
+            interop.fromWpimath3d(bad)
     with pytest.raises(TypeError, match="fromWpimath3d"):
         interop.fromWpimath(g.Pose3d())
