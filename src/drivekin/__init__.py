@@ -19,6 +19,7 @@ from drivekin.diffswerve import (
     DifferentialSwerveMotorVelocities,
 )
 from drivekin.estimator import (
+    ClockMismatchWarning,
     DeadWheelPoseEstimator,
     DifferentialDrivePoseEstimator,
     MathSharedStore,
@@ -58,6 +59,7 @@ except _metadata.PackageNotFoundError:  # a source tree on sys.path without an i
 __all__ = [
     "ChassisAccelerations",
     "ChassisVelocities",
+    "ClockMismatchWarning",
     "DeadWheelKinematics",
     "DeadWheelOdometry",
     "DeadWheelPoseEstimator",

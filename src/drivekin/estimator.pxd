@@ -34,6 +34,7 @@ cdef class _PoseEstimator:
     cdef record_t* rec           # vision records, ascending time: rec[0 : nrec]
     cdef Py_ssize_t nrec, rcap
     cdef bint ready
+    cdef bint clock_warned       # ClockMismatchWarning issued
 
     cdef int _init(self, _Odometry odo, object stateStdDevs, object visionStdDevs) except -1
     cdef int _start(self) except -1
@@ -44,7 +45,8 @@ cdef class _PoseEstimator:
     cdef void _clear(self) noexcept
     cdef bint _sample(self, double t, pose2_t* out) noexcept
     cdef bint _sample_at(self, double t, pose2_t* out) noexcept
-    cdef Py_ssize_t _floor_record(self, double t) noexcept
+    cdef Py_ssize_t _first_record_after(self, double t) noexcept
+    cdef int _warn_clock(self, double timestamp, double newest) except -1
     cdef void _clear_keeping_latest(self, bint translation, double x, double y,
                                     rot2_t r) noexcept
     cdef int _reset_done(self) except -1

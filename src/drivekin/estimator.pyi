@@ -43,6 +43,11 @@ _StdDevs = Sequence[float] | npt.NDArray[np.float64]
 _ModulePositions = Sequence[SwerveModulePosition] | npt.NDArray[np.float64]
 _WheelReadings = Sequence[float] | npt.NDArray[np.float64]
 
+class ClockMismatchWarning(UserWarning):
+    """A vision timestamp that cannot be on the estimator's clock (see
+    :meth:`_PoseEstimator.addVisionMeasurement`). Issued once per estimator; filter it with
+    ``warnings.filterwarnings("ignore", category=ClockMismatchWarning)``."""
+
 @final
 class MathSharedStore:
     """The clock the estimators' ``update`` methods read (WPILib's MathSharedStore).
@@ -90,7 +95,13 @@ class _PoseEstimator:
         on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
         become the standard deviations for this and later measurements (as
         :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
-        newest odometry sample is ignored, as is any before the first update."""
+        newest odometry sample is ignored, as is any before the first update.
+
+        A timestamp more than 10 s newer than the newest odometry sample, or more than
+        11.5 s older, cannot be on the estimator's clock: the first such call on an
+        estimator issues a :class:`ClockMismatchWarning`. A measurement that far ahead is
+        applied as WPILib does, but replaces the earlier ones that far ahead instead of
+        being kept with them, so such a stream keeps one record."""
 
     def resetPose(self, pose: Pose2d) -> None:
         """Reset the estimate (and the odometry's pose) to ``pose``; forget the history

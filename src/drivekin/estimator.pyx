@@ -23,6 +23,7 @@ from libc.string cimport memmove
 cimport numpy as cnp
 
 import time
+import warnings
 
 from drivekin._core.types cimport pose2_t, rot2_t
 from drivekin._core.args cimport read_floats
@@ -41,6 +42,10 @@ from drivekin._core.errors import type_name
 cnp.import_array()
 
 cdef double HISTORY = 1.5        # s of odometry poses kept (WPILib's kBufferDuration)
+# A vision timestamp more than CLOCK_GAP s newer than the newest odometry sample, or older
+# than the history by more than that, cannot come from the estimator's clock: no robot
+# runs vision 10 s ahead of its odometry or delivers a frame 11.5 s late.
+cdef double CLOCK_GAP = 10.0
 cdef Py_ssize_t INITIAL_SAMPLES = 128   # 1.5 s of updates at 85 Hz (50 Hz: 76 samples)
 cdef Py_ssize_t INITIAL_RECORDS = 128  # 1.5 s of vision at 85 Hz
 
@@ -49,6 +54,12 @@ cdef Py_ssize_t INITIAL_RECORDS = 128  # 1.5 s of vision at 85 Hz
 # The clock
 
 cdef object _clock = time.monotonic
+
+
+class ClockMismatchWarning(UserWarning):
+    """A vision timestamp that cannot be on the estimator's clock (see
+    :meth:`_PoseEstimator.addVisionMeasurement`). Issued once per estimator; filter it with
+    ``warnings.filterwarnings("ignore", category=ClockMismatchWarning)``."""
 
 
 cdef class MathSharedStore:
@@ -319,12 +330,34 @@ cdef class _PoseEstimator:
             out[0] = interpolate_samples(b + lo, b + hi, (t - b[lo].t) / (b[hi].t - b[lo].t))
         return True
 
-    cdef Py_ssize_t _floor_record(self, double t) noexcept:
-        """Index of the record with the greatest time <= t, or -1."""
-        cdef Py_ssize_t i = self.nrec - 1
-        while i >= 0 and self.rec[i].t > t:
-            i -= 1
-        return i
+    cdef Py_ssize_t _first_record_after(self, double t) noexcept:
+        """Index of the first record with time > t (nrec when there is none); the records
+        are in strictly ascending time."""
+        cdef Py_ssize_t lo = 0, hi = self.nrec, mid
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if self.rec[mid].t <= t:
+                lo = mid + 1
+            else:
+                hi = mid
+        return lo
+
+    cdef int _warn_clock(self, double timestamp, double newest) except -1:
+        self.clock_warned = True
+        if timestamp > newest:
+            where = (f"{timestamp - newest:.6g} s newer than the newest odometry sample "
+                     f"({newest:.6g} s); it is applied against the newest odometry pose and "
+                     "kept only until the next such measurement")
+        else:
+            where = (f"{newest - timestamp:.6g} s older than the newest odometry sample "
+                     f"({newest:.6g} s); it is ignored")
+        warnings.warn(
+            f"{type(self).__name__}.addVisionMeasurement: timestamp {timestamp:.6g} s is "
+            f"{where}. Vision timestamps must be on the clock of update() "
+            "(MathSharedStore.getTimestamp(), time.monotonic unless replaced) or of the times "
+            "given to updateWithTime; a FPGA or Unix timestamp is not. (Warned once per "
+            "estimator.)", ClockMismatchWarning, stacklevel=1)
+        return 0
 
     cdef bint _sample_at(self, double t, pose2_t* out) noexcept:
         cdef sample_t* b = self.buf + self.start
@@ -338,7 +371,7 @@ cdef class _PoseEstimator:
         elif t > b[self.count - 1].t:
             t = b[self.count - 1].t
         self._sample(t, &p)
-        i = self._floor_record(t)
+        i = self._first_record_after(t) - 1
         out[0] = p if i < 0 else compensate(self.rec + i, p)
         return True
 
@@ -382,12 +415,19 @@ cdef class _PoseEstimator:
         on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
         become the standard deviations for this and later measurements (as
         :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
-        newest odometry sample is ignored, as is any before the first update."""
+        newest odometry sample is ignored, as is any before the first update.
+
+        A timestamp more than 10 s newer than the newest odometry sample, or more than
+        11.5 s older, cannot be on the estimator's clock: the first such call on an
+        estimator issues a :class:`ClockMismatchWarning`. A measurement that far ahead is
+        applied as WPILib does, but replaces the earlier ones that far ahead instead of
+        being kept with them, so such a stream keeps one record."""
         cdef sample_t* b
         cdef pose2_t odometry_sample, vision_sample, delta, scaled
         cdef record_t* r
         cdef Py_ssize_t i, keep, lo
-        cdef double clamped
+        cdef double clamped, newest
+        cdef bint far_ahead
         cdef record_t* grown
         self._check()
         finite_time(timestamp, "timestamp")
@@ -396,7 +436,11 @@ cdef class _PoseEstimator:
         if self.count == 0:
             return
         b = self.buf + self.start
-        if b[self.count - 1].t - HISTORY > timestamp:
+        newest = b[self.count - 1].t
+        far_ahead = timestamp - newest > CLOCK_GAP
+        if not self.clock_warned and (far_ahead or newest - timestamp > HISTORY + CLOCK_GAP):
+            self._warn_clock(timestamp, newest)
+        if newest - HISTORY > timestamp:
             return
         # Room for one more record, before anything changes.
         if self.nrec == self.rcap:
@@ -407,24 +451,25 @@ cdef class _PoseEstimator:
             self.rcap *= 2
         # Drop the records no stored sample needs: everything before the newest record at
         # or before the oldest sample.
-        if self.nrec > 0 and b[0].t >= self.rec[0].t:
-            keep = self._floor_record(b[0].t)
-            if keep > 0:
-                memmove(self.rec, self.rec + keep, sizeof(record_t) * (self.nrec - keep))
-                self.nrec -= keep
+        keep = self._first_record_after(b[0].t) - 1
+        if keep > 0:
+            memmove(self.rec, self.rec + keep, sizeof(record_t) * (self.nrec - keep))
+            self.nrec -= keep
         self._sample(timestamp, &odometry_sample)
         # sampleAt(timestamp) is that same (clamped) odometry pose under the record in
         # force at the clamped time: no second interpolation.
-        clamped = min(max(timestamp, b[0].t), b[self.count - 1].t)
-        i = self._floor_record(clamped)
+        clamped = min(max(timestamp, b[0].t), newest)
+        i = self._first_record_after(clamped) - 1
         vision_sample = odometry_sample if i < 0 else compensate(self.rec + i, odometry_sample)
         delta = pose_relative_to(visionRobotPose.p, vision_sample)
         scaled = pose(vec(self.k[0] * delta.t.x, self.k[1] * delta.t.y),
                       rot_times(delta.r, self.k[2]))
-        # Store under the unclamped timestamp, replacing an equal one; later records go.
-        lo = 0
-        while lo < self.nrec and self.rec[lo].t < timestamp:
-            lo += 1
+        # Store under the unclamped timestamp, replacing an equal one; later records go
+        # (WPILib). A record from another clock replaces the earlier ones from it too, so
+        # that such a stream keeps one record rather than all of them (WPILib keeps all).
+        lo = self._first_record_after(newest + CLOCK_GAP if far_ahead else timestamp)
+        if lo > 0 and self.rec[lo - 1].t == timestamp:
+            lo -= 1
         r = self.rec + lo
         r.t = timestamp
         r.vision = pose_transform_by(vision_sample, scaled)

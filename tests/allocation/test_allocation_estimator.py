@@ -130,6 +130,35 @@ def test_swerve_sample_at():
     assert_no_allocations(loop, "SwerveDrivePoseEstimator.sampleAt")
 
 
+def test_vision_from_another_clock():
+    # Unix-stamped vision against monotonic odometry (porting issue, items 1 and 8): after
+    # the one warning, each such measurement replaces the last one from that clock, so the
+    # records stay bounded and the loop allocates nothing.
+    import warnings
+    est = swerve_estimator()
+    ga, pa, gb, pb = readings()
+    vision = Pose2d(1.05, 2.02, Rotation2d(0.48))
+    t = 0.0
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        est.updateWithTime(t, ga, pa)
+        est.addVisionMeasurement(vision, 1.7e9)
+
+    def loop(it):
+        nonlocal t
+        for _ in it:
+            t += DT
+            est.updateWithTime(t, ga, pa)
+            t += DT
+            pose = est.updateWithTime(t, gb, pb)
+            est.addVisionMeasurement(vision, 1.7e9 + t)
+        return pose
+
+    assert_no_allocations(loop, "SwerveDrivePoseEstimator.addVisionMeasurement "
+                                "(another clock)")
+    assert len(caught) == 1
+
+
 # Each loop calls updateWithTime with its arguments spelled out: ``f(t, *args)`` would
 # build a fresh argument tuple per call in the test itself.
 

@@ -32,7 +32,7 @@ from drivekin._core.drivetrain import Drivetrain
 from drivekin.estimator import _PoseEstimator
 from drivekin.odometry import _Odometry
 
-KINDS = {"value", "kinematics", "odometry", "estimator", "helper"}
+KINDS = {"value", "kinematics", "odometry", "estimator", "helper", "warning"}
 
 # Public submodules whose classes are not the catalog's kinds: the .wpilog reader/writer
 # and its records (drivekin.datalog), replay's configuration and results (drivekin.replay).
@@ -124,8 +124,9 @@ def test_entry_kind_and_drivetrain(e):
     assert e.kind in KINDS, f"{e.cls.__name__}: unknown kind {e.kind!r}"
     if e.kind in ("kinematics", "odometry", "estimator"):
         assert e.drivetrain, f"{e.cls.__name__}: a {e.kind} entry names its drivetrain"
-    if e.kind == "helper":
+    if e.kind in ("helper", "warning"):
         assert e.drivetrain is None
+    assert (e.kind == "warning") == issubclass(e.cls, Warning)
     assert e.positions is None or e.kind == "odometry"
     assert not e.steered or (e.kind == "kinematics" and issubclass(e.cls, Drivetrain))
     assert (e.peer is None) != (e.no_peer is None) or e.kind not in ("value", "kinematics"), \

@@ -309,6 +309,8 @@ def runtime_class_members(cls: type) -> dict[str, object]:
     from drivekin._core.renames import Renamed
     members: dict[str, object] = {}
     for klass in reversed(cls.__mro__[:-1]):          # without object
+        if klass.__module__ == "builtins":
+            continue                                  # BaseException's, for a warning
         members.update({k: v for k, v in vars(klass).items()
                         if public(k) and not isinstance(v, Renamed)})
     return members
@@ -407,7 +409,8 @@ def test_stub_classes_mirror_the_runtime_hierarchy(module):
         for base in scls.bases:
             found = resolve_base(stub, base)
             bases.append(f"drivekin.{found[0].module}.{found[1]}" if found else base)
-        runtime_bases = [f"{b.__module__}.{b.__qualname__}" for b in cls.__bases__
+        runtime_bases = [b.__qualname__ if b.__module__ == "builtins"
+                         else f"{b.__module__}.{b.__qualname__}" for b in cls.__bases__
                          if b is not object]
         if bases != runtime_bases:
             errors.append(f"{cname}: stub bases {bases}, runtime bases {runtime_bases}")

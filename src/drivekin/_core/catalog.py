@@ -107,7 +107,8 @@ class Peer:
 @dataclass(frozen=True)
 class Entry:
     cls: type
-    kind: str                      # "value", "kinematics", "odometry", "estimator", "helper"
+    kind: str                      # "value", "kinematics", "odometry", "estimator", "helper",
+                                   # "warning"
     drivetrain: str | None = None  # "swerve", "mecanum", "differential", "deadwheel", ...
     flatten: Callable[[Any], tuple[float, ...]] | None = None
     build: Callable[..., Any] | None = None
@@ -504,6 +505,8 @@ ENTRIES: tuple[Entry, ...] = (
     Entry(_dk.MathSharedStore, "helper", example=_dk.MathSharedStore),
     Entry(_dk.TimeInterpolatableBuffer, "helper", example=_double_buffer),
     Entry(_dk.Units, "helper"),
+    Entry(_dk.ClockMismatchWarning, "warning",
+          example=lambda: _dk.ClockMismatchWarning("vision timestamp off the clock")),
 )
 
 BY_CLASS: dict[type, Entry] = {e.cls: e for e in ENTRIES}
