@@ -996,6 +996,103 @@ def check_many_modules(n=3000):
         raise Fail("pickle lost modules")
 
 
+# ---- the porting issue's hostile inputs (issue 15, items 1 and 6-10) ---------------
+
+def _traced_growth(run):
+    import tracemalloc
+    tracemalloc.start()
+    try:
+        start = tracemalloc.get_traced_memory()[0]
+        run()
+        return tracemalloc.get_traced_memory()[0] - start
+    finally:
+        tracemalloc.stop()
+
+
+def _finite_pose(p, what):
+    if not all(np.isfinite((p.x, p.y, p.getRotation().getRadians()))):
+        raise Fail(f"{what}: {p!r}")
+
+
+def check_estimator_std_devs(state):
+    R, P = drivekin.Rotation2d, drivekin.Pose2d
+    e = drivekin.DifferentialDrivePoseEstimator(R(), 0.0, 0.0, P(), state, (0.5,) * 3)
+    e.updateWithTime(0.0, R(), 0.0, 0.0)
+    e.updateWithTime(0.02, R(), 0.02, 0.02)
+    e.addVisionMeasurement(P(1.0, 0.0, R()), 0.01)
+    _finite_pose(e.getEstimatedPosition(), f"state std devs {state}")
+    _finite_pose(e.sampleAt(0.015), f"state std devs {state}, sampleAt")
+    expect_clean(lambda: e.setVisionMeasurementStdDevs((float("nan"), 1.0, 1.0)),
+                 needle="finite")
+
+
+def check_buffer_huge_timestamps():
+    b = drivekin.TimeInterpolatableBuffer.createDoubleBuffer(1.5)
+    b.addSample(1e308, 1.0)
+    b.addSample(-1e308, 0.0)
+    for t in (9e307, -9e307, 0.0, 1e308, -1e308):
+        v = b.getSample(t)
+        if v is not None and not (np.isfinite(v) and 0.0 <= v <= 1.0):
+            raise Fail(f"getSample({t!r}) = {v!r}")
+
+
+def check_estimator_backwards_clock():
+    R, P = drivekin.Rotation2d, drivekin.Pose2d
+    e = drivekin.DifferentialDrivePoseEstimator(R(), 0.0, 0.0, P())
+    for i in range(200):
+        e.updateWithTime(-0.02 * i, R(), 0.001 * i, 0.001 * i)
+
+    def run():
+        for i in range(200, 20200):
+            e.updateWithTime(-0.02 * i, R(), 0.001 * i, 0.001 * i)
+    grown = _traced_growth(run)
+    if grown > 64 << 10:
+        raise Fail(f"20,000 backwards updates kept {grown} bytes")
+
+
+def check_estimator_vision_clock():
+    import warnings
+    R, P = drivekin.Rotation2d, drivekin.Pose2d
+    e = drivekin.DifferentialDrivePoseEstimator(R(), 0.0, 0.0, P())
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        for i in range(200):
+            e.updateWithTime(0.02 * i, R(), 0.02 * i, 0.02 * i)
+            e.addVisionMeasurement(P(), 1.7e9 + 0.02 * i)
+
+        def run():
+            for i in range(200, 20200):
+                e.updateWithTime(0.02 * i, R(), 0.02 * i, 0.02 * i)
+                e.addVisionMeasurement(P(), 1.7e9 + 0.02 * i)
+        grown = _traced_growth(run)
+    if grown > 64 << 10:
+        raise Fail(f"20,000 vision measurements from another clock kept {grown} bytes")
+    kinds = [w.category for w in caught]
+    if kinds != [drivekin.ClockMismatchWarning]:
+        raise Fail(f"expected one ClockMismatchWarning, got {kinds}")
+
+
+def check_desaturate_aliased_chassis():
+    from drivekin import batch
+    buf = np.array([1., 2, 4, 3, 5, 3, 2, 2, 5, 4, 6, 2, 3, 4, 5, 1])
+    mv, cv = buf.reshape(2, 4, 2), buf[:6].reshape(2, 3)
+    before = buf.copy()
+    expect_clean(lambda: batch.desaturateWheelVelocities(mv, cv, 4.0, 3.0, 5.0, out=mv),
+                 needle="overlap")
+    if not np.array_equal(buf, before, equal_nan=True):
+        raise Fail("a refused call changed its input")
+
+
+def porting_cases():
+    cases = {f"estimator state std devs {s}": functools.partial(check_estimator_std_devs, s)
+             for s in [(1e200,) * 3, (float("inf"),) * 3, (-1e300, 1e-300, 0.0)]}
+    cases["TimeInterpolatableBuffer at ±1e308"] = check_buffer_huge_timestamps
+    cases["estimator clock running backwards"] = check_estimator_backwards_clock
+    cases["estimator vision from another clock"] = check_estimator_vision_clock
+    cases["batch.desaturateWheelVelocities aliased chassis"] = check_desaturate_aliased_chassis
+    return cases
+
+
 def group_misc():
     cases = {}
     for cls in reg.public_classes():
@@ -1009,6 +1106,7 @@ def group_misc():
                 check_wpistruct_count, fn, n)
     cases["wpistruct spec cache is bounded"] = check_spec_cache_bounded
     cases["SwerveDriveKinematics with 3000 modules"] = check_many_modules
+    cases.update(porting_cases())
     return cases
 
 
