@@ -10,6 +10,8 @@ Environment switches:
                            drivekin.batch's docstring). Other modules are unaffected.
 """
 import os
+import platform
+import sys
 
 import numpy
 from Cython.Build import cythonize
@@ -63,25 +65,44 @@ def simd_options(name):
     }
 
 
-extensions = [
-    Extension(
-        f"drivekin.{name}",
-        [f"src/drivekin/{name.replace('.', '/')}.pyx"],
-        **{
-            "include_dirs": [numpy.get_include()],
-            "define_macros": macros,
-            "extra_compile_args": compile_args,
-            **simd_options(name),
-        },
-    )
-    for name in modules
-]
 
-setup(
-    ext_modules=cythonize(
-        extensions,
+
+def link_args(system=sys.platform, machine=platform.machine()):
+    """Linker arguments for a target. Linux aarch64: LOAD segments aligned to 16 KiB, the
+    page size of SystemCore's kernel (and of other 16 KiB-page arm64 kernels), which
+    cannot map a library aligned to 4 KiB; GNU ld's aarch64 default is 64 KiB, but
+    other linkers (lld: 4 KiB) differ, so it is said explicitly."""
+    if system.startswith("linux") and machine in ("aarch64", "arm64"):
+        return ["-Wl,-z,max-page-size=16384"]
+    return []
+
+
+def extensions(numpy_include=None, system=sys.platform, machine=platform.machine()):
+    """The extension modules, cythonized; numpy_include, system and machine name the
+    target (scripts/cross_build.py builds the same list for another interpreter)."""
+    return cythonize(
+        [
+            Extension(
+                f"drivekin.{name}",
+                [f"src/drivekin/{name.replace('.', '/')}.pyx"],
+                **{
+                    "include_dirs": [numpy_include or numpy.get_include()],
+                    "define_macros": macros,
+                    "extra_compile_args": compile_args,
+                    "extra_link_args": link_args(system, machine),
+                    **simd_options(name),
+                },
+            )
+            for name in modules
+        ],
         compiler_directives=directives,
         include_path=["src"],
         annotate=trace,
     )
-)
+
+
+# setuptools runs this file as __main__ (pip, build, cibuildwheel, setup.py commands);
+# scripts/cross_build.py imports it for the extension list.
+if __name__ == "__main__":
+    # Compile the modules in parallel (pip and cibuildwheel pass no -j).
+    setup(ext_modules=extensions(), options={"build_ext": {"parallel": os.cpu_count() or 1}})

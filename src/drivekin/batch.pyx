@@ -5,15 +5,15 @@ argument that is one value per call in the per-call API is either that value's a
 (shape ``S``) or a stack of N of them (shape ``(N,) + S``), and results have the matching
 form. The value arrays are
 
-===========================  ==========  =============================================
-value                        shape S     columns
-===========================  ==========  =============================================
-chassis vector / pose        (3,)        ``[vx m/s, vy m/s, omega rad/s]``,
-                                         ``[x m, y m, θ rad]``, ``[dx m, dy m, dθ rad]``
-swerve modules (M modules)   (M, 2)      ``[velocity m/s or distance m, angle rad]``
-wheels (mecanum, diff, dead) (W,)        one value per wheel, the per-call order
-angle / time step            ()          rad / s (a float, or an (N,) stack)
-===========================  ==========  =============================================
+==============================  ==========  =============================================
+value                           shape S     columns
+==============================  ==========  =============================================
+chassis vector / pose           (3,)        ``[vx m/s, vy m/s, omega rad/s]``,
+                                            ``[x m, y m, θ rad]``, ``[dx m, dy m, dθ rad]``
+swerve modules (M modules)      (M, 2)      ``[velocity m/s or distance m, angle rad]``
+wheels (mecanum, diff, dead)    (W,)        one value per wheel, the per-call order
+angle / time step               ()          rad / s (a float, or an (N,) stack)
+==============================  ==========  =============================================
 
 Every array must be a float64, native-endian, C-contiguous numpy array (the rule of the
 per-call buffers; ``np.ascontiguousarray(x, dtype=np.float64)`` makes one). ``out=``, when
@@ -35,10 +35,10 @@ documents at most 2 ulp for libmvec's AVX2 sin and cos and 3 ulp for atan2 (libm
 of a square root and a division (within an ulp or two; it halves the replay's sequential
 latency). The bound, which tests/behaviour/test_batch_simd.py checks against the per-call
 API: each per-sample result (kinematics, discretize, the rotations, exp, log) is within
-1e-14 · max(|x|, 1) of the per-call value x; a replay's poses are within 1e-14 · k ·
-max(|x|, 1) after k samples, because the heading differences compose along the path.
+1e-14 · max(abs(x), 1) of the per-call value x; a replay's poses are within 1e-14 · k ·
+max(abs(x), 1) after k samples, because the heading differences compose along the path.
 Measured on 10⁶ random samples (benchmarks/simd_error.py): per-sample functions at most
-2.7e-15 (relative to max(|x|, 1)), 3.6e-15 absolute; 10⁶-sample replays at most 2.8e-12
+2.7e-15 (relative to max(abs(x), 1)), 3.6e-15 absolute; 10⁶-sample replays at most 2.8e-12
 relative, 1.7e-11 m absolute. NaN and infinities come out where the default build puts
 them. Everything else (argument rules, state left behind, the desaturation and
 wheel-drive functions, which call no transcendental function) is the same in both builds.
@@ -600,8 +600,9 @@ def log(transforms, out=None):
 # Odometry replay
 
 def replay(odometry, gyroAngles, positions, out=None):
-    """Run ``odometry.update`` for N samples; return the poses ``(N, 3)`` ``[x m, y m,
-    θ rad]`` after each, leaving the odometry at the last one.
+    """Run ``odometry.update`` for N samples; return the poses after each.
+
+    The poses are ``(N, 3)`` ``[x m, y m, θ rad]``; the odometry is left at the last one.
 
     ``gyroAngles`` is ``(N,)`` (rad; None for a DeadWheelOdometry built without a gyro);
     ``positions`` is what ``update`` reads, stacked: SwerveDriveOdometry ``(N, M, 2)``

@@ -4,13 +4,24 @@ Reading and writing go through robotpy-wpiutil (``wpiutil.log.DataLogReader`` an
 ``wpiutil.DataLogWriter``), an optional dependency: ``pip install "drivekin[log]"``.
 It is imported on first use, so ``import drivekin`` never imports it.
 
-Reading::
+A round trip (writing, then reading)::
 
-    from drivekin import datalog
-    log = datalog.read("match.wpilog")
+    import numpy as np
+    from drivekin import Pose2d, Rotation2d, SwerveModulePosition, datalog
+    pose = Pose2d(1.0, 2.0, Rotation2d(0.5))
+    positions = [SwerveModulePosition(0.1 * i, Rotation2d(0.2 * i)) for i in range(4)]
+    t_us = np.arange(1, 51) * 20_000                       # 50 records, 20 ms apart
+    truth = np.column_stack([np.linspace(0.0, 1.0, 50), np.zeros(50), np.zeros(50)])
+    with datalog.Writer("run.wpilog") as w:
+        w.append("/Drive/Pose", pose, 20_000)                  # struct:Pose2d
+        w.append("/Drive/ModulePositions", positions, 20_000)  # struct:SwerveModulePosition[]
+        w.append("/Drive/GyroRate", 0.25, 20_000)              # double
+        w.appendSeries("/Sim/TruePose", "struct:Pose2d", t_us, truth)   # (N,) and (N, 3)
+
+    log = datalog.read("run.wpilog")
     for info in log.entries.values():      # name, type, metadata, record count
         print(info.name, info.type, info.records)
-    t, poses = log.values("/RealOutputs/Odometry/Robot")   # struct:Pose2d
+    t, poses = log.values("/Sim/TruePose")   # struct:Pose2d
     # t: int64 (N,) microseconds; poses: float64 (N, 3) [x m, y m, θ rad]
 
 :meth:`LogData.values` shapes (N records, M array elements, k doubles per struct):
@@ -57,17 +68,9 @@ Record order and damage:
 * Entries finished and restarted keep their records under one name; a name restarted
   with a different type is refused when read.
 
-Writing::
-
-    with datalog.Writer("run.wpilog") as w:
-        w.append("/Drive/Pose", pose, 20_000)                  # struct:Pose2d
-        w.append("/Drive/ModulePositions", positions, 20_000)  # struct:SwerveModulePosition[]
-        w.append("/Drive/GyroRate", 0.25, 20_000)              # double
-        w.appendSeries("/Sim/TruePose", "struct:Pose2d", t_us, poses)   # (N,) and (N, 3)
-
-drivekin values go in as WPILib struct entries (``struct:<Name>`` and
-``struct:<Name>[]``, packed by :mod:`drivekin.wpistruct`) and every struct schema they
-need, nested ones included, is published once as a ``structschema`` entry, so
+Writing (:class:`Writer`, above): drivekin values go in as WPILib struct entries
+(``struct:<Name>`` and ``struct:<Name>[]``, packed by :mod:`drivekin.wpistruct`) and every
+struct schema they need, nested ones included, is published once as a ``structschema`` entry, so
 AdvantageScope shows them as poses and module states. Timestamps are integers in
 microseconds and must be >= 1: DataLog reads a timestamp of 0 as "now".
 

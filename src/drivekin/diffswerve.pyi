@@ -98,7 +98,7 @@ class DifferentialSwerveModuleVelocities(_WheelValues):
 
 @final
 class DifferentialSwerveModuleKinematics:
-    """DifferentialSwerveModuleKinematics(azimuthGearRatio, wheelGearRatio, wheelRadius, *, motor2Inverted=False)
+    """``DifferentialSwerveModuleKinematics(azimuthGearRatio, wheelGearRatio, wheelRadius, *, motor2Inverted=False)``
 
     Kinematics of one differential swerve pod (quail's model, made consistent):
     ``R_A·ω_pod = ω_m1 + ω_m2`` and ``R_L·ω_wheel = ω_m1 − ω_m2`` with ``ω_wheel = v / r``.
@@ -199,7 +199,7 @@ class DifferentialSwerveModuleKinematics:
         *,
         proportional: bool = False,
     ) -> DifferentialSwerveMotorVelocities:
-        """Return new motor velocities with both |motor| ≤ ``maxMotorVelocity`` (rad/s,
+        """Return new motor velocities each of magnitude at most ``maxMotorVelocity`` (rad/s,
         ≥ 0; ValueError if negative or NaN; inf means no limit).
 
         By default the pod's steering rate is kept and the wheel speed is reduced first:

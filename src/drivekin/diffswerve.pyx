@@ -251,7 +251,7 @@ def _restore(azimuthGearRatio, wheelGearRatio, wheelRadius, motor2Inverted):
 
 
 cdef class DifferentialSwerveModuleKinematics:
-    """DifferentialSwerveModuleKinematics(azimuthGearRatio, wheelGearRatio, wheelRadius, *, motor2Inverted=False)
+    """``DifferentialSwerveModuleKinematics(azimuthGearRatio, wheelGearRatio, wheelRadius, *, motor2Inverted=False)``
 
     Kinematics of one differential swerve pod (quail's model, made consistent):
     ``R_A·ω_pod = ω_m1 + ω_m2`` and ``R_L·ω_wheel = ω_m1 − ω_m2`` with ``ω_wheel = v / r``.
@@ -440,7 +440,7 @@ cdef class DifferentialSwerveModuleKinematics:
 
     def desaturateMotorVelocities(self, DifferentialSwerveMotorVelocities motorVelocities not None,
                                   double maxMotorVelocity, *, proportional=False):
-        """Return new motor velocities with both |motor| ≤ ``maxMotorVelocity`` (rad/s,
+        """Return new motor velocities each of magnitude at most ``maxMotorVelocity`` (rad/s,
         ≥ 0; ValueError if negative or NaN; inf means no limit).
 
         By default the pod's steering rate is kept and the wheel speed is reduced first:

@@ -261,7 +261,7 @@ cdef class Rotation2d:
     vector and normalises it; a vector of length 1e-6 or less gives the identity
     (WPILib reports an error there; drivekin returns the identity silently).
     ``Rotation2d(matrix)`` takes a 2×2 special orthogonal float64 numpy array (ValueError
-    if ‖RRᵀ − I‖_F or |det R − 1| exceeds 1e-9).
+    if the Frobenius norm of RRᵀ − I, or abs(det R − 1), exceeds 1e-9).
     The constructor angle is not remembered: ``Rotation2d(3π/2).getDegrees()`` is −90.
     """
 

@@ -130,7 +130,7 @@ class SwerveModuleAcceleration(_ModuleVector):
 
 @final
 class SwerveDriveKinematics(Drivetrain):
-    """SwerveDriveKinematics(*moduleTranslations)
+    """``SwerveDriveKinematics(*moduleTranslations)``
 
     Kinematics of a swerve drive with N ≥ 2 modules at the given robot-relative
     positions (Translation2d, m), in the order used by every method. Pass the

@@ -343,7 +343,7 @@ cdef void store_modules(object fast, double* d, Py_ssize_t n, const double* m,
 
 # ---------------------------------------------------------------------------------------
 cdef class SwerveDriveKinematics(Drivetrain):
-    """SwerveDriveKinematics(*moduleTranslations)
+    """``SwerveDriveKinematics(*moduleTranslations)``
 
     Kinematics of a swerve drive with N ≥ 2 modules at the given robot-relative
     positions (Translation2d, m), in the order used by every method. Pass the

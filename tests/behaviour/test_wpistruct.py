@@ -205,8 +205,9 @@ NO_UPSTREAM_STRUCT = {"DeadWheelKinematics", "DifferentialSwerveModuleKinematics
                       "DifferentialSwerveMotorVelocities"}
 
 
-# Public classes that are not values: stateful trackers and static-method namespaces.
-NOT_VALUES = {"MathSharedStore", "TimeInterpolatableBuffer", "Units"}
+# Public classes that are not values: stateful trackers, static-method namespaces and
+# the warning category.
+NOT_VALUES = {"ClockMismatchWarning", "MathSharedStore", "TimeInterpolatableBuffer", "Units"}
 
 
 def test_struct_types_cover_every_value_and_kinematics_class():

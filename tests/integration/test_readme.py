@@ -1,7 +1,9 @@
 """Every Python example in README.md and in the docs/*.md pages runs as written; the pages
 link only to files of the repository, and the README's test command is the one CI runs."""
+import ast
 import pathlib
 import re
+import textwrap
 
 import pytest
 
@@ -99,10 +101,19 @@ def test_every_docs_page_is_indexed():
     _needs_pages()
     index = (DOCS / "README.md").read_text(encoding="utf-8")
     readme = README.read_text(encoding="utf-8")
-    pages = {p.name for p in DOCS.glob("*.md")} - {"README.md"}
+    # The docs site's home page (the README) and changelog page only include other files.
+    pages = {p.name for p in DOCS.glob("*.md")} - {"README.md", "index.md", "changelog.md"}
     assert pages
     assert [n for n in sorted(pages) if f"]({n})" not in index] == []
     assert [n for n in sorted(pages) if f"](docs/{n})" not in readme] == []
+
+
+def test_every_docs_page_is_on_the_site():
+    _needs_pages()
+    site = (DOCS / "index.md").read_text(encoding="utf-8")
+    listed = set(re.findall(r"^([\w-]+)$", site, re.M))
+    pages = {p.stem for p in DOCS.glob("*.md")} - {"index"}
+    assert sorted(pages - listed) == []
 
 
 def test_readme_test_command_is_the_ci_command():
@@ -112,3 +123,71 @@ def test_readme_test_command_is_the_ci_command():
     command = 'pip install ".[test]" && python -m pytest'
     assert f"```sh\n{command}\n```" in README.read_text(encoding="utf-8")
     assert f"\npython -m {command}\n" in ci.read_text(encoding="utf-8")
+
+
+# -- examples in docstrings (the API reference of the docs site shows them) ---------------
+
+def _public_modules():
+    import pkgutil
+    import drivekin
+    names = ["drivekin"] + [f"drivekin.{m.name}" for m in pkgutil.iter_modules(drivekin.__path__)
+                            if not m.name.startswith("_") and m.name not in ("app",)]
+    return sorted(names)
+
+
+_LITERAL = re.compile(r"::\n\n((?:(?:[ ]{4}.*)?\n)+)")
+
+
+def _docstring_examples():
+    """(where, [code, ...]): each public docstring's literal blocks that are Python (they
+    parse; a block of formulas does not), in order, and its doctests."""
+    import importlib
+    import inspect
+    found = []
+    for name in _public_modules():
+        mod = importlib.import_module(name)
+        objs = [(name, mod)]
+        for attr, obj in vars(mod).items():
+            if (attr.startswith("_") or inspect.ismodule(obj)
+                    or getattr(obj, "__module__", name) != name):
+                continue
+            objs.append((f"{name}.{attr}", obj))
+            if isinstance(obj, type):
+                objs += [(f"{name}.{attr}.{m}", v) for m, v in vars(obj).items()
+                         if not m.startswith("_")]
+        for where, obj in objs:
+            doc = inspect.getdoc(obj) or ""
+            blocks = []
+            for m in _LITERAL.finditer(doc + "\n"):
+                code = textwrap.dedent(m.group(1))
+                try:
+                    ast.parse(code)
+                except SyntaxError:
+                    if ">>>" not in code:
+                        continue
+                blocks.append(code)
+            if blocks:
+                found.append((where, blocks))
+    return found
+
+
+DOCSTRING_EXAMPLES = _docstring_examples()
+
+
+def test_docstrings_have_examples():
+    assert len(DOCSTRING_EXAMPLES) >= 2, DOCSTRING_EXAMPLES
+
+
+@pytest.mark.parametrize("where, blocks", DOCSTRING_EXAMPLES, ids=[w for w, _ in DOCSTRING_EXAMPLES])
+def test_docstring_example_runs(where, blocks, tmp_path, monkeypatch, capsys):
+    import doctest
+    monkeypatch.chdir(tmp_path)
+    namespace = {"__name__": "__docstring_example__"}
+    for code in blocks:
+        if ">>>" in code:
+            test = doctest.DocTestParser().get_doctest(code, namespace, where, None, 0)
+            runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+            runner.run(test, out=lambda s: None)
+            assert runner.failures == 0, f"{where}: {runner.failures} doctest failures"
+        else:
+            exec(compile(code, where, "exec"), namespace)

@@ -14,7 +14,7 @@ import sys
 
 from drivekin.app import replay_cli
 from drivekin.app.demo import DRIVETRAINS, DT, VISION_DRIVETRAINS, header, run, table
-from drivekin.app.options import need_extras, new_file, number_option
+from drivekin.app.options import docs_url, need_extras, new_file, number_option
 
 
 # Option ranges. The upper bounds keep a run's memory and time sane (--seconds sizes the
@@ -50,7 +50,7 @@ def parse_args(argv=None):
             "tracemalloc to count allocations."),
         epilog="Example: python -m drivekin --drivetrain mecanum --seconds 60 --max-speed 4. "
                "Replay a WPILib DataLog: python -m drivekin replay LOG.wpilog (see "
-               "python -m drivekin replay --help).",
+               f"python -m drivekin replay --help). Documentation: {docs_url()}",
     )
     parser.add_argument("--seconds", type=number_option(*SECONDS_RANGE, "s", True),
                         default=180.0, metavar="S",

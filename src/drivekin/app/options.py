@@ -8,6 +8,20 @@ import math
 import os
 
 
+def docs_url() -> str:
+    """Where the documentation site is: the installed distribution's Documentation URL
+    (pyproject.toml, [project.urls]), or the docs/ folder of a source tree."""
+    from importlib import metadata
+    try:
+        for entry in metadata.metadata("drivekin").get_all("Project-URL") or ():
+            label, _, url = entry.partition(",")
+            if label.strip().lower() == "documentation":
+                return url.strip()
+    except metadata.PackageNotFoundError:
+        pass
+    return "docs/README.md in drivekin's source"
+
+
 def number_option(low: float, high: float, unit: str, low_inclusive: bool):
     """An argparse ``type`` accepting a decimal number in the given range.
 

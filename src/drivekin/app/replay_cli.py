@@ -14,7 +14,7 @@ import os
 import sys
 import time
 
-from drivekin.app.options import need_extras, number_option
+from drivekin.app.options import docs_url, need_extras, number_option
 
 
 def _point(option: str, n: int):
@@ -52,7 +52,8 @@ def build_parser() -> argparse.ArgumentParser:
             "entries plus /drivekin/ReplayPose and /drivekin/ReplayError); --plot also "
             "draws LOG-replay.png. Progress goes to stderr. Exit status: 0 if every log "
             "was replayed, 1 if any failed, 2 for bad options."),
-        epilog="Example: python -m drivekin replay match.wpilog --wheel-scale 1.02 --plot")
+        epilog="Example: python -m drivekin replay match.wpilog --wheel-scale 1.02 --plot. "
+               f"Documentation: {docs_url()}")
     p.add_argument("logs", nargs="+", metavar="LOG.wpilog", help="DataLog files to replay")
     p.add_argument("--drivetrain", choices=("auto",) + DRIVETRAINS, default="auto",
                    help="drivetrain (default: from the type of the positions entry)")
