@@ -35,6 +35,11 @@ directives = {
     # Plain method descriptors instead of cyfunctions: CPython calls them through its
     # specialised fast path, about 85 instructions (~5 ns) less per call (benchmarks/).
     "binding": False,
+    # Annotations are documentation only: a public parameter of a drivekin class is
+    # annotated (``pose: Pose2d``) for the embedded signature and checked by drivekin
+    # itself (_core/args.pxd, check_type), whose TypeError says how to convert a robotpy
+    # object; typing it would bring back Cython's own test and message.
+    "annotation_typing": False,
 }
 macros = [("NPY_NO_DEPRECATED_API", "NPY_1_7_API_VERSION")]
 if trace:

@@ -7,7 +7,6 @@ cdef class _ChassisVector:
     cdef vec3_t v                # (vx, vy, omega) or (ax, ay, alpha)
     cdef _ChassisVector _new(self, double x, double y, double z)
     cdef _rotated_into(self, rot2_t r, _ChassisVector out)
-    cdef _check(self, _ChassisVector other)
 
 @cython.final
 cdef class ChassisVelocities(_ChassisVector):

@@ -7,8 +7,9 @@ cimport cython
 
 from drivekin._core.types cimport rot2_t, vec2_t, vec3_t
 from drivekin._core.kernels cimport chassis_discretize, feet_to_meters, java_equals, rot_neg, vec, vec_rotate
+from drivekin._core.args cimport check_type
 from drivekin.geometry cimport Rotation2d, new_twist
-from drivekin._core.errors import refuse_delete, type_name
+from drivekin._core.errors import refuse_delete
 from drivekin._core.format import f2
 
 __all__ = ["ChassisAccelerations", "ChassisVelocities"]
@@ -30,44 +31,51 @@ cdef class _ChassisVector:
         out.v.y = t.y
         out.v.z = self.v.z
 
-    def toRobotRelative(self, Rotation2d robotAngle not None):
+    def toRobotRelative(self, robotAngle: Rotation2d):
         """Convert field-relative values to robot-relative ones.
 
         ``robotAngle`` is the robot heading on the field; x and y are rotated by
         −robotAngle, the angular component is unchanged."""
+        check_type(robotAngle, Rotation2d, "robotAngle")
         out = self._new(0.0, 0.0, 0.0)
-        self._rotated_into(rot_neg(robotAngle.r), out)
+        self._rotated_into(rot_neg((<Rotation2d>robotAngle).r), out)
         return out
 
-    def toFieldRelative(self, Rotation2d robotAngle not None):
+    def toFieldRelative(self, robotAngle: Rotation2d):
         """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
+        check_type(robotAngle, Rotation2d, "robotAngle")
         out = self._new(0.0, 0.0, 0.0)
-        self._rotated_into(robotAngle.r, out)
+        self._rotated_into((<Rotation2d>robotAngle).r, out)
         return out
 
-    def toRobotRelativeInto(self, Rotation2d robotAngle not None, _ChassisVector out not None):
+    # A parameter annotated with the shared base (out, other, endValue) must be of this
+    # object's own class: check_type against type(self).
+
+    def toRobotRelativeInto(self, robotAngle: Rotation2d, out: _ChassisVector):
         """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
-        if type(out) is not type(self):
-            raise TypeError(f"out must be a {type(self).__name__}, got {type_name(out)}")
-        self._rotated_into(rot_neg(robotAngle.r), out)
+        check_type(robotAngle, Rotation2d, "robotAngle")
+        check_type(out, type(self), "out")
+        self._rotated_into(rot_neg((<Rotation2d>robotAngle).r), <_ChassisVector>out)
 
-    def toFieldRelativeInto(self, Rotation2d robotAngle not None, _ChassisVector out not None):
+    def toFieldRelativeInto(self, robotAngle: Rotation2d, out: _ChassisVector):
         """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
-        if type(out) is not type(self):
-            raise TypeError(f"out must be a {type(self).__name__}, got {type_name(out)}")
-        self._rotated_into(robotAngle.r, out)
+        check_type(robotAngle, Rotation2d, "robotAngle")
+        check_type(out, type(self), "out")
+        self._rotated_into((<Rotation2d>robotAngle).r, <_ChassisVector>out)
 
-    def plus(self, _ChassisVector other not None):
+    def plus(self, other: _ChassisVector):
         """Return the component-wise sum."""
-        self._check(other)
-        return self._new(self.v.x + other.v.x, self.v.y + other.v.y, self.v.z + other.v.z)
+        check_type(other, type(self), "other")
+        cdef vec3_t o = (<_ChassisVector>other).v
+        return self._new(self.v.x + o.x, self.v.y + o.y, self.v.z + o.z)
 
-    def minus(self, _ChassisVector other not None):
+    def minus(self, other: _ChassisVector):
         """Return the component-wise difference."""
-        self._check(other)
-        return self._new(self.v.x - other.v.x, self.v.y - other.v.y, self.v.z - other.v.z)
+        check_type(other, type(self), "other")
+        cdef vec3_t o = (<_ChassisVector>other).v
+        return self._new(self.v.x - o.x, self.v.y - o.y, self.v.z - o.z)
 
     def unaryMinus(self):
         """Return the negation of every component."""
@@ -81,21 +89,18 @@ cdef class _ChassisVector:
         """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
         return self._new(self.v.x / scalar, self.v.y / scalar, self.v.z / scalar)
 
-    def interpolate(self, _ChassisVector endValue not None, double t):
+    def interpolate(self, endValue: _ChassisVector, double t):
         """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
         ``endValue`` (the objects themselves, as WPILib does)."""
-        self._check(endValue)
+        check_type(endValue, type(self), "endValue")
         if t <= 0.0:
             return self
         if t >= 1.0:
             return endValue
-        return self._new(self.v.x + t * (endValue.v.x - self.v.x),
-                         self.v.y + t * (endValue.v.y - self.v.y),
-                         self.v.z + t * (endValue.v.z - self.v.z))
-
-    cdef _check(self, _ChassisVector other):
-        if type(other) is not type(self):
-            raise TypeError(f"expected a {type(self).__name__}, got {type_name(other)}")
+        cdef vec3_t e = (<_ChassisVector>endValue).v
+        return self._new(self.v.x + t * (e.x - self.v.x),
+                         self.v.y + t * (e.y - self.v.y),
+                         self.v.z + t * (e.z - self.v.z))
 
     def __add__(self, other):
         if type(other) is type(self):
@@ -198,9 +203,10 @@ cdef class ChassisVelocities(_ChassisVector):
         cdef vec3_t d = chassis_discretize(self.v.x, self.v.y, self.v.z, dt)
         return new_chassis_velocities(d.x, d.y, d.z)
 
-    def discretizeInto(self, double dt, ChassisVelocities out not None):
+    def discretizeInto(self, double dt, out: ChassisVelocities):
         """Allocation-free :meth:`discretize`: write the result into ``out`` (may be self)."""
-        out.v = chassis_discretize(self.v.x, self.v.y, self.v.z, dt)
+        check_type(out, ChassisVelocities, "out")
+        (<ChassisVelocities>out).v = chassis_discretize(self.v.x, self.v.y, self.v.z, dt)
 
     def __eq__(self, other):
         cdef ChassisVelocities o

@@ -25,7 +25,7 @@ from libc.math cimport M_PI, atan2, fabs, isfinite
 import numpy as np
 
 from drivekin._core.kernels cimport deadwheel_reading, deadwheel_solve
-from drivekin._core.args cimport read_floats, vector_data
+from drivekin._core.args cimport check_type, read_floats, vector_data
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_twist
 from drivekin._core.args cimport snapshot
 from drivekin.chassis cimport (ChassisAccelerations, ChassisVelocities, _ChassisVector,
@@ -338,26 +338,29 @@ cdef class DeadWheelKinematics(Drivetrain):
         self._forward(wheelVelocities, gyroRate, "wheelVelocities", "toChassisVelocities", r)
         return new_chassis_velocities(r[0], r[1], r[2])
 
-    def toChassisVelocitiesInto(self, wheelVelocities, ChassisVelocities out not None,
+    def toChassisVelocitiesInto(self, wheelVelocities, out: ChassisVelocities,
                                 gyroRate=None):
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
         cdef double r[3]
+        check_type(out, ChassisVelocities, "out")
         self._forward(wheelVelocities, gyroRate, "wheelVelocities", "toChassisVelocitiesInto", r)
-        out.v.x = r[0]
-        out.v.y = r[1]
-        out.v.z = r[2]
+        (<ChassisVelocities>out).v.x = r[0]
+        (<ChassisVelocities>out).v.y = r[1]
+        (<ChassisVelocities>out).v.z = r[2]
 
-    def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
+    def toWheelVelocities(self, chassisVelocities: ChassisVelocities):
         """Return each wheel's surface velocity (tuple of floats, m/s) for a robot
         velocity."""
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
         self._ready()
-        return self._inverse(chassisVelocities)
+        return self._inverse(<ChassisVelocities>chassisVelocities)
 
-    def toWheelVelocitiesInto(self, ChassisVelocities chassisVelocities not None, out):
+    def toWheelVelocitiesInto(self, chassisVelocities: ChassisVelocities, out):
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``, a writeable
         float64 array of shape (N,) (any stride). Returns None."""
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
         self._ready()
-        self._inverse_into(chassisVelocities, out, "out")
+        self._inverse_into(<ChassisVelocities>chassisVelocities, out, "out")
 
     def toTwist2d(self, wheelDeltas, gyroDelta=None):
         """Return the Twist2d (m, rad) for the wheel distance changes (m). With
@@ -376,10 +379,11 @@ cdef class DeadWheelKinematics(Drivetrain):
                       "toChassisAccelerations", r)
         return ChassisAccelerations(r[0], r[1], r[2])
 
-    def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None):
+    def toWheelAccelerations(self, chassisAccelerations: ChassisAccelerations):
         """Return each wheel's surface acceleration (tuple of floats, m/s²)."""
+        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
         self._ready()
-        return self._inverse(chassisAccelerations)
+        return self._inverse(<ChassisAccelerations>chassisAccelerations)
 
 
 def _check_ticks(double inPerTick, **ticks):

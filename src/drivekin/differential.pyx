@@ -7,6 +7,7 @@ cimport cython
 from drivekin._core.drivetrain cimport Drivetrain
 from libc.math cimport isfinite
 
+from drivekin._core.args cimport check_type
 from drivekin._core.wheels cimport _WheelValues, install_bare_new
 from drivekin._core.kernels cimport clamp01, feet_to_meters, wheels_desaturate
 from drivekin.geometry cimport new_twist
@@ -81,9 +82,10 @@ cdef class DifferentialDriveWheelVelocities(_Wheel2):
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
         wheels_desaturate(2, self.w, attainableMaxSpeed, self.w)
 
-    def interpolate(self, DifferentialDriveWheelVelocities endValue not None, double t):
+    def interpolate(self, endValue: DifferentialDriveWheelVelocities, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        return self._lerp(endValue, clamp01(t))
+        check_type(endValue, DifferentialDriveWheelVelocities, "endValue")
+        return self._lerp(<_WheelValues>endValue, clamp01(t))
 
     def __str__(self):
         return self._fmt(("Left", "Right"), "m/s")
@@ -106,9 +108,10 @@ cdef class DifferentialDriveWheelPositions(_Wheel2):
         """Return an independent copy."""
         return init2(self._new(), self.w[0], self.w[1])
 
-    def interpolate(self, DifferentialDriveWheelPositions endValue not None, double t):
+    def interpolate(self, endValue: DifferentialDriveWheelPositions, double t):
         """Linear interpolation; ``t`` is not clamped."""
-        return self._lerp(endValue, t)
+        check_type(endValue, DifferentialDriveWheelPositions, "endValue")
+        return self._lerp(<_WheelValues>endValue, t)
 
     def __eq__(self, other):
         if type(other) is DifferentialDriveWheelPositions:
@@ -131,9 +134,10 @@ cdef class DifferentialDriveWheelAccelerations(_Wheel2):
     cdef _WheelValues _new(self):
         return init2(DifferentialDriveWheelAccelerations.__new__(DifferentialDriveWheelAccelerations), 0.0, 0.0)
 
-    def interpolate(self, DifferentialDriveWheelAccelerations endValue not None, double t):
+    def interpolate(self, endValue: DifferentialDriveWheelAccelerations, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        return self._lerp(endValue, clamp01(t))
+        check_type(endValue, DifferentialDriveWheelAccelerations, "endValue")
+        return self._lerp(<_WheelValues>endValue, clamp01(t))
 
     def __str__(self):
         return self._fmt(("Left", "Right"), "m/s²")
@@ -211,37 +215,43 @@ cdef class DifferentialDriveKinematics(Drivetrain):
     def __repr__(self):
         return f"DifferentialDriveKinematics(trackwidth={self._trackwidth!r})"
 
-    def toChassisVelocities(self, DifferentialDriveWheelVelocities wheelVelocities not None):
+    def toChassisVelocities(self, wheelVelocities: DifferentialDriveWheelVelocities):
         """Return the robot velocity: vx = (left + right) / 2, vy = 0,
         omega = (right − left) / trackwidth."""
+        check_type(wheelVelocities, DifferentialDriveWheelVelocities, "wheelVelocities")
         self._ready()
-        cdef _WheelValues w = wheelVelocities
+        cdef _WheelValues w = <_WheelValues>wheelVelocities
         return new_chassis_velocities((w.w[0] + w.w[1]) / 2.0, 0.0,
                                       (w.w[1] - w.w[0]) / self._trackwidth)
 
-    def toChassisVelocitiesInto(self, DifferentialDriveWheelVelocities wheelVelocities not None,
-                                ChassisVelocities out not None):
+    def toChassisVelocitiesInto(self, wheelVelocities: DifferentialDriveWheelVelocities,
+                                out: ChassisVelocities):
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+        check_type(wheelVelocities, DifferentialDriveWheelVelocities, "wheelVelocities")
+        check_type(out, ChassisVelocities, "out")
         self._ready()
-        cdef _WheelValues w = wheelVelocities
-        out.v.x = (w.w[0] + w.w[1]) / 2.0
-        out.v.y = 0.0
-        out.v.z = (w.w[1] - w.w[0]) / self._trackwidth
+        cdef _WheelValues w = <_WheelValues>wheelVelocities
+        (<ChassisVelocities>out).v.x = (w.w[0] + w.w[1]) / 2.0
+        (<ChassisVelocities>out).v.y = 0.0
+        (<ChassisVelocities>out).v.z = (w.w[1] - w.w[0]) / self._trackwidth
 
-    def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
+    def toWheelVelocities(self, chassisVelocities: ChassisVelocities):
         """Return the wheel velocities for a robot velocity; ``vy`` is ignored (a
         differential drive cannot strafe)."""
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
         self._ready()
-        cdef ChassisVelocities c = chassisVelocities
+        cdef ChassisVelocities c = <ChassisVelocities>chassisVelocities
         return new_wheel_velocities(c.v.x - self._trackwidth / 2.0 * c.v.z,
                                     c.v.x + self._trackwidth / 2.0 * c.v.z)
 
-    def toWheelVelocitiesInto(self, ChassisVelocities chassisVelocities not None,
-                              DifferentialDriveWheelVelocities out not None):
+    def toWheelVelocitiesInto(self, chassisVelocities: ChassisVelocities,
+                              out: DifferentialDriveWheelVelocities):
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(out, DifferentialDriveWheelVelocities, "out")
         self._ready()
-        cdef ChassisVelocities c = chassisVelocities
-        cdef _WheelValues o = out
+        cdef ChassisVelocities c = <ChassisVelocities>chassisVelocities
+        cdef _WheelValues o = <_WheelValues>out
         o.w[0] = c.v.x - self._trackwidth / 2.0 * c.v.z
         o.w[1] = c.v.x + self._trackwidth / 2.0 * c.v.z
 
@@ -269,34 +279,41 @@ cdef class DifferentialDriveKinematics(Drivetrain):
                                 f"{type_name(end)}") from None
         return new_twist((l + r) / 2.0, 0.0, (r - l) / self._trackwidth)
 
-    def toChassisAccelerations(self, DifferentialDriveWheelAccelerations wheelAccelerations not None):
+    def toChassisAccelerations(self, wheelAccelerations: DifferentialDriveWheelAccelerations):
         """Return (ax = (l + r) / 2, ay = 0, alpha = (r − l) / trackwidth), m/s² and rad/s²."""
+        check_type(wheelAccelerations, DifferentialDriveWheelAccelerations, "wheelAccelerations")
         self._ready()
-        cdef _WheelValues w = wheelAccelerations
+        cdef _WheelValues w = <_WheelValues>wheelAccelerations
         return ChassisAccelerations((w.w[0] + w.w[1]) / 2.0, 0.0,
                                     (w.w[1] - w.w[0]) / self._trackwidth)
 
-    def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None):
+    def toWheelAccelerations(self, chassisAccelerations: ChassisAccelerations):
         """Return the wheel accelerations (ax ∓ trackwidth/2 · alpha); ``ay`` is ignored."""
+        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
         self._ready()
-        cdef ChassisAccelerations c = chassisAccelerations
+        cdef ChassisAccelerations c = <ChassisAccelerations>chassisAccelerations
         return DifferentialDriveWheelAccelerations(c.v.x - self._trackwidth / 2.0 * c.v.z,
                                                    c.v.x + self._trackwidth / 2.0 * c.v.z)
 
-    def interpolate(self, DifferentialDriveWheelPositions startValue not None,
-                    DifferentialDriveWheelPositions endValue not None, double t):
+    def interpolate(self, startValue: DifferentialDriveWheelPositions,
+                    endValue: DifferentialDriveWheelPositions, double t):
         """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+        check_type(startValue, DifferentialDriveWheelPositions, "startValue")
+        check_type(endValue, DifferentialDriveWheelPositions, "endValue")
         self._ready()
         return startValue.interpolate(endValue, t)
 
-    def copy(self, DifferentialDriveWheelPositions positions not None):
+    def copy(self, positions: DifferentialDriveWheelPositions):
         """Return an independent copy of ``positions``."""
+        check_type(positions, DifferentialDriveWheelPositions, "positions")
         self._ready()
         return positions.copy()
 
-    def copyInto(self, DifferentialDriveWheelPositions positions not None,
-                 DifferentialDriveWheelPositions output not None):
+    def copyInto(self, positions: DifferentialDriveWheelPositions,
+                 output: DifferentialDriveWheelPositions):
         """Copy ``positions`` into ``output``."""
+        check_type(positions, DifferentialDriveWheelPositions, "positions")
+        check_type(output, DifferentialDriveWheelPositions, "output")
         self._ready()
         (<_WheelValues>output).w[0] = (<_WheelValues>positions).w[0]
         (<_WheelValues>output).w[1] = (<_WheelValues>positions).w[1]

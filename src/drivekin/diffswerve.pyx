@@ -23,7 +23,7 @@ from libc.math cimport atan2, isfinite
 
 from drivekin._core.types cimport rot2_t
 from drivekin._core.wheels cimport _WheelValues, install_bare_new
-from drivekin._core.args cimport as_fast, float64_data, is_array
+from drivekin._core.args cimport as_fast, check_type, float64_data, is_array
 from drivekin._core.kernels cimport (clamp01, dswerve_desaturate, dswerve_drive_factor,
                                      dswerve_module, dswerve_motors, rot_rad)
 from drivekin.geometry cimport Rotation2d, new_rotation
@@ -95,9 +95,10 @@ cdef class DifferentialSwerveMotorVelocities(_WheelValues):
     def motor2(self, double value):
         self.w[1] = value
 
-    def interpolate(self, DifferentialSwerveMotorVelocities endValue not None, double t):
+    def interpolate(self, endValue: DifferentialSwerveMotorVelocities, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        return self._lerp(endValue, clamp01(t))
+        check_type(endValue, DifferentialSwerveMotorVelocities, "endValue")
+        return self._lerp(<_WheelValues>endValue, clamp01(t))
 
     def __eq__(self, other):
         if type(other) is DifferentialSwerveMotorVelocities:
@@ -148,9 +149,10 @@ cdef class DifferentialSwerveModuleVelocities(_WheelValues):
     def azimuthVelocity(self, double value):
         self.w[1] = value
 
-    def interpolate(self, DifferentialSwerveModuleVelocities endValue not None, double t):
+    def interpolate(self, endValue: DifferentialSwerveModuleVelocities, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        return self._lerp(endValue, clamp01(t))
+        check_type(endValue, DifferentialSwerveModuleVelocities, "endValue")
+        return self._lerp(<_WheelValues>endValue, clamp01(t))
 
     def __eq__(self, other):
         if type(other) is DifferentialSwerveModuleVelocities:
@@ -376,11 +378,13 @@ cdef class DifferentialSwerveModuleKinematics:
         return new_motors(m1, m2)
 
     def toMotorVelocitiesInto(self, double wheelVelocity, double azimuthVelocity,
-                              DifferentialSwerveMotorVelocities out not None):
+                              out: DifferentialSwerveMotorVelocities):
         """Allocation-free :meth:`toMotorVelocities`: write into ``out``. Returns None."""
+        check_type(out, DifferentialSwerveMotorVelocities, "out")
         if self.g.ra == 0.0:
             uninitialised()
-        dswerve_motors(&self.g, wheelVelocity, azimuthVelocity, &out.w[0], &out.w[1])
+        cdef double* w = (<_WheelValues>out).w
+        dswerve_motors(&self.g, wheelVelocity, azimuthVelocity, &w[0], &w[1])
 
     def toModuleVelocities(self, double motor1, double motor2):
         """Return the pod's motion (DifferentialSwerveModuleVelocities: wheel m/s,
@@ -394,22 +398,25 @@ cdef class DifferentialSwerveModuleKinematics:
         return new_module_velocities(v, w)
 
     def toModuleVelocitiesInto(self, double motor1, double motor2,
-                               DifferentialSwerveModuleVelocities out not None):
+                               out: DifferentialSwerveModuleVelocities):
         """Allocation-free :meth:`toModuleVelocities`: write into ``out``. Returns None."""
+        check_type(out, DifferentialSwerveModuleVelocities, "out")
         if self.g.ra == 0.0:
             uninitialised()
-        dswerve_module(&self.g, motor1, motor2, &out.w[0], &out.w[1])
+        cdef double* w = (<_WheelValues>out).w
+        dswerve_module(&self.g, motor1, motor2, &w[0], &w[1])
 
     # -- positions --------------------------------------------------------------------
 
-    def resetModulePosition(self, Rotation2d angle not None, double motor1Position,
+    def resetModulePosition(self, angle: Rotation2d, double motor1Position,
                             double motor2Position):
         """Declare that the pod points at ``angle`` while the motors read
         ``motor1Position`` and ``motor2Position`` (rad, finite; ValueError otherwise):
         :meth:`toModulePosition` measures from here. Call it once the pod's absolute
         angle is known (e.g. from an absolute encoder at start-up). Returns None."""
+        check_type(angle, Rotation2d, "angle")
         self._ready()
-        self._set_offset(angle.r, motor1Position, motor2Position)
+        self._set_offset((<Rotation2d>angle).r, motor1Position, motor2Position)
 
     def toModulePosition(self, double motor1Position, double motor2Position):
         """Return the SwerveModulePosition for the motors' positions (rad): the distance
@@ -426,9 +433,10 @@ cdef class DifferentialSwerveModuleKinematics:
         return new_module_position(d, rot_rad(self.a0 + dtheta))
 
     def toModulePositionInto(self, double motor1Position, double motor2Position,
-                             SwerveModulePosition out not None):
+                             out: SwerveModulePosition):
         """Allocation-free :meth:`toModulePosition`: write into ``out``. Returns None."""
         cdef double d, dtheta
+        check_type(out, SwerveModulePosition, "out")
         if self.g.ra == 0.0:
             uninitialised()
         dswerve_module(&self.g, motor1Position - self.p1, motor2Position - self.p2,
@@ -438,7 +446,7 @@ cdef class DifferentialSwerveModuleKinematics:
 
     # -- desaturation -----------------------------------------------------------------
 
-    def desaturateMotorVelocities(self, DifferentialSwerveMotorVelocities motorVelocities not None,
+    def desaturateMotorVelocities(self, motorVelocities: DifferentialSwerveMotorVelocities,
                                   double maxMotorVelocity, *, proportional=False):
         """Return new motor velocities each of magnitude at most ``maxMotorVelocity`` (rad/s,
         ≥ 0; ValueError if negative or NaN; inf means no limit).
@@ -452,24 +460,24 @@ cdef class DifferentialSwerveModuleKinematics:
         Velocities already within the limit, or with a NaN motor, are returned unchanged.
         The input is not modified."""
         cdef double o1, o2
+        check_type(motorVelocities, DifferentialSwerveMotorVelocities, "motorVelocities")
         cdef bint prop = flag(proportional, "proportional")
         self._ready()
         check_limit(maxMotorVelocity)
-        dswerve_desaturate(self.g.s2, motorVelocities.w[0], motorVelocities.w[1],
-                           maxMotorVelocity, prop, &o1, &o2)
+        dswerve_desaturate(self.g.s2, (<_WheelValues>motorVelocities).w[0],
+                           (<_WheelValues>motorVelocities).w[1], maxMotorVelocity, prop, &o1, &o2)
         return new_motors(o1, o2)
 
-    def desaturateMotorVelocitiesInPlace(self,
-                                         DifferentialSwerveMotorVelocities motorVelocities not None,
+    def desaturateMotorVelocitiesInPlace(self, motorVelocities: DifferentialSwerveMotorVelocities,
                                          double maxMotorVelocity, *, proportional=False):
         """Allocation-free :meth:`desaturateMotorVelocities` (same rules and keyword):
         rescale ``motorVelocities`` itself. Returns None."""
+        check_type(motorVelocities, DifferentialSwerveMotorVelocities, "motorVelocities")
         cdef bint prop = flag(proportional, "proportional")
         self._ready()
         check_limit(maxMotorVelocity)
-        dswerve_desaturate(self.g.s2, motorVelocities.w[0], motorVelocities.w[1],
-                           maxMotorVelocity, prop, &motorVelocities.w[0],
-                           &motorVelocities.w[1])
+        cdef double* w = (<_WheelValues>motorVelocities).w
+        dswerve_desaturate(self.g.s2, w[0], w[1], maxMotorVelocity, prop, &w[0], &w[1])
 
     def desaturateModuleVelocitiesInPlace(self, moduleVelocities, azimuthVelocities,
                                           double maxMotorVelocity):

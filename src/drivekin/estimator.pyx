@@ -26,7 +26,7 @@ import time
 import warnings
 
 from drivekin._core.types cimport pose2_t, rot2_t
-from drivekin._core.args cimport read_floats
+from drivekin._core.args cimport check_type, read_floats
 from drivekin._core.kernels cimport (pose, pose_interpolate, pose_relative_to,
                                      pose_transform_by, rot_cs, rot_times,
                                      transform_inverse, twist_exp_cs, vec)
@@ -409,7 +409,7 @@ cdef class _PoseEstimator:
             self.k[i] = gain(self.sd[i], vd[i])
         return 0
 
-    def addVisionMeasurement(self, Pose2d visionRobotPose not None, double timestamp,
+    def addVisionMeasurement(self, visionRobotPose: Pose2d, double timestamp,
                              visionMeasurementStdDevs=None):
         """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
         on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
@@ -422,6 +422,7 @@ cdef class _PoseEstimator:
         estimator issues a :class:`ClockMismatchWarning`. A measurement that far ahead is
         applied as WPILib does, but replaces the earlier ones that far ahead instead of
         being kept with them, so such a stream keeps one record."""
+        check_type(visionRobotPose, Pose2d, "visionRobotPose")
         cdef sample_t* b
         cdef pose2_t odometry_sample, vision_sample, delta, scaled
         cdef record_t* r
@@ -461,7 +462,7 @@ cdef class _PoseEstimator:
         clamped = min(max(timestamp, b[0].t), newest)
         i = self._first_record_after(clamped) - 1
         vision_sample = odometry_sample if i < 0 else compensate(self.rec + i, odometry_sample)
-        delta = pose_relative_to(visionRobotPose.p, vision_sample)
+        delta = pose_relative_to((<Pose2d>visionRobotPose).p, vision_sample)
         scaled = pose(vec(self.k[0] * delta.t.x, self.k[1] * delta.t.y),
                       rot_times(delta.r, self.k[2]))
         # Store under the unclamped timestamp, replacing an equal one; later records go
@@ -478,27 +479,31 @@ cdef class _PoseEstimator:
         self.nrec = lo + 1
         self.estimate = compensate(r, self.odo.pose)
 
-    def resetPose(self, Pose2d pose not None):
+    def resetPose(self, pose: Pose2d):
         """Reset the estimate (and the odometry's pose) to ``pose``; forget the history
         and every vision correction."""
+        check_type(pose, Pose2d, "pose")
         self._check()
         self.odo.resetPose(pose)
         self._clear()
         self.estimate = self.odo.pose
 
-    def resetTranslation(self, Translation2d translation not None):
+    def resetTranslation(self, translation: Translation2d):
         """Reset the position, keeping the heading and the latest vision correction of
         the heading; the history is cleared."""
+        check_type(translation, Translation2d, "translation")
         self._check()
         self.odo.resetTranslation(translation)
-        self._clear_keeping_latest(True, translation.v.x, translation.v.y, self.odo.pose.r)
+        self._clear_keeping_latest(True, (<Translation2d>translation).v.x,
+                                   (<Translation2d>translation).v.y, self.odo.pose.r)
 
-    def resetRotation(self, Rotation2d rotation not None):
+    def resetRotation(self, rotation: Rotation2d):
         """Reset the heading, keeping the position and the latest vision correction of
         the position; the history is cleared."""
+        check_type(rotation, Rotation2d, "rotation")
         self._check()
         self.odo.resetRotation(rotation)
-        self._clear_keeping_latest(False, 0.0, 0.0, rotation.r)
+        self._clear_keeping_latest(False, 0.0, 0.0, (<Rotation2d>rotation).r)
 
     cdef void _clear_keeping_latest(self, bint translation, double x, double y,
                                     rot2_t r) noexcept:
@@ -541,22 +546,26 @@ cdef class SwerveDrivePoseEstimator(_PoseEstimator):
     standard deviations of x (m), y (m) and heading (rad).
     """
 
-    def __init__(self, kinematics, Rotation2d gyroAngle not None,
-                 modulePositions, Pose2d initialPose not None,
+    def __init__(self, kinematics, gyroAngle: Rotation2d,
+                 modulePositions, initialPose: Pose2d,
                  stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(initialPose, Pose2d, "initialPose")
         self._start()
         odo = SwerveDriveOdometry(kinematics, gyroAngle, modulePositions, initialPose)
         self._init(odo, stateStdDevs, visionMeasurementStdDevs)
         self.swerve = odo
 
-    def update(self, Rotation2d gyroAngle not None, modulePositions):
+    def update(self, gyroAngle: Rotation2d, modulePositions):
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
         return self._at(clock_now(), gyroAngle, modulePositions)
 
-    def updateWithTime(self, double currentTime, Rotation2d gyroAngle not None,
+    def updateWithTime(self, double currentTime, gyroAngle: Rotation2d,
                        modulePositions):
         """Update the odometry with the gyro angle and module positions read at
         ``currentTime`` (s); return the new estimate (Pose2d, field frame, m)."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
         return self._at(currentTime, gyroAngle, modulePositions)
 
     cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object modulePositions):
@@ -569,10 +578,12 @@ cdef class SwerveDrivePoseEstimator(_PoseEstimator):
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, Rotation2d gyroAngle not None, modulePositions,
-                      Pose2d pose not None):
+    def resetPosition(self, gyroAngle: Rotation2d, modulePositions,
+                      pose: Pose2d):
         """Reset the odometry (gyro and module baselines, pose) and forget the history
         and every vision correction."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(pose, Pose2d, "pose")
         self._check()
         self.swerve.resetPosition(gyroAngle, modulePositions, pose)
         self._reset_done()
@@ -585,23 +596,30 @@ cdef class MecanumDrivePoseEstimator(_PoseEstimator):
     (rad).
     """
 
-    def __init__(self, kinematics, Rotation2d gyroAngle not None,
-                 MecanumDriveWheelPositions wheelPositions not None, Pose2d initialPose not None,
+    def __init__(self, kinematics, gyroAngle: Rotation2d,
+                 wheelPositions: MecanumDriveWheelPositions, initialPose: Pose2d,
                  stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.45, 0.45, 0.45)):
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
+        check_type(initialPose, Pose2d, "initialPose")
         self._start()
         odo = MecanumDriveOdometry(kinematics, gyroAngle, wheelPositions, initialPose)
         self._init(odo, stateStdDevs, visionMeasurementStdDevs)
         self.mecanum = odo
 
-    def update(self, Rotation2d gyroAngle not None,
-               MecanumDriveWheelPositions wheelPositions not None):
+    def update(self, gyroAngle: Rotation2d,
+               wheelPositions: MecanumDriveWheelPositions):
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
         return self._at(clock_now(), gyroAngle, wheelPositions)
 
-    def updateWithTime(self, double currentTime, Rotation2d gyroAngle not None,
-                       MecanumDriveWheelPositions wheelPositions not None):
+    def updateWithTime(self, double currentTime, gyroAngle: Rotation2d,
+                       wheelPositions: MecanumDriveWheelPositions):
         """Update the odometry with the gyro angle and wheel positions (m) read at
         ``currentTime`` (s); return the new estimate."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
         return self._at(currentTime, gyroAngle, wheelPositions)
 
     cdef Pose2d _at(self, double t, Rotation2d gyroAngle,
@@ -615,9 +633,12 @@ cdef class MecanumDrivePoseEstimator(_PoseEstimator):
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, Rotation2d gyroAngle not None,
-                      MecanumDriveWheelPositions wheelPositions not None, Pose2d pose not None):
+    def resetPosition(self, gyroAngle: Rotation2d,
+                      wheelPositions: MecanumDriveWheelPositions, pose: Pose2d):
         """Reset the odometry and forget the history and every vision correction."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
+        check_type(pose, Pose2d, "pose")
         self._check()
         self.mecanum.resetPosition(gyroAngle, wheelPositions, pose)
         self._reset_done()
@@ -653,23 +674,27 @@ cdef class DifferentialDrivePoseEstimator(_PoseEstimator):
     DifferentialDriveWheelPositions instead of the two distances.
     """
 
-    def __init__(self, Rotation2d gyroAngle not None, double leftDistance,
-                 double rightDistance, Pose2d initialPose not None,
+    def __init__(self, gyroAngle: Rotation2d, double leftDistance,
+                 double rightDistance, initialPose: Pose2d,
                  stateStdDevs=(0.02, 0.02, 0.01), visionMeasurementStdDevs=(0.1, 0.1, 0.1)):
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(initialPose, Pose2d, "initialPose")
         self._start()
         odo = DifferentialDriveOdometry(gyroAngle, leftDistance, rightDistance, initialPose)
         self._init(odo, stateStdDevs, visionMeasurementStdDevs)
         self.differential = odo
 
-    def update(self, Rotation2d gyroAngle not None, leftDistance, rightDistance=None):
+    def update(self, gyroAngle: Rotation2d, leftDistance, rightDistance=None):
         """update(gyroAngle, leftDistance, rightDistance) or update(gyroAngle,
         wheelPositions): updateWithTime at :meth:`MathSharedStore.getTimestamp`."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
         return self._at(clock_now(), gyroAngle, leftDistance, rightDistance)
 
-    def updateWithTime(self, double currentTime, Rotation2d gyroAngle not None, leftDistance,
+    def updateWithTime(self, double currentTime, gyroAngle: Rotation2d, leftDistance,
                        rightDistance=None):
         """Update the odometry with the gyro angle and the wheel distances (m) read at
         ``currentTime`` (s); return the new estimate."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
         return self._at(currentTime, gyroAngle, leftDistance, rightDistance)
 
     cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object leftDistance,
@@ -685,11 +710,12 @@ cdef class DifferentialDrivePoseEstimator(_PoseEstimator):
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, Rotation2d gyroAngle not None, leftDistance, rightDistance,
+    def resetPosition(self, gyroAngle: Rotation2d, leftDistance, rightDistance,
                       pose=None):
         """resetPosition(gyroAngle, leftDistance, rightDistance, pose) or
         resetPosition(gyroAngle, wheelPositions, pose): reset the odometry and forget the
         history and every vision correction."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
         cdef double l, r
         self._check()
         if pose is None:
@@ -709,22 +735,26 @@ cdef class TwoDeadWheelPoseEstimator(_PoseEstimator):
     """
 
     def __init__(self, double xWheelYPos, double yWheelXPos, double xWheelPos,
-                 double yWheelPos, Rotation2d gyroAngle not None, Pose2d initialPose not None,
+                 double yWheelPos, gyroAngle: Rotation2d, initialPose: Pose2d,
                  stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(initialPose, Pose2d, "initialPose")
         self._start()
         odo = TwoDeadWheelOdometry(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle,
                                    initialPose)
         self._init(odo, stateStdDevs, visionMeasurementStdDevs)
         self.two = odo
 
-    def update(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle not None):
+    def update(self, double xWheelPos, double yWheelPos, gyroAngle: Rotation2d):
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
         return self._at(clock_now(), xWheelPos, yWheelPos, gyroAngle)
 
     def updateWithTime(self, double currentTime, double xWheelPos, double yWheelPos,
-                       Rotation2d gyroAngle not None):
+                       gyroAngle: Rotation2d):
         """Update the odometry with the wheel distances (m) and gyro angle read at
         ``currentTime`` (s); return the new estimate."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
         return self._at(currentTime, xWheelPos, yWheelPos, gyroAngle)
 
     cdef Pose2d _at(self, double t, double xWheelPos, double yWheelPos, Rotation2d gyroAngle):
@@ -737,9 +767,11 @@ cdef class TwoDeadWheelPoseEstimator(_PoseEstimator):
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle not None,
-                      Pose2d pose not None):
+    def resetPosition(self, double xWheelPos, double yWheelPos, gyroAngle: Rotation2d,
+                      pose: Pose2d):
         """Reset the odometry and forget the history and every vision correction."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(pose, Pose2d, "pose")
         self._check()
         self.two.resetPosition(xWheelPos, yWheelPos, gyroAngle, pose)
         self._reset_done()
@@ -779,9 +811,10 @@ cdef class DeadWheelPoseEstimator(_PoseEstimator):
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, wheelPositions, gyroAngle, Pose2d pose not None):
+    def resetPosition(self, wheelPositions, gyroAngle, pose: Pose2d):
         """Reset the odometry (``gyroAngle`` None without a gyro) and forget the history
         and every vision correction."""
+        check_type(pose, Pose2d, "pose")
         self._check()
         self.dead.resetPosition(wheelPositions, gyroAngle, pose)
         self._reset_done()

@@ -11,7 +11,7 @@ from libc.math cimport M_PI, fabs, hypot
 import numpy as np
 
 from drivekin._core.types cimport pose2_t, rot2_t, twist2_t, vec2_t
-from drivekin._core.args cimport check_float64, is_number
+from drivekin._core.args cimport check_float64, check_type, is_number
 from drivekin._core.kernels cimport (
     feet_to_meters, pose, pose_interpolate, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
     rot_neg, rot_plus, rot_rad, rot_radians, rot_times, rot_xy, transform_inverse,
@@ -115,13 +115,17 @@ cdef class Translation2d:
         """Return the squared distance from the origin, m²."""
         return self.v.x * self.v.x + self.v.y * self.v.y
 
-    def getDistance(self, Translation2d other not None):
+    def getDistance(self, other: Translation2d):
         """Return the distance to ``other``, m."""
-        return hypot(other.v.x - self.v.x, other.v.y - self.v.y)
+        check_type(other, Translation2d, "other")
+        cdef vec2_t o = (<Translation2d>other).v
+        return hypot(o.x - self.v.x, o.y - self.v.y)
 
-    def getSquaredDistance(self, Translation2d other not None):
+    def getSquaredDistance(self, other: Translation2d):
         """Return the squared distance to ``other``, m²."""
-        cdef double dx = other.v.x - self.v.x, dy = other.v.y - self.v.y
+        check_type(other, Translation2d, "other")
+        cdef vec2_t o = (<Translation2d>other).v
+        cdef double dx = o.x - self.v.x, dy = o.y - self.v.y
         return dx * dx + dy * dy
 
     def getAngle(self):
@@ -131,22 +135,30 @@ cdef class Translation2d:
             return new_rotation(rot_xy(self.v.x, self.v.y))
         return None
 
-    def rotateBy(self, Rotation2d other not None):
+    def rotateBy(self, other: Rotation2d):
         """Return this vector rotated counter-clockwise by ``other`` about the origin."""
-        return new_translation(vec_rotate(self.v, other.r))
+        check_type(other, Rotation2d, "other")
+        return new_translation(vec_rotate(self.v, (<Rotation2d>other).r))
 
-    def rotateAround(self, Translation2d other not None, Rotation2d rot not None):
+    def rotateAround(self, other: Translation2d, rot: Rotation2d):
         """Return this point rotated by ``rot`` about the point ``other``."""
-        cdef vec2_t d = vec_rotate(vec(self.v.x - other.v.x, self.v.y - other.v.y), rot.r)
-        return new_translation(vec(d.x + other.v.x, d.y + other.v.y))
+        check_type(other, Translation2d, "other")
+        check_type(rot, Rotation2d, "rot")
+        cdef vec2_t o = (<Translation2d>other).v
+        cdef vec2_t d = vec_rotate(vec(self.v.x - o.x, self.v.y - o.y), (<Rotation2d>rot).r)
+        return new_translation(vec(d.x + o.x, d.y + o.y))
 
-    def plus(self, Translation2d other not None):
+    def plus(self, other: Translation2d):
         """Return the component-wise sum, m."""
-        return new_translation(vec(self.v.x + other.v.x, self.v.y + other.v.y))
+        check_type(other, Translation2d, "other")
+        cdef vec2_t o = (<Translation2d>other).v
+        return new_translation(vec(self.v.x + o.x, self.v.y + o.y))
 
-    def minus(self, Translation2d other not None):
+    def minus(self, other: Translation2d):
         """Return the component-wise difference, m."""
-        return new_translation(vec(self.v.x - other.v.x, self.v.y - other.v.y))
+        check_type(other, Translation2d, "other")
+        cdef vec2_t o = (<Translation2d>other).v
+        return new_translation(vec(self.v.x - o.x, self.v.y - o.y))
 
     def unaryMinus(self):
         """Return the vector pointing the other way."""
@@ -160,22 +172,28 @@ cdef class Translation2d:
         """Return the vector divided by ``scalar`` (no zero guard, as in WPILib)."""
         return new_translation(vec(self.v.x / scalar, self.v.y / scalar))
 
-    def dot(self, Translation2d other not None):
+    def dot(self, other: Translation2d):
         """Return the dot product, m²."""
-        return self.v.x * other.v.x + self.v.y * other.v.y
+        check_type(other, Translation2d, "other")
+        cdef vec2_t o = (<Translation2d>other).v
+        return self.v.x * o.x + self.v.y * o.y
 
-    def cross(self, Translation2d other not None):
+    def cross(self, other: Translation2d):
         """Return the z component of the cross product, m² (x·other.y − y·other.x)."""
-        return self.v.x * other.v.y - self.v.y * other.v.x
+        check_type(other, Translation2d, "other")
+        cdef vec2_t o = (<Translation2d>other).v
+        return self.v.x * o.y - self.v.y * o.x
 
     def nearest(self, translations):
         """Return the element of ``translations`` closest to this point (first on ties)."""
         return min(translations, key=self.getDistance)
 
-    def interpolate(self, Translation2d endValue not None, double t):
+    def interpolate(self, endValue: Translation2d, double t):
         """Return the linear interpolation towards ``endValue``; ``t`` is not clamped."""
-        return new_translation(vec(self.v.x + (endValue.v.x - self.v.x) * t,
-                                   self.v.y + (endValue.v.y - self.v.y) * t))
+        check_type(endValue, Translation2d, "endValue")
+        cdef vec2_t e = (<Translation2d>endValue).v
+        return new_translation(vec(self.v.x + (e.x - self.v.x) * t,
+                                   self.v.y + (e.y - self.v.y) * t))
 
     def toVector(self):
         """Return ``numpy.array([x, y])``."""
@@ -320,21 +338,25 @@ cdef class Rotation2d:
         """Return the tangent of the angle (sin / cos; ±inf or NaN at ±90°)."""
         return self.r.s / self.r.c
 
-    def rotateBy(self, Rotation2d other not None):
+    def rotateBy(self, other: Rotation2d):
         """Return this rotation followed by ``other`` (angles add)."""
-        return new_rotation(rot_plus(self.r, other.r))
+        check_type(other, Rotation2d, "other")
+        return new_rotation(rot_plus(self.r, (<Rotation2d>other).r))
 
-    def plus(self, Rotation2d other not None):
+    def plus(self, other: Rotation2d):
         """Same as :meth:`rotateBy`."""
-        return new_rotation(rot_plus(self.r, other.r))
+        check_type(other, Rotation2d, "other")
+        return new_rotation(rot_plus(self.r, (<Rotation2d>other).r))
 
-    def minus(self, Rotation2d other not None):
+    def minus(self, other: Rotation2d):
         """Return the rotation whose angle is this angle minus ``other``'s (wrapped)."""
-        return new_rotation(rot_minus(self.r, other.r))
+        check_type(other, Rotation2d, "other")
+        return new_rotation(rot_minus(self.r, (<Rotation2d>other).r))
 
-    def relativeTo(self, Rotation2d other not None):
+    def relativeTo(self, other: Rotation2d):
         """Return this rotation seen from ``other`` (same as :meth:`minus`)."""
-        return new_rotation(rot_minus(self.r, other.r))
+        check_type(other, Rotation2d, "other")
+        return new_rotation(rot_minus(self.r, (<Rotation2d>other).r))
 
     def unaryMinus(self):
         """Return the inverse rotation."""
@@ -349,10 +371,11 @@ cdef class Rotation2d:
         """Return ``times(1 / scalar)``."""
         return new_rotation(rot_times(self.r, 1.0 / scalar))
 
-    def interpolate(self, Rotation2d endValue not None, double t):
+    def interpolate(self, endValue: Rotation2d, double t):
         """Return ``self + (endValue − self) · t``, the short way round; ``t`` is not
         clamped (2027)."""
-        return new_rotation(rot_interp(self.r, endValue.r, t))
+        check_type(endValue, Rotation2d, "endValue")
+        return new_rotation(rot_interp(self.r, (<Rotation2d>endValue).r, t))
 
     def toMatrix(self):
         """Return the 2×2 rotation matrix ``[[cos, −sin], [sin, cos]]``."""
@@ -594,39 +617,52 @@ cdef class Pose2d(_Frame2d):
     cdef _Frame2d _new(self, pose2_t p):
         return new_pose(p)
 
-    def transformBy(self, Transform2d other not None):
+    def transformBy(self, other: Transform2d):
         """Return this pose moved by ``other``, expressed in this pose's frame."""
-        return new_pose(pose_transform_by(self.p, other.p))
+        check_type(other, Transform2d, "other")
+        return new_pose(pose_transform_by(self.p, (<Transform2d>other).p))
 
-    def plus(self, Transform2d other not None):
+    def plus(self, other: Transform2d):
         """Same as :meth:`transformBy`."""
-        return new_pose(pose_transform_by(self.p, other.p))
+        check_type(other, Transform2d, "other")
+        return new_pose(pose_transform_by(self.p, (<Transform2d>other).p))
 
-    def minus(self, Pose2d other not None):
+    def minus(self, other: Pose2d):
         """Return the Transform2d that maps ``other`` onto this pose."""
-        return new_transform(pose_relative_to(self.p, other.p))
+        check_type(other, Pose2d, "other")
+        return new_transform(pose_relative_to(self.p, (<Pose2d>other).p))
 
-    def relativeTo(self, Pose2d other not None):
+    def relativeTo(self, other: Pose2d):
         """Return this pose expressed in the frame of ``other``."""
-        return new_pose(pose_relative_to(self.p, other.p))
+        check_type(other, Pose2d, "other")
+        return new_pose(pose_relative_to(self.p, (<Pose2d>other).p))
 
-    def rotateBy(self, Rotation2d other not None):
+    def rotateBy(self, other: Rotation2d):
         """Return the pose rotated about the field origin (position and heading)."""
-        return new_pose(pose(vec_rotate(self.p.t, other.r), rot_plus(self.p.r, other.r)))
+        check_type(other, Rotation2d, "other")
+        cdef rot2_t r = (<Rotation2d>other).r
+        return new_pose(pose(vec_rotate(self.p.t, r), rot_plus(self.p.r, r)))
 
-    def rotateAround(self, Translation2d point not None, Rotation2d rot not None):
+    def rotateAround(self, point: Translation2d, rot: Rotation2d):
         """Return the pose rotated by ``rot`` about ``point``; the heading turns by ``rot``."""
-        cdef vec2_t d = vec_rotate(vec(self.p.t.x - point.v.x, self.p.t.y - point.v.y), rot.r)
-        return new_pose(pose(vec(d.x + point.v.x, d.y + point.v.y), rot_plus(self.p.r, rot.r)))
+        check_type(point, Translation2d, "point")
+        check_type(rot, Rotation2d, "rot")
+        cdef vec2_t c = (<Translation2d>point).v
+        cdef rot2_t r = (<Rotation2d>rot).r
+        cdef vec2_t d = vec_rotate(vec(self.p.t.x - c.x, self.p.t.y - c.y), r)
+        return new_pose(pose(vec(d.x + c.x, d.y + c.y), rot_plus(self.p.r, r)))
 
-    def exp(self, Twist2d twist not None):
+    def exp(self, twist: Twist2d):
         """Return ``self.plus(twist.exp())`` in one call (the WPILib 2026 ``Pose2d.exp``;
         2027 spells it ``pose.plus(twist.exp())`` and both give the same numbers)."""
-        return new_pose(pose_transform_by(self.p, twist_exp(twist.t.dx, twist.t.dy, twist.t.dtheta)))
+        check_type(twist, Twist2d, "twist")
+        cdef twist2_t tw = (<Twist2d>twist).t
+        return new_pose(pose_transform_by(self.p, twist_exp(tw.dx, tw.dy, tw.dtheta)))
 
-    def log(self, Pose2d end not None):
+    def log(self, end: Pose2d):
         """Return ``end.minus(self).log()`` (the WPILib 2026 ``Pose2d.log``)."""
-        cdef twist2_t tw = transform_log(pose_relative_to(end.p, self.p))
+        check_type(end, Pose2d, "end")
+        cdef twist2_t tw = transform_log(pose_relative_to((<Pose2d>end).p, self.p))
         return new_twist(tw.dx, tw.dy, tw.dtheta)
 
     def nearest(self, poses):
@@ -647,15 +683,16 @@ cdef class Pose2d(_Frame2d):
             raise ValueError("nearest() of an empty sequence")
         return best
 
-    def interpolate(self, Pose2d endValue not None, double t):
+    def interpolate(self, endValue: Pose2d, double t):
         """Interpolate along the constant-curvature arc to ``endValue``.
 
         ``t < 0`` returns this pose and ``t ≥ 1`` returns ``endValue`` (WPILib's clamp)."""
+        check_type(endValue, Pose2d, "endValue")
         if t < 0.0:
             return self
         if t >= 1.0:
             return endValue
-        return new_pose(pose_interpolate(self.p, endValue.p, t))
+        return new_pose(pose_interpolate(self.p, (<Pose2d>endValue).p, t))
 
     def __add__(self, other):
         if isinstance(other, Transform2d):
@@ -710,9 +747,10 @@ cdef class Transform2d(_Frame2d):
         """Return the transform that undoes this one."""
         return new_transform(transform_inverse(self.p))
 
-    def plus(self, Transform2d other not None):
+    def plus(self, other: Transform2d):
         """Return this transform followed by ``other``."""
-        return new_transform(pose_transform_by(self.p, other.p))
+        check_type(other, Transform2d, "other")
+        return new_transform(pose_transform_by(self.p, (<Transform2d>other).p))
 
     def log(self):
         """Return the Twist2d whose :meth:`Twist2d.exp` is this transform (the

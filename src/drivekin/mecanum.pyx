@@ -11,6 +11,7 @@ from libc.math cimport isfinite
 import numpy as np
 
 from drivekin._core.types cimport vec2_t
+from drivekin._core.args cimport check_type
 from drivekin._core.wheels cimport _WheelValues, install_bare_new
 from drivekin._core.kernels cimport clamp01, feet_to_meters, mat_vec, vec, vec_eq, wheels_desaturate
 from drivekin.geometry cimport Translation2d, new_twist
@@ -112,9 +113,10 @@ cdef class MecanumDriveWheelVelocities(_Wheel4):
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
         wheels_desaturate(4, self.w, attainableMaxSpeed, self.w)
 
-    def interpolate(self, MecanumDriveWheelVelocities endValue not None, double t):
+    def interpolate(self, endValue: MecanumDriveWheelVelocities, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        return self._lerp(endValue, clamp01(t))
+        check_type(endValue, MecanumDriveWheelVelocities, "endValue")
+        return self._lerp(<_WheelValues>endValue, clamp01(t))
 
     def __str__(self):
         return self._fmt(LABELS, "m/s")
@@ -136,9 +138,10 @@ cdef class MecanumDriveWheelPositions(_Wheel4):
         o.w = self.w
         return o
 
-    def interpolate(self, MecanumDriveWheelPositions endValue not None, double t):
+    def interpolate(self, endValue: MecanumDriveWheelPositions, double t):
         """Linear interpolation; ``t`` is not clamped."""
-        return self._lerp(endValue, t)
+        check_type(endValue, MecanumDriveWheelPositions, "endValue")
+        return self._lerp(<_WheelValues>endValue, t)
 
     def __eq__(self, other):
         if type(other) is MecanumDriveWheelPositions:
@@ -160,9 +163,10 @@ cdef class MecanumDriveWheelAccelerations(_Wheel4):
     cdef _WheelValues _new(self):
         return blank4(MecanumDriveWheelAccelerations.__new__(MecanumDriveWheelAccelerations))
 
-    def interpolate(self, MecanumDriveWheelAccelerations endValue not None, double t):
+    def interpolate(self, endValue: MecanumDriveWheelAccelerations, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        return self._lerp(endValue, clamp01(t))
+        check_type(endValue, MecanumDriveWheelAccelerations, "endValue")
+        return self._lerp(<_WheelValues>endValue, clamp01(t))
 
     def __str__(self):
         return self._fmt(LABELS, "m/s²")
@@ -194,8 +198,12 @@ cdef class MecanumDriveKinematics(Drivetrain):
     inverse rows and stays in effect until a different one is passed (within 1e-9 m).
     """
 
-    def __init__(self, Translation2d frontLeftWheel not None, Translation2d frontRightWheel not None,
-                 Translation2d rearLeftWheel not None, Translation2d rearRightWheel not None):
+    def __init__(self, frontLeftWheel: Translation2d, frontRightWheel: Translation2d,
+                 rearLeftWheel: Translation2d, rearRightWheel: Translation2d):
+        check_type(frontLeftWheel, Translation2d, "frontLeftWheel")
+        check_type(frontRightWheel, Translation2d, "frontRightWheel")
+        check_type(rearLeftWheel, Translation2d, "rearLeftWheel")
+        check_type(rearRightWheel, Translation2d, "rearRightWheel")
         cdef Py_ssize_t i
         cdef Translation2d t
         cdef double wx[4]
@@ -206,7 +214,7 @@ cdef class MecanumDriveKinematics(Drivetrain):
             raise TypeError("MecanumDriveKinematics is already initialised: __init__ cannot "
                             "be called again")
         for i in range(4):
-            t = wheels[i]
+            t = <Translation2d>wheels[i]
             if not (isfinite(t.v.x) and isfinite(t.v.y)):
                 raise ValueError(f"wheel {i} position must be finite (m), got {t!r}")
             wx[i] = t.v.x
@@ -297,33 +305,40 @@ cdef class MecanumDriveKinematics(Drivetrain):
         self._ready()
         return self.wheels[3]
 
-    def toWheelVelocities(self, ChassisVelocities chassisVelocities not None,
+    def toWheelVelocities(self, chassisVelocities: ChassisVelocities,
                           centerOfRotation=ORIGIN):
         """Return the wheel velocities (m/s) for a robot-relative chassis velocity,
         rotating about ``centerOfRotation`` (robot frame, m). Not desaturated."""
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
         cdef _WheelValues out = blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
-        self._inverse(&chassisVelocities.v.x, centerOfRotation, out.w)
+        self._inverse(&(<ChassisVelocities>chassisVelocities).v.x, centerOfRotation, out.w)
         return out
 
-    def toWheelVelocitiesInto(self, ChassisVelocities chassisVelocities not None,
-                              MecanumDriveWheelVelocities out not None, centerOfRotation=ORIGIN):
+    def toWheelVelocitiesInto(self, chassisVelocities: ChassisVelocities,
+                              out: MecanumDriveWheelVelocities, centerOfRotation=ORIGIN):
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
-        self._inverse(&chassisVelocities.v.x, centerOfRotation, (<_WheelValues>out).w)
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(out, MecanumDriveWheelVelocities, "out")
+        self._inverse(&(<ChassisVelocities>chassisVelocities).v.x, centerOfRotation,
+                      (<_WheelValues>out).w)
 
-    def toChassisVelocities(self, MecanumDriveWheelVelocities wheelVelocities not None):
+    def toChassisVelocities(self, wheelVelocities: MecanumDriveWheelVelocities):
         """Return the least-squares robot velocity for measured wheel velocities."""
+        check_type(wheelVelocities, MecanumDriveWheelVelocities, "wheelVelocities")
         self._ready()
         cdef ChassisVelocities out = new_chassis_velocities(0.0, 0.0, 0.0)
         mat_vec(3, 4, self.f, (<_WheelValues>wheelVelocities).w, &out.v.x)
         return out
 
-    def toChassisVelocitiesInto(self, MecanumDriveWheelVelocities wheelVelocities not None,
-                                ChassisVelocities out not None):
+    def toChassisVelocitiesInto(self, wheelVelocities: MecanumDriveWheelVelocities,
+                                out: ChassisVelocities):
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
+        check_type(wheelVelocities, MecanumDriveWheelVelocities, "wheelVelocities")
+        check_type(out, ChassisVelocities, "out")
         self._ready()
-        mat_vec(3, 4, self.f, (<_WheelValues>wheelVelocities).w, &out.v.x)
+        mat_vec(3, 4, self.f, (<_WheelValues>wheelVelocities).w, &(<ChassisVelocities>out).v.x)
 
-    def toTwist2d(self, MecanumDriveWheelPositions start not None, end=None):
+    def toTwist2d(self, start: MecanumDriveWheelPositions, end=None):
         """toTwist2d(wheelDeltas) or toTwist2d(start, end)
 
         Return the Twist2d (m, rad) for wheel distance changes, either given directly or
@@ -331,6 +346,7 @@ cdef class MecanumDriveKinematics(Drivetrain):
         cdef double d[4]
         cdef double r[3]
         cdef Py_ssize_t i
+        check_type(start, MecanumDriveWheelPositions, "start")
         self._ready()
         if end is None:
             d = (<_WheelValues>start).w
@@ -342,35 +358,42 @@ cdef class MecanumDriveKinematics(Drivetrain):
         mat_vec(3, 4, self.f, d, r)
         return new_twist(r[0], r[1], r[2])
 
-    def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None,
+    def toWheelAccelerations(self, chassisAccelerations: ChassisAccelerations,
                              centerOfRotation=ORIGIN):
         """Return the wheel accelerations (m/s²) for a chassis acceleration; the same
         matrix as for velocities (no centripetal term, as in WPILib)."""
+        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
         cdef _WheelValues out = blank4(MecanumDriveWheelAccelerations.__new__(MecanumDriveWheelAccelerations))
-        self._inverse(&chassisAccelerations.v.x, centerOfRotation, out.w)
+        self._inverse(&(<ChassisAccelerations>chassisAccelerations).v.x, centerOfRotation, out.w)
         return out
 
-    def toChassisAccelerations(self, MecanumDriveWheelAccelerations wheelAccelerations not None):
+    def toChassisAccelerations(self, wheelAccelerations: MecanumDriveWheelAccelerations):
         """Return the least-squares chassis acceleration for wheel accelerations."""
         cdef double r[3]
+        check_type(wheelAccelerations, MecanumDriveWheelAccelerations, "wheelAccelerations")
         self._ready()
         mat_vec(3, 4, self.f, (<_WheelValues>wheelAccelerations).w, r)
         return ChassisAccelerations(r[0], r[1], r[2])
 
-    def interpolate(self, MecanumDriveWheelPositions startValue not None,
-                    MecanumDriveWheelPositions endValue not None, double t):
+    def interpolate(self, startValue: MecanumDriveWheelPositions,
+                    endValue: MecanumDriveWheelPositions, double t):
         """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+        check_type(startValue, MecanumDriveWheelPositions, "startValue")
+        check_type(endValue, MecanumDriveWheelPositions, "endValue")
         self._ready()
         return startValue.interpolate(endValue, t)
 
-    def copy(self, MecanumDriveWheelPositions positions not None):
+    def copy(self, positions: MecanumDriveWheelPositions):
         """Return an independent copy of ``positions``."""
+        check_type(positions, MecanumDriveWheelPositions, "positions")
         self._ready()
         return positions.copy()
 
-    def copyInto(self, MecanumDriveWheelPositions positions not None,
-                 MecanumDriveWheelPositions output not None):
+    def copyInto(self, positions: MecanumDriveWheelPositions,
+                 output: MecanumDriveWheelPositions):
         """Copy ``positions`` into ``output``."""
+        check_type(positions, MecanumDriveWheelPositions, "positions")
+        check_type(output, MecanumDriveWheelPositions, "output")
         self._ready()
         (<_WheelValues>output).w = (<_WheelValues>positions).w
 

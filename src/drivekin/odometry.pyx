@@ -12,6 +12,7 @@ from libc.math cimport isfinite
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 
 from drivekin._core.types cimport pose2_t, rot2_t
+from drivekin._core.args cimport check_type
 from drivekin._core.wheels cimport _WheelValues
 from drivekin._core.kernels cimport (deadwheel_solve, forward_solve, forward_solve_many,
                                      gyro_turn, mat_vec,
@@ -53,24 +54,27 @@ cdef class _Odometry:
             uninitialised(self)
         return new_pose(self.pose)
 
-    def resetPose(self, Pose2d pose not None):
+    def resetPose(self, pose: Pose2d):
         """Set the pose; the gyro and wheel baselines are left as they are."""
+        check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self.pose = pose.p
+        self.pose = (<Pose2d>pose).p
 
-    def resetTranslation(self, Translation2d translation not None):
+    def resetTranslation(self, translation: Translation2d):
         """Set the position and keep the heading."""
+        check_type(translation, Translation2d, "translation")
         if not self.ready:
             uninitialised(self)
-        self.pose.t = translation.v
+        self.pose.t = (<Translation2d>translation).v
 
-    def resetRotation(self, Rotation2d rotation not None):
+    def resetRotation(self, rotation: Rotation2d):
         """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
         here that makes the next update report a wrong heading; drivekin does not.)"""
+        check_type(rotation, Rotation2d, "rotation")
         if not self.ready:
             uninitialised(self)
-        self.pose.r = rotation.r
+        self.pose.r = (<Rotation2d>rotation).r
 
     cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
                        double* dth, double* mxy, double* scratch) noexcept nogil:
@@ -87,45 +91,51 @@ cdef class SwerveDriveOdometry(_Odometry):
     def __cinit__(self, *args, **kwargs):
         self.prev = NULL
 
-    def __init__(self, SwerveDriveKinematics kinematics not None, Rotation2d gyroAngle not None,
+    def __init__(self, kinematics: SwerveDriveKinematics, gyroAngle: Rotation2d,
                  modulePositions, initialPose=None):
         cdef Py_ssize_t i
+        check_type(kinematics, SwerveDriveKinematics, "kinematics")
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        cdef SwerveDriveKinematics kin = <SwerveDriveKinematics>kinematics
         self._start_init()
         cdef pose2_t p = initial(initialPose)
-        kinematics._read(modulePositions, SwerveModulePosition, "modulePositions")
+        kin._read(modulePositions, SwerveModulePosition, "modulePositions")
         self._start_init()      # again: reading an iterable ran Python code
-        cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kinematics.n)
+        cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kin.n)
         if prev == NULL:
             raise MemoryError()
-        for i in range(kinematics.n):
-            prev[i] = kinematics.s0[i]
+        for i in range(kin.n):
+            prev[i] = kin.s0[i]
         self.prev = prev
-        self.kin = kinematics
-        self.width = kinematics.n
+        self.kin = kin
+        self.width = kin.n
         self.steered = True
         self.gyro = True
-        self.prev_gyro = gyroAngle.r
+        self.prev_gyro = (<Rotation2d>gyroAngle).r
         self.pose = p
         self.ready = True
 
     def __dealloc__(self):
         PyMem_Free(self.prev)
 
-    def resetPosition(self, Rotation2d gyroAngle not None, modulePositions, Pose2d pose not None):
+    def resetPosition(self, gyroAngle: Rotation2d, modulePositions, pose: Pose2d):
         """Reset the pose, the gyro baseline and the module-position baseline."""
         cdef Py_ssize_t i
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
         self.kin._read(modulePositions, SwerveModulePosition, "modulePositions")
         for i in range(self.kin.n):
             self.prev[i] = self.kin.s0[i]
-        self.prev_gyro = gyroAngle.r
-        self.pose = pose.p
+        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.pose = (<Pose2d>pose).p
 
-    def update(self, Rotation2d gyroAngle not None, modulePositions):
+    def update(self, gyroAngle: Rotation2d, modulePositions):
         """Integrate the module-distance changes since the last call (at the current module
         angles) and the gyro change; return the new pose."""
-        self._step(gyroAngle, modulePositions)
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        self._step(<Rotation2d>gyroAngle, modulePositions)
         return new_pose(self.pose)
 
     cdef int _step(self, Rotation2d gyroAngle, object modulePositions) except -1:
@@ -170,32 +180,40 @@ cdef class MecanumDriveOdometry(_Odometry):
     Tracks a mecanum robot's pose from MecanumDriveWheelPositions (m) and a gyro angle.
     """
 
-    def __init__(self, MecanumDriveKinematics kinematics not None, Rotation2d gyroAngle not None,
-                 MecanumDriveWheelPositions wheelPositions not None, initialPose=None):
+    def __init__(self, kinematics: MecanumDriveKinematics, gyroAngle: Rotation2d,
+                 wheelPositions: MecanumDriveWheelPositions, initialPose=None):
+        check_type(kinematics, MecanumDriveKinematics, "kinematics")
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
         self._start_init()
-        kinematics._ready()
+        (<MecanumDriveKinematics>kinematics)._ready()
         self.pose = initial(initialPose)
-        self.kin = kinematics
+        self.kin = <MecanumDriveKinematics>kinematics
         self.prev = (<_WheelValues>wheelPositions).w
         self.width = 4
         self.gyro = True
-        self.prev_gyro = gyroAngle.r
+        self.prev_gyro = (<Rotation2d>gyroAngle).r
         self.ready = True
 
-    def resetPosition(self, Rotation2d gyroAngle not None,
-                      MecanumDriveWheelPositions wheelPositions not None, Pose2d pose not None):
+    def resetPosition(self, gyroAngle: Rotation2d,
+                      wheelPositions: MecanumDriveWheelPositions, pose: Pose2d):
         """Reset the pose, the gyro baseline and the wheel-position baseline."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
+        check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
         self.prev = (<_WheelValues>wheelPositions).w
-        self.prev_gyro = gyroAngle.r
-        self.pose = pose.p
+        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.pose = (<Pose2d>pose).p
 
-    def update(self, Rotation2d gyroAngle not None,
-               MecanumDriveWheelPositions wheelPositions not None):
+    def update(self, gyroAngle: Rotation2d,
+               wheelPositions: MecanumDriveWheelPositions):
         """Integrate the wheel-distance changes since the last call and the gyro change;
         return the new pose."""
-        self._step(gyroAngle, wheelPositions)
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
+        self._step(<Rotation2d>gyroAngle, <MecanumDriveWheelPositions>wheelPositions)
         return new_pose(self.pose)
 
     cdef int _step(self, Rotation2d gyroAngle, MecanumDriveWheelPositions wheelPositions) except -1:
@@ -232,31 +250,35 @@ cdef class DifferentialDriveOdometry(_Odometry):
     and a gyro angle. No trackwidth is needed: the heading comes from the gyro.
     """
 
-    def __init__(self, Rotation2d gyroAngle not None, double leftDistance, double rightDistance,
+    def __init__(self, gyroAngle: Rotation2d, double leftDistance, double rightDistance,
                  initialPose=None):
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
         self._start_init()
         self.pose = initial(initialPose)
         self.prev_l = leftDistance
         self.prev_r = rightDistance
         self.width = 2
         self.gyro = True
-        self.prev_gyro = gyroAngle.r
+        self.prev_gyro = (<Rotation2d>gyroAngle).r
         self.ready = True
 
-    def resetPosition(self, Rotation2d gyroAngle not None, double leftDistance,
-                      double rightDistance, Pose2d pose not None):
+    def resetPosition(self, gyroAngle: Rotation2d, double leftDistance,
+                      double rightDistance, pose: Pose2d):
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
         self.prev_l = leftDistance
         self.prev_r = rightDistance
-        self.prev_gyro = gyroAngle.r
-        self.pose = pose.p
+        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.pose = (<Pose2d>pose).p
 
-    def update(self, Rotation2d gyroAngle not None, double leftDistance, double rightDistance):
+    def update(self, gyroAngle: Rotation2d, double leftDistance, double rightDistance):
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
-        self._step(gyroAngle, leftDistance, rightDistance)
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        self._step(<Rotation2d>gyroAngle, leftDistance, rightDistance)
         return new_pose(self.pose)
 
     cdef int _step(self, Rotation2d gyroAngle, double leftDistance,
@@ -299,7 +321,8 @@ cdef class TwoDeadWheelOdometry(_Odometry):
     """
 
     def __init__(self, double xWheelYPos, double yWheelXPos, double xWheelPos,
-                 double yWheelPos, Rotation2d gyroAngle not None, initialPose=None):
+                 double yWheelPos, gyroAngle: Rotation2d, initialPose=None):
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
         self._start_init()
         if not (isfinite(xWheelYPos) and isfinite(yWheelXPos)):
             raise ValueError(f"wheel offsets must be finite (m), got xWheelYPos="
@@ -311,23 +334,26 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         self.prev_y = yWheelPos
         self.width = 2
         self.gyro = True
-        self.prev_gyro = gyroAngle.r
+        self.prev_gyro = (<Rotation2d>gyroAngle).r
         self.ready = True
 
-    def resetPosition(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle not None,
-                      Pose2d pose not None):
+    def resetPosition(self, double xWheelPos, double yWheelPos, gyroAngle: Rotation2d,
+                      pose: Pose2d):
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
         self.prev_x = xWheelPos
         self.prev_y = yWheelPos
-        self.prev_gyro = gyroAngle.r
-        self.pose = pose.p
+        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.pose = (<Pose2d>pose).p
 
-    def update(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle not None):
+    def update(self, double xWheelPos, double yWheelPos, gyroAngle: Rotation2d):
         """Integrate the wheel-distance changes (m) since the last call and the gyro
         change; return the new pose."""
-        self._step(xWheelPos, yWheelPos, gyroAngle)
+        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        self._step(xWheelPos, yWheelPos, <Rotation2d>gyroAngle)
         return new_pose(self.pose)
 
     cdef int _step(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle) except -1:
@@ -382,27 +408,29 @@ cdef class DeadWheelOdometry(_Odometry):
     def __cinit__(self, *args, **kwargs):
         self.prev = NULL
 
-    def __init__(self, DeadWheelKinematics kinematics not None, wheelPositions,
+    def __init__(self, kinematics: DeadWheelKinematics, wheelPositions,
                  gyroAngle=None, initialPose=None):
+        check_type(kinematics, DeadWheelKinematics, "kinematics")
+        cdef DeadWheelKinematics kin = <DeadWheelKinematics>kinematics
         self._start_init()
-        kinematics._ready()
+        kin._ready()
         if gyroAngle is None:
-            if not kinematics.heading:
-                kinematics._need_heading("DeadWheelOdometry")
+            if not kin.heading:
+                kin._need_heading("DeadWheelOdometry")
         elif not isinstance(gyroAngle, Rotation2d):
             raise TypeError(f"gyroAngle must be a Rotation2d or None, got {type_name(gyroAngle)}")
         cdef pose2_t p = initial(initialPose)
-        cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kinematics.n)
+        cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kin.n)
         if prev == NULL:
             raise MemoryError()
         try:
-            kinematics._read(wheelPositions, prev, "wheelPositions")
+            kin._read(wheelPositions, prev, "wheelPositions")
         except BaseException:
             PyMem_Free(prev)
             raise
         self.prev = prev
-        self.kin = kinematics
-        self.width = kinematics.n
+        self.kin = kin
+        self.width = kin.n
         self.gyro = gyroAngle is not None
         if self.gyro:
             self.prev_gyro = (<Rotation2d>gyroAngle).r
@@ -422,10 +450,11 @@ cdef class DeadWheelOdometry(_Odometry):
                              "gyro, so gyroAngle must be None")
         return 0
 
-    def resetPosition(self, wheelPositions, gyroAngle, Pose2d pose not None):
+    def resetPosition(self, wheelPositions, gyroAngle, pose: Pose2d):
         """Reset the pose, the wheel-position baselines and (with a gyro) the gyro
         baseline; pass ``gyroAngle=None`` for an odometry without a gyro."""
         cdef Py_ssize_t i
+        check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
         self._gyro_arg(gyroAngle, "resetPosition")
@@ -434,7 +463,7 @@ cdef class DeadWheelOdometry(_Odometry):
             self.prev[i] = self.kin.s[i]
         if self.gyro:
             self.prev_gyro = (<Rotation2d>gyroAngle).r
-        self.pose = pose.p
+        self.pose = (<Pose2d>pose).p
 
     def update(self, wheelPositions, gyroAngle=None):
         """Integrate the wheel-distance changes (m) since the last call (and the gyro

@@ -20,7 +20,7 @@ from libc.string cimport memcpy
 import numpy as np
 
 from drivekin._core.types cimport desat_t, rot2_t, vec2_t
-from drivekin._core.args cimport as_fast, exact_type, float64_data, is_number, snapshot
+from drivekin._core.args cimport as_fast, check_type, exact_type, float64_data, is_number, snapshot
 from drivekin._core.kernels cimport (
     clamp01, desaturate_factors, forward_solve, java_equals, jmax, max_abs, rot_eq,
     rot_interp, rot_minus, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
@@ -81,15 +81,15 @@ cdef class _ModuleVector:
         return new_rotation(self.a)
 
     @angle.setter
-    def angle(self, Rotation2d value not None):
-        self.a = value.r
+    def angle(self, value: Rotation2d):
+        check_type(value, Rotation2d, "angle")
+        self.a = (<Rotation2d>value).r
 
-    def compareTo(self, _ModuleVector other not None):
+    def compareTo(self, other: _ModuleVector):
         """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
         must be of the same class."""
-        if type(other) is not type(self):
-            raise TypeError(f"expected a {type(self).__name__}, got {type_name(other)}")
-        cdef double a = self.m, b = other.m
+        check_type(other, type(self), "other")
+        cdef double a = self.m, b = (<_ModuleVector>other).m
         if a < b:
             return -1
         if a > b:
@@ -152,33 +152,39 @@ cdef class SwerveModuleVelocity(_ModuleVector):
     def velocity(self, double value):
         self.m = value
 
-    def optimize(self, Rotation2d currentAngle not None):
+    def optimize(self, currentAngle: Rotation2d):
         """Return the equivalent velocity that turns the module by at most 90°.
 
         If the target angle is more than 90° from ``currentAngle``, the result drives the
         wheel backwards at the angle + 180°. Returns a new object (2027)."""
+        check_type(currentAngle, Rotation2d, "currentAngle")
         cdef SwerveModuleVelocity out = new_module_velocity(self.m, self.a)
-        optimize_into(self, currentAngle.r, out)
+        optimize_into(self, (<Rotation2d>currentAngle).r, out)
         return out
 
-    def optimizeInPlace(self, Rotation2d currentAngle not None):
+    def optimizeInPlace(self, currentAngle: Rotation2d):
         """Allocation-free :meth:`optimize`: update this object (the WPILib 2026
         behaviour). Returns None."""
-        optimize_into(self, currentAngle.r, self)
+        check_type(currentAngle, Rotation2d, "currentAngle")
+        optimize_into(self, (<Rotation2d>currentAngle).r, self)
 
-    def cosineScale(self, Rotation2d currentAngle not None):
+    def cosineScale(self, currentAngle: Rotation2d):
         """Return the velocity scaled by cos(angle − currentAngle), so a module that is
         still turning does not push sideways. Returns a new object (2027)."""
-        return new_module_velocity(self.m * rot_minus(self.a, currentAngle.r).c, self.a)
+        check_type(currentAngle, Rotation2d, "currentAngle")
+        return new_module_velocity(self.m * rot_minus(self.a, (<Rotation2d>currentAngle).r).c,
+                                   self.a)
 
-    def cosineScaleInPlace(self, Rotation2d currentAngle not None):
+    def cosineScaleInPlace(self, currentAngle: Rotation2d):
         """Allocation-free :meth:`cosineScale`: update this object. Returns None."""
-        self.m = self.m * rot_minus(self.a, currentAngle.r).c
+        check_type(currentAngle, Rotation2d, "currentAngle")
+        self.m = self.m * rot_minus(self.a, (<Rotation2d>currentAngle).r).c
 
-    def interpolate(self, SwerveModuleVelocity endValue not None, double t):
+    def interpolate(self, endValue: SwerveModuleVelocity, double t):
         """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
         [0, 1]."""
-        return self._lerp(endValue, clamp01(t))
+        check_type(endValue, SwerveModuleVelocity, "endValue")
+        return self._lerp(<_ModuleVector>endValue, clamp01(t))
 
     def __repr__(self):
         return f"SwerveModuleVelocity({self.m!r}, {new_rotation(self.a)!r})"
@@ -214,9 +220,10 @@ cdef class SwerveModulePosition(_ModuleVector):
         """Return an independent copy."""
         return new_module_position(self.m, self.a)
 
-    def interpolate(self, SwerveModulePosition endValue not None, double t):
+    def interpolate(self, endValue: SwerveModulePosition, double t):
         """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
-        return self._lerp(endValue, t)
+        check_type(endValue, SwerveModulePosition, "endValue")
+        return self._lerp(<_ModuleVector>endValue, t)
 
     def __repr__(self):
         return f"SwerveModulePosition({self.m!r}, {new_rotation(self.a)!r})"
@@ -251,10 +258,11 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
     def acceleration(self, double value):
         self.m = value
 
-    def interpolate(self, SwerveModuleAcceleration endValue not None, double t):
+    def interpolate(self, endValue: SwerveModuleAcceleration, double t):
         """Interpolate the magnitude linearly and the angle the short way; ``t`` is
         clamped to [0, 1]."""
-        return self._lerp(endValue, clamp01(t))
+        check_type(endValue, SwerveModuleAcceleration, "endValue")
+        return self._lerp(<_ModuleVector>endValue, clamp01(t))
 
     def __repr__(self):
         return f"SwerveModuleAcceleration({self.m!r}, {new_rotation(self.a)!r})"
@@ -566,37 +574,42 @@ cdef class SwerveDriveKinematics(Drivetrain):
                   self.s0, self.s1, self.s2)
         return 0
 
-    def toSwerveModuleVelocities(self, ChassisVelocities chassisVelocities not None,
-                                 Translation2d centerOfRotation not None=ORIGIN):
+    def toSwerveModuleVelocities(self, chassisVelocities: ChassisVelocities,
+                                 centerOfRotation: Translation2d = ORIGIN):
         """Return the N module velocities (tuple of SwerveModuleVelocity) that produce
         ``chassisVelocities`` (robot-relative, m/s and rad/s), rotating about
         ``centerOfRotation`` (robot frame, m). Module speeds are ≥ 0; the angles follow the
         heading-memory rules in the class docstring. Not desaturated."""
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(centerOfRotation, Translation2d, "centerOfRotation")
         self._ready()
         cdef object t = new_modules(self.n, SwerveModuleVelocity)
-        self._ik(chassisVelocities, centerOfRotation)
+        self._ik(<ChassisVelocities>chassisVelocities, <Translation2d>centerOfRotation)
         store_modules(t, NULL, self.n, self.s0, self.s1, self.s2)
         return t
 
-    def toWheelVelocities(self, ChassisVelocities chassisVelocities not None):
+    def toWheelVelocities(self, chassisVelocities: ChassisVelocities):
         """Same as :meth:`toSwerveModuleVelocities` about the robot origin."""
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
         self._ready()
         cdef object t = new_modules(self.n, SwerveModuleVelocity)
-        self._ik(chassisVelocities, ORIGIN)
+        self._ik(<ChassisVelocities>chassisVelocities, ORIGIN)
         store_modules(t, NULL, self.n, self.s0, self.s1, self.s2)
         return t
 
-    def toSwerveModuleVelocitiesInto(self, ChassisVelocities chassisVelocities not None, out,
-                                     Translation2d centerOfRotation not None=ORIGIN):
+    def toSwerveModuleVelocitiesInto(self, chassisVelocities: ChassisVelocities, out,
+                                     centerOfRotation: Translation2d = ORIGIN):
         """Allocation-free :meth:`toSwerveModuleVelocities`.
 
         ``out`` is either a list/tuple of N SwerveModuleVelocity objects, updated in place,
         or a float64 C-contiguous writeable numpy array of shape (N, 2) that receives
         ``[velocity m/s, angle rad]`` per module. Returns None."""
         cdef double* d
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(centerOfRotation, Translation2d, "centerOfRotation")
         self._ready()
         cdef object fast = out_modules(out, self.n, SwerveModuleVelocity, "out", &d)
-        self._ik(chassisVelocities, centerOfRotation)
+        self._ik(<ChassisVelocities>chassisVelocities, <Translation2d>centerOfRotation)
         store_modules(fast, d, self.n, self.s0, self.s1, self.s2)
 
     cdef int _read(self, object states, type cls, str what) except -1:
@@ -637,12 +650,14 @@ cdef class SwerveDriveKinematics(Drivetrain):
         forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
         return new_chassis_velocities(r[0], r[1], r[2])
 
-    def toChassisVelocitiesInto(self, moduleVelocities, ChassisVelocities out not None):
+    def toChassisVelocitiesInto(self, moduleVelocities, out: ChassisVelocities):
         """Allocation-free :meth:`toChassisVelocities`: ``moduleVelocities`` is a sequence
         of N SwerveModuleVelocity or an (N, 2) float64 array ``[velocity m/s, angle rad]``;
         the result is written into ``out``. Returns None."""
+        check_type(out, ChassisVelocities, "out")
         self._read(moduleVelocities, SwerveModuleVelocity, "moduleVelocities")
-        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, &out.v.x)
+        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2,
+                      &(<ChassisVelocities>out).v.x)
 
     def toTwist2d(self, first, *more):
         """toTwist2d(*moduleDeltas) or toTwist2d(start, end)
@@ -682,11 +697,12 @@ cdef class SwerveDriveKinematics(Drivetrain):
             self.s2[i] = q.a.s
         return 0
 
-    def toTwist2dInto(self, moduleDeltas, Twist2d out not None):
+    def toTwist2dInto(self, moduleDeltas, out: Twist2d):
         """Allocation-free :meth:`toTwist2d` for N deltas (SwerveModulePosition objects or an
         (N, 2) float64 array ``[distance m, angle rad]``), written into ``out``."""
+        check_type(out, Twist2d, "out")
         self._read(moduleDeltas, SwerveModulePosition, "moduleDeltas")
-        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, &out.t.dx)
+        forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, &(<Twist2d>out).t.dx)
 
     def interpolate(self, startValue, endValue, double t):
         """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
@@ -729,9 +745,9 @@ cdef class SwerveDriveKinematics(Drivetrain):
             (<_ModuleVector>b[i]).m = (<_ModuleVector>a[i]).m
             (<_ModuleVector>b[i]).a = (<_ModuleVector>a[i]).a
 
-    def toSwerveModuleAccelerations(self, ChassisAccelerations chassisAccelerations not None,
+    def toSwerveModuleAccelerations(self, chassisAccelerations: ChassisAccelerations,
                                     double angularVelocity=0.0,
-                                    Translation2d centerOfRotation not None=ORIGIN):
+                                    centerOfRotation: Translation2d = ORIGIN):
         """Return the N module accelerations (SwerveModuleAcceleration: magnitude m/s² and
         direction) for ``chassisAccelerations`` while turning at ``angularVelocity`` rad/s
         about ``centerOfRotation`` (m): a_i = a + α × r_i − ω² r_i.
@@ -739,19 +755,22 @@ cdef class SwerveDriveKinematics(Drivetrain):
         WPILib's rules are kept: an exactly zero ``chassisAccelerations`` gives all-zero
         results even when ``angularVelocity`` ≠ 0, and a module whose acceleration is at
         most 1e-6 gets angle 0 (there is no heading memory for accelerations)."""
-        cdef ChassisAccelerations ca = chassisAccelerations
+        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
+        check_type(centerOfRotation, Translation2d, "centerOfRotation")
+        cdef ChassisAccelerations ca = <ChassisAccelerations>chassisAccelerations
         self._ready()
         cdef object t = new_modules(self.n, SwerveModuleAcceleration)
         if not (ca.v.x == 0.0 and ca.v.y == 0.0 and ca.v.z == 0.0):
-            self._set_cor(centerOfRotation.v)
+            self._set_cor((<Translation2d>centerOfRotation).v)
         swerve_ik_accel(self.n, self.rx, self.ry, ca.v.x, ca.v.y, angularVelocity, ca.v.z,
                         self.s0, self.s1, self.s2)
         store_modules(t, NULL, self.n, self.s0, self.s1, self.s2)
         return t
 
-    def toWheelAccelerations(self, ChassisAccelerations chassisAccelerations not None):
+    def toWheelAccelerations(self, chassisAccelerations: ChassisAccelerations):
         """Same as :meth:`toSwerveModuleAccelerations` with zero angular velocity about
         the robot origin."""
+        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
         return self.toSwerveModuleAccelerations(chassisAccelerations, 0.0, ORIGIN)
 
     def toChassisAccelerations(self, moduleAccelerations, *more):

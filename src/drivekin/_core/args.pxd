@@ -44,6 +44,56 @@ cdef extern from *:
     bint exact_type "drivekin_exact"(PyObject* o, PyObject* t) noexcept
 
 
+# Typed parameters. A def parameter typed as an extension class gets Cython's own test,
+# whose fixed message ("Argument 'pose' has incorrect type (expected
+# drivekin.geometry.Pose2d, got wpimath.geometry._geometry.Pose2d)") cannot say how to
+# convert a robotpy object. So the public methods and constructors take such parameters
+# untyped, annotated with their class for the embedded signature (setup.py turns
+# annotation typing off), test them with check_type first and cast them where they are
+# used, ``(<Pose2d>pose).p``: the pointer compare of Cython's test, and no reference
+# counting (a typed local would add an incref and a decref, about 5 instructions a
+# parameter). The failure branch is a separate function that is never inlined, so the
+# test inlines everywhere; it raises drivekin._core.errors.wrong_type's TypeError
+# ("pose must be a Pose2d, got NoneType", and for a robotpy-wpimath object the
+# drivekin.interop call that converts it).
+cdef extern from *:
+    """
+    #if defined(__GNUC__)
+    #define DRIVEKIN_NOINLINE __attribute__((noinline))
+    #elif defined(_MSC_VER)
+    #define DRIVEKIN_NOINLINE __declspec(noinline)
+    #else
+    #define DRIVEKIN_NOINLINE
+    #endif
+
+    static CYTHON_UNUSED DRIVEKIN_NOINLINE int drivekin_wrong_type(PyObject *obj,
+                                                                   PyTypeObject *expected,
+                                                                   PyObject *name) {
+        PyObject *errors = PyImport_ImportModule("drivekin._core.errors");
+        PyObject *exc;
+        if (errors == NULL) return -1;
+        exc = PyObject_CallMethod(errors, "wrong_type", "OOO", obj, expected, name);
+        Py_DECREF(errors);
+        if (exc != NULL) {
+            PyErr_SetObject((PyObject *)Py_TYPE(exc), exc);
+            Py_DECREF(exc);
+        }
+        return -1;
+    }
+
+    /* Exact type test: the value classes are final, so it is isinstance; None fails it. */
+    static CYTHON_UNUSED inline int drivekin_check_type(PyObject *obj, PyTypeObject *expected,
+                                                       PyObject *name) {
+        if (Py_TYPE(obj) == expected) return 0;
+        drivekin_wrong_type(obj, expected, name);
+        return -1;                  /* a constant, so the caller's error test folds away */
+    }
+    """
+    # ``name`` is the parameter's name. For a parameter of a shared base that must be of
+    # the receiver's class (ChassisVelocities.plus), ``expected`` is type(self).
+    int check_type "drivekin_check_type"(object obj, type expected, str name) except -1
+
+
 cdef inline bint is_number(object x) noexcept:
     # A float (numpy.float64 included) or an exact int: what robotpy converts implicitly
     # to a Rotation2d in radians (never a bool, a str or an object with __float__).

@@ -1,19 +1,71 @@
 """Helpers for error messages (only called on error paths, so plain Python)."""
+from __future__ import annotations
 
 
-def type_name(obj: object) -> str:
+def type_name(obj: object, expected: type | None = None) -> str:
     """Name ``type(obj)`` for an error message.
 
     Builtins and drivekin's own classes are named bare; anything else carries its module,
     so a robotpy ``wpimath.geometry._geometry.Translation2d`` passed where drivekin's
-    Translation2d belongs is not reported as "got Translation2d".
+    Translation2d belongs is not reported as "got Translation2d". A robotpy-wpimath
+    object that :mod:`drivekin.interop` converts also gets the call that converts it
+    (``fromWpimath``, or ``fromWpimath3d`` for a 3-D one) — when ``expected`` is given,
+    only if that call gives an ``expected`` (a robotpy Pose2d where a Rotation2d belongs
+    gets no hint).
     """
     t = type(obj)
     module = getattr(t, "__module__", None) or ""
     name = getattr(t, "__qualname__", t.__name__)
     if module == "builtins" or module == "drivekin" or module.startswith("drivekin."):
         return name
-    return f"{module}.{name}"
+    return f"{module}.{name}{_robotpy_hint(obj, expected)}"
+
+
+def _robotpy_hint(obj: object, expected: type | None) -> str:
+    found = _robotpy_conversion(obj)
+    if found is None:
+        return ""
+    function, result = found
+    if expected is not None and not issubclass(result, expected):
+        return ""
+    if function == "fromWpimath3d":
+        return (" (a robotpy-wpimath 3-D object: convert its 2-D part with "
+                "drivekin.interop.fromWpimath3d(value))")
+    return " (a robotpy-wpimath object: convert it with drivekin.interop.fromWpimath(value))"
+
+
+def _robotpy_conversion(obj: object) -> tuple[str, type] | None:
+    """The drivekin.interop function that converts ``obj`` and the drivekin class it
+    returns, or None: interop's own tables (the catalog's robotpy-wpimath peers and its
+    3-D flattenings), searched as interop searches them (the class, then its bases)."""
+    mro = type(obj).__mro__
+    if not any((getattr(k, "__module__", None) or "").startswith("wpimath.") for k in mro):
+        return None        # not robotpy's: never import anything on this error path
+    try:
+        from drivekin import interop
+        from drivekin._core import catalog
+
+        w = interop._load()
+        peers = {getattr(getattr(w, e.peer.module), n): e.cls
+                 for e in catalog.ENTRIES if e.peer is not None for n in e.peer.names
+                 if hasattr(getattr(w, e.peer.module), n)}
+        # fromWpimath3d's classes give the 2-D peer of the same name (Pose3d: Pose2d).
+        flat = {getattr(w.geometry, n): peers.get(getattr(w.geometry, n[:-2] + "2d", None))
+                for n, _ in interop._FLATTEN_3D if hasattr(w.geometry, n)}
+    except Exception:      # robotpy-wpimath missing or broken: a message without a hint
+        return None
+    for klass in mro:
+        if klass in peers:
+            return "fromWpimath", peers[klass]
+        if flat.get(klass) is not None:
+            return "fromWpimath3d", flat[klass]
+    return None
+
+
+def wrong_type(obj: object, expected: type, name: str) -> TypeError:
+    """The TypeError for the argument ``name`` that is not an ``expected`` (None
+    included): the one message of drivekin's typed parameters (``_core/args.pxd``)."""
+    return TypeError(f"{name} must be a {expected.__name__}, got {type_name(obj, expected)}")
 
 
 def refuse_delete(obj: object, name: str) -> None:
