@@ -74,7 +74,11 @@ class TimeInterpolatableBuffer(Generic[T]):
         # whose snapshot changed while it worked (another thread, or a finalizer that
         # re-entered) starts again instead of overwriting that change.
         self._entries: Tuple[Tuple[float, T], ...] = ()
-        self._commit = threading.Lock()
+        # Re-entrant: CPython 3.14 (seen there) may run a finalizer (and so a nested addSample on
+        # this buffer) at the eval-breaker check right after the lock is taken, which
+        # deadlocked with a plain Lock. The nested call commits first; this one's
+        # identity test then fails and it starts again.
+        self._commit = threading.RLock()
         self._ready = True
 
     @staticmethod

@@ -405,7 +405,8 @@ def packArray(seq: Iterable[StructValue]) -> bytes:
     packed elements back to back, no count prefix. An empty sequence packs to ``b""``.
     Mixed element types (or SwerveDriveKinematics with different module counts) raise
     TypeError."""
-    items = seq if type(seq) is list or type(seq) is tuple else list(seq)
+    # A snapshot in one C call: no finalizer or thread can change it while it is packed.
+    items = tuple(seq)
     if not items:
         return b""
     first = items[0]
