@@ -36,14 +36,15 @@ ensure_sysroot() {
         *) echo "unknown architecture $arch" >&2; return 1 ;;
     esac
     rootfs=$CACHE/sysroots/forky-$deb
-    if [[ ! -e $rootfs/.complete ]]; then
+    # libatomic1: robotpy-wpimath's aarch64 wheel links it (the differential tests).
+    local packages=python3.14,python3.14-venv,python3.14-dev,libatomic1
+    if [[ "$(cat "$rootfs/.complete" 2>/dev/null)" != "$packages" ]]; then
         rm -rf "$rootfs" && mkdir -p "$CACHE/sysroots"
         # Debian 12's debootstrap has no forky script; sid's serves forky.
-        debootstrap --arch="$deb" --variant=minbase \
-            --include=python3.14,python3.14-venv,python3.14-dev forky "$rootfs" "$MIRROR" \
-            /usr/share/debootstrap/scripts/sid >"$CACHE/sysroots/forky-$deb.log" 2>&1 \
+        debootstrap --arch="$deb" --variant=minbase --include="$packages" forky "$rootfs" \
+            "$MIRROR" /usr/share/debootstrap/scripts/sid >"$CACHE/sysroots/forky-$deb.log" 2>&1 \
             || { tail -n 20 "$CACHE/sysroots/forky-$deb.log" >&2; return 1; }
-        touch "$rootfs/.complete"
+        echo "$packages" > "$rootfs/.complete"
     fi
     # pip inside reaches the package index with the host's resolver and CA bundle.
     cp /etc/resolv.conf "$rootfs/etc/resolv.conf"
