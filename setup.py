@@ -50,7 +50,12 @@ if trace:
 # comparison (Rotation2d's "shorter than 1e-6 gives the identity") into a blend, so loops
 # over rotations vectorise; Python runs with floating-point traps off, and every value is
 # computed as before. No -ffast-math, because NaN/inf must propagate exactly as in WPILib.
-compile_args = ["-O3", "-fno-math-errno", "-fno-trapping-math"] if os.name != "nt" else []
+# -ffp-contract=off: where the target has fused multiply-add (aarch64, and x86_64 with
+# -mfma), gcc and clang would otherwise fuse a*b + c in some loops and not in others, so
+# the batch module would no longer give the per-call kernels' bits (seen on aarch64: one
+# ulp in test_batch's bit-identity tests), nor would aarch64 give x86_64's.
+compile_args = (["-O3", "-fno-math-errno", "-fno-trapping-math", "-ffp-contract=off"]
+                if os.name != "nt" else [])
 
 modules = ["geometry", "chassis", "swerve", "_core.wheels", "_core.drivetrain", "differential",
            "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "batch",
@@ -61,15 +66,13 @@ def simd_options(name):
     """Extra Extension arguments for the DRIVEKIN_SIMD=1 build of drivekin.batch."""
     if not simd or name != "batch":
         return {}
-    # -ffp-contract=off: -mfma would otherwise let gcc fuse a*b + c in the kernels, so the
-    # only differences from the default build are libmvec's (the documented bound).
+    # compile_args keeps -ffp-contract=off under -mfma, so the only differences from the
+    # default build are libmvec's (the documented bound).
     return {
         "define_macros": macros + [("DRIVEKIN_SIMD", "1")],
-        "extra_compile_args": compile_args + ["-mavx2", "-mfma", "-ffp-contract=off"],
+        "extra_compile_args": compile_args + ["-mavx2", "-mfma"],
         "libraries": ["mvec", "m"],
     }
-
-
 
 
 def link_args(system=sys.platform, machine=platform.machine()):

@@ -1,5 +1,16 @@
-# Sourced by scripts/wheels.sh and scripts/wheel_tests.sh (needs CACHE and MIRROR): Debian
-# forky root filesystems with CPython 3.14, one per architecture, kept in $CACHE.
+# Sourced by scripts/wheels.sh and scripts/wheel_tests.sh: Debian forky root filesystems
+# with CPython 3.14, one per architecture, kept in $CACHE, and the scripts' step timer.
+CACHE=${DRIVEKIN_CACHE:-$HOME/.cache/drivekin-release}
+MIRROR=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
+
+step_start=$SECONDS
+step() {  # step NAME: report how long the previous step took, then announce NAME
+    local now=$SECONDS
+    [[ -n "${step_name:-}" ]] && printf '== %-44s %4d s\n' "$step_name" $((now - step_start))
+    step_name=$1 step_start=$now
+    [[ -n "$1" ]] && echo "-- $1"
+    return 0
+}
 
 # native_pythons: every working CPython 3.10-3.13 on this machine (PATH, then pyenv's),
 # one per minor version.
@@ -55,11 +66,18 @@ ensure_sysroot() {
 
 # in_sysroot ROOTFS CMD...: run CMD inside ROOTFS with a clean environment (no host pip
 # configuration, no compiler: the root filesystems have none) and /proc, /dev mounted.
+# QEMU_CPU: qemu-user emulates SystemCore's own core, a Cortex-A76 (ARMv8.2, NEON, no
+# SVE). Its default CPU, "max", offers SVE and SME, and numpy's aarch64 wheel then runs
+# OpenBLAS's ARMv9 SME kernels ("Core: armv9sme"), which return wrong numbers there under
+# qemu 7.2 and 11.1 alike (np.linalg.pinv of an 8 x 3 matrix came back half filled with
+# denormals): the wrong swerve results first seen under emulation were that, not
+# drivekin. x86_64 binaries ignore the variable.
 in_sysroot() {
     local rootfs=$1; shift
     mountpoint -q "$rootfs/proc" || mount -t proc proc "$rootfs/proc"
     mountpoint -q "$rootfs/dev" || mount --bind /dev "$rootfs/dev"
     env -i HOME=/root LANG=C.UTF-8 PATH=/usr/local/bin:/usr/bin:/bin \
+        QEMU_CPU=cortex-a76 \
         PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_CERT=/etc/ssl/certs/ca-certificates.crt \
         ${IN_SYSROOT_ENV:-} /usr/sbin/chroot "$rootfs" "$@"
 }

