@@ -397,21 +397,46 @@ def _layout(type_string: str, schemas: dict[str, str]) -> _Layout:
 # ---------------------------------------------------------------------------------------
 # Reading
 
+class _Index(NamedTuple):
+    """The records of every entry: rows ``starts[i]:starts[i + 1]`` belong to entry
+    ``i``; timestamps, payload offsets into ``buf`` and payload sizes, file order."""
+    buf: Any
+    starts: np.ndarray
+    ts: np.ndarray
+    offsets: np.ndarray
+    sizes: np.ndarray
+
+
 class _Entry:
-    """One entry's name, types, metadata and its records' index (views of the log's
-    arrays: timestamps, payload offsets into the buffer and payload sizes, file order)."""
+    """One entry's name, types and metadata, and its rows of the log's index."""
 
-    __slots__ = ("name", "types", "metadata", "ts", "offsets", "sizes", "_buf")
+    __slots__ = ("name", "types", "metadata", "_index", "_a", "_b")
 
-    def __init__(self, name: str, types: list[str], metadata: str, ts: np.ndarray,
-                 offsets: np.ndarray, sizes: np.ndarray, buf: Any) -> None:
+    def __init__(self, name: str, types: list[str], metadata: str, index: _Index,
+                 a: int, b: int) -> None:
         self.name, self.types, self.metadata = name, types, metadata
-        self.ts, self.offsets, self.sizes, self._buf = ts, offsets, sizes, buf
+        self._index, self._a, self._b = index, a, b
+
+    def __len__(self) -> int:
+        return self._b - self._a
+
+    @property
+    def ts(self) -> np.ndarray:
+        """Timestamps (int64 µs, a read-only view, file order)."""
+        return self._index.ts[self._a:self._b]
+
+    @property
+    def offsets(self) -> np.ndarray:
+        return self._index.offsets[self._a:self._b]
+
+    @property
+    def sizes(self) -> np.ndarray:
+        return self._index.sizes[self._a:self._b]
 
     @property
     def data(self) -> list[bytes]:
         """The payloads, as bytes objects (file order)."""
-        return _wpilog.payloads(self._buf, self.offsets, self.sizes)
+        return _wpilog.payloads(self._index.buf, self.offsets, self.sizes)
 
 
 def _shown(name: str) -> str:
@@ -467,7 +492,7 @@ class LogData:
                     except DataLogError:
                         columns[e.types[0]] = ()
                 cols = columns[e.types[0]]
-            out[e.name] = EntryInfo(e.name, "|".join(e.types), e.metadata, len(e.ts), cols)
+            out[e.name] = EntryInfo(e.name, "|".join(e.types), e.metadata, len(e), cols)
         return out
 
     @property
@@ -544,7 +569,7 @@ class LogData:
         else:
             ts = ts.copy()
         raw = np.empty(n * size, dtype=np.uint8)
-        _wpilog.gather(e._buf, e.offsets, rows, size, raw)
+        _wpilog.gather(e._index.buf, e.offsets, rows, size, raw)
         shape: tuple[int, ...] = (n, m) if lay.is_array else (n,)
         if lay.k > 1:
             shape += (lay.k,)
@@ -595,15 +620,16 @@ def read(source: str | os.PathLike[str] | bytes | bytearray | memoryview, *,
         if not allowTruncated:
             raise DataLogError(f"{_shown(name)}: {truncated} (pass allowTruncated=True, "
                                f"replay: --allow-truncated, to use the complete records)")
-    entries: dict[str, _Entry] = {}
-    for i, (ename, types, metadata) in enumerate(found):
-        a, b = starts[i], starts[i + 1]
-        entries[ename] = _Entry(ename, types, metadata, ts[a:b], offsets[a:b], sizes[a:b],
-                                buf)
+    for a in (ts, offsets, sizes):
+        a.flags.writeable = False
+    index = _Index(buf, starts, ts, offsets, sizes)
+    bounds = starts.tolist()
+    entries = {ename: _Entry(ename, types, metadata, index, bounds[i], bounds[i + 1])
+               for i, (ename, types, metadata) in enumerate(found)}
     schemas = {}
     for e in entries.values():
         if (e.name.startswith("/.schema/struct:") and e.types == ["structschema"]
-                and len(e.ts)):
+                and len(e)):
             o, s = int(e.offsets[-1]), int(e.sizes[-1])
             schemas[e.name[len("/.schema/struct:"):]] = bytes(buf[o:o + s]).decode(
                 "utf-8", "replace")
