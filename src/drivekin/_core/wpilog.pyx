@@ -2,8 +2,8 @@
 
 :func:`scan` walks the record framing, decodes the control records (Start, Finish,
 SetMetadata) and files every data record of a started entry into per-entry index arrays:
-int64 timestamps, int64 payload offsets into the buffer and uint32 payload sizes, in
-file order. :func:`gather` copies payloads of equal size from the buffer into one output
+int64 timestamps, payload offsets into the buffer (uint32 below 4 GiB, else int64) and
+uint32 payload sizes, in file order. :func:`gather` copies payloads of equal size from the buffer into one output
 array, :func:`payloads` makes bytes objects of them. drivekin.datalog is the API; the
 format is described there.
 
@@ -30,6 +30,12 @@ class Damaged(ValueError):
 # writes them) in a dict, so a hostile id cannot make the table large.
 cdef enum:
     _DIRECT = 65536
+
+
+# Payload offsets: uint32 for buffers under 4 GiB (4 bytes a record less), else int64.
+ctypedef fused offset_t:
+    uint32_t
+    int64_t
 
 
 cdef inline uint64_t _le(const uint8_t* p, Py_ssize_t n) noexcept nogil:
@@ -225,6 +231,33 @@ cdef class _Scan:
 
 @cython.boundscheck(False)
 @cython.wraparound(False)
+cdef void _fill(const uint8_t* b, Py_ssize_t pos, Py_ssize_t end, const int32_t* slots,
+                int64_t* fill, int64_t[::1] ts, offset_t[::1] off,
+                uint32_t[::1] sz) noexcept:
+    """Pass 2 of scan: file each data record into its entry's rows (``fill[slot]`` is
+    the next free row); the records up to ``end`` are complete (pass 1 checked)."""
+    cdef _Header h
+    cdef Py_ssize_t k = 0
+    cdef int32_t slot
+    cdef int64_t m
+    h.entry, h.size, h.ts, h.payload = 0, 0, 0, 0
+    while pos < end:
+        if _header(b, end, pos, &h):
+            break                                   # not reached: pass 1 checked it
+        if h.entry != 0:
+            slot = slots[k]
+            k += 1
+            if slot >= 0:
+                m = fill[slot]
+                fill[slot] = m + 1
+                ts[m] = h.ts
+                off[m] = <offset_t>h.payload
+                sz[m] = h.size
+        pos = h.payload + h.size
+
+
+@cython.boundscheck(False)
+@cython.wraparound(False)
 def scan(const uint8_t[::1] buf not None):
     """Index a DataLog image. Return ``(extra_header, entries, starts, ts, offsets,
     sizes, end, why)``: ``entries`` a list of ``[name, [types], metadata]`` in order of
@@ -238,8 +271,7 @@ def scan(const uint8_t[::1] buf not None):
     cdef _Header h
     cdef _Scan s = _Scan()
     cdef int32_t slot
-    cdef int64_t[::1] ts, off, starts, fill
-    cdef uint32_t[::1] sz
+    cdef int64_t[::1] starts, fill
     cdef int64_t at
     cdef int got
     h.entry, h.size, h.ts, h.payload = 0, 0, 0, 0
@@ -292,29 +324,19 @@ def scan(const uint8_t[::1] buf not None):
         fill[i] = at
         at += s.counts.p[i]
     starts[nslots] = at
-    ts_a, off_a, sz_a = np.empty(at, np.int64), np.empty(at, np.int64), np.empty(at, np.uint32)
-    ts, off, sz = ts_a, off_a, sz_a
-    pos = 12 + extra
-    k = 0
-    while pos < end:
-        if _header(b, end, pos, &h):
-            break                                   # not reached: pass 1 checked it
-        if h.entry != 0:
-            slot = s.slots.p[k]
-            k += 1
-            if slot >= 0:
-                m = fill[slot]
-                fill[slot] = m + 1
-                ts[m] = h.ts
-                off[m] = h.payload
-                sz[m] = h.size
-        pos = h.payload + h.size
+    wide = n > 0xFFFFFFFF
+    ts_a, sz_a = np.empty(at, np.int64), np.empty(at, np.uint32)
+    off_a = np.empty(at, np.int64 if wide else np.uint32)
+    if wide:
+        _fill[int64_t](b, 12 + extra, end, s.slots.p, &fill[0], ts_a, off_a, sz_a)
+    else:
+        _fill[uint32_t](b, 12 + extra, end, s.slots.p, &fill[0], ts_a, off_a, sz_a)
     return header, s.entries, starts_a, ts_a, off_a, sz_a, end, why
 
 
 @cython.boundscheck(False)
 @cython.wraparound(False)
-def gather(const uint8_t[::1] buf not None, const int64_t[::1] offsets not None,
+def gather(const uint8_t[::1] buf not None, const offset_t[::1] offsets not None,
            rows, Py_ssize_t size, uint8_t[::1] out not None):
     """Copy the ``size``-byte payloads at ``offsets[rows[i]]`` (``rows`` an int64 array,
     or None for every row in order) to ``out[i * size:]``. The caller has checked that
@@ -343,7 +365,7 @@ def gather(const uint8_t[::1] buf not None, const int64_t[::1] offsets not None,
 
 @cython.boundscheck(False)
 @cython.wraparound(False)
-def payloads(const uint8_t[::1] buf not None, const int64_t[::1] offsets not None,
+def payloads(const uint8_t[::1] buf not None, const offset_t[::1] offsets not None,
              const uint32_t[::1] sizes not None):
     """The payloads as a list of bytes objects."""
     cdef Py_ssize_t i, n = offsets.shape[0], nbuf = buf.shape[0]
