@@ -1,8 +1,16 @@
 """WPILib DataLog (``.wpilog``) files in and out, as numpy arrays with their timestamps.
 
-Reading and writing go through robotpy-wpiutil (``wpiutil.log.DataLogReader`` and
-``wpiutil.DataLogWriter``), an optional dependency: ``pip install "drivekin[log]"``.
-It is imported on first use, so ``import drivekin`` never imports it.
+Reading is drivekin's own (:mod:`drivekin._core.wpilog`): the file is memory-mapped
+read-only and indexed in one C pass (timestamps, payload offsets and sizes per entry), and
+:meth:`LogData.values` copies the payloads straight from the file into the arrays; it
+needs no robotpy-wpiutil. Every size in the file is checked before it is used; damaged
+control records and struct schemas too large to decode raise :class:`DataLogError`.
+The mapping lives as long as the :class:`LogData`: a file that another program shortens
+meanwhile can crash the process (SIGBUS), so read a copy of a log still being written.
+
+Writing (:class:`Writer`) goes through robotpy-wpiutil's ``DataLogWriter``, an optional
+dependency: ``pip install "drivekin[log]"``. It is imported on first use, so neither
+``import drivekin`` nor :func:`read` imports it.
 
 A round trip (writing, then reading)::
 
@@ -63,8 +71,15 @@ Record order and damage:
   rest. Single structs of the wrong byte size follow the same rule.
 * **Truncated files** (a robot that lost power mid-write) raise :class:`DataLogError`
   saying where the file ends; ``read(path, allowTruncated=True)`` keeps every complete
-  record and sets :attr:`LogData.truncated`. The record framing is checked by drivekin
-  (robotpy's reader decodes a cut record as if it were whole).
+  record and sets :attr:`LogData.truncated`.
+* **Damaged records**: a complete control record that is malformed (a Start record too
+  short for its strings, a Finish record that is not 5 bytes, an unknown control type)
+  raises :class:`DataLogError` with its byte offset. Records of an entry never started
+  (or finished) are ignored. Names, types and metadata that are not UTF-8 are decoded
+  with replacement characters.
+* **Struct schemas** are parsed in one linear pass and nested structs resolved without
+  recursion (a cycle is an error); a struct of more than 65,536 doubles per element is
+  refused before any column is built.
 * Entries finished and restarted keep their records under one name; a name restarted
   with a different type is refused when read.
 
@@ -399,7 +414,8 @@ def _layout(type_string: str, schemas: dict[str, str]) -> _Layout:
 
 class _Index(NamedTuple):
     """The records of every entry: rows ``starts[i]:starts[i + 1]`` belong to entry
-    ``i``; timestamps, payload offsets into ``buf`` and payload sizes, file order."""
+    ``i``; timestamps (int64), payload offsets into ``buf`` (uint32, or int64 from 4 GiB)
+    and payload sizes (uint32), file order; read-only arrays."""
     buf: Any
     starts: np.ndarray
     ts: np.ndarray
@@ -599,7 +615,8 @@ def read(source: str | os.PathLike[str] | bytes | bytearray | memoryview, *,
     :class:`LogData`). A file is memory-mapped (read-only) and indexed in one pass;
     values are decoded from it on demand. robotpy-wpiutil is not needed to read.
 
-    DataLogError: not a DataLog, damaged, or truncated (unless ``allowTruncated``).
+    DataLogError: not a DataLog, damaged, or truncated (unless ``allowTruncated``); the
+    message names the file (its repr when the name is not valid text).
     OSError: the file cannot be opened."""
     if isinstance(source, (str, os.PathLike)):
         path = os.fspath(source)
