@@ -525,8 +525,10 @@ class LogData:
             hint = f"; similar: {', '.join(close[:5])}" if close else ""
             raise DataLogError(f"{_shown(self.source)}: no entry named {_clip(name, 200)}{hint}")
         if len(e.types) > 1:
+            shown = ", ".join(_cut(t) for t in e.types[:5])
+            more = f", ... ({len(e.types)} types)" if len(e.types) > 5 else ""
             raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)} was started "
-                               f"with several types ({', '.join(e.types)})")
+                               f"with several types ({shown}{more})")
         return e
 
     def records(self, name: str) -> tuple[np.ndarray, list[bytes]]:

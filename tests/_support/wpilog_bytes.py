@@ -97,6 +97,11 @@ def flood(n: int = 40_000) -> bytes:
                                for i in range(1, n + 1))
 
 
+def restarts(n: int = 40_000) -> bytes:
+    """One name started ``n`` times, each time with another type."""
+    return header() + b"".join(start(1, "/r", f"t{i}") for i in range(n)) + record(1, 1, b"x")
+
+
 # name -> (image builder, text one of exercise()'s messages must contain, or None if the
 # file must read without any error)
 HOSTILE = {
@@ -136,6 +141,8 @@ HOSTILE = {
         + record(0xFFFFFFFF, -5, bytes(8), (4, 4, 8)) + record(0xFFFFFFFE, 1, b"", (4, 1, 1)),
         None),
     "40000-entry flood": (flood, None),
+    "one name restarted with 40000 types": (restarts, "started with several types "
+                                                      "(t0, t1, t2, t3, t4, ... (40000 types))"),
 }
 
 

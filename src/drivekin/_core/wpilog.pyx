@@ -168,6 +168,8 @@ cdef class _Scan:
     cdef _Growable counts           # records per slot
     cdef list entries               # per slot: [name, [types], metadata]
     cdef dict by_name               # name -> slot
+    cdef set types                  # (slot, type) pairs seen: a name restarted many
+                                    # times costs no scan of its types
 
     def __cinit__(self):
         self.active = _Active()
@@ -175,6 +177,7 @@ cdef class _Scan:
         self.counts = _Growable()
         self.entries = []
         self.by_name = {}
+        self.types = set()
 
     cdef int control(self, Py_ssize_t rec, Py_ssize_t at, Py_ssize_t size) except -1:
         cdef const uint8_t* b = self.b
@@ -205,12 +208,13 @@ cdef class _Scan:
                 slot = len(self.entries)
                 self.entries.append([name, [type_string], metadata])
                 self.by_name[name] = slot
+                self.types.add((slot, type_string))
                 self.counts.push(0)
             else:
                 slot = known
-                types = self.entries[slot][1]
-                if type_string not in types:
-                    types.append(type_string)
+                if (slot, type_string) not in self.types:
+                    self.types.add((slot, type_string))
+                    self.entries[slot][1].append(type_string)
             self.active.set(entry, slot)
         elif kind == 1:                                 # Finish
             if size != 5:
