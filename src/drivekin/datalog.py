@@ -1,8 +1,16 @@
 """WPILib DataLog (``.wpilog``) files in and out, as numpy arrays with their timestamps.
 
-Reading and writing go through robotpy-wpiutil (``wpiutil.log.DataLogReader`` and
-``wpiutil.DataLogWriter``), an optional dependency: ``pip install "drivekin[log]"``.
-It is imported on first use, so ``import drivekin`` never imports it.
+Reading is drivekin's own (:mod:`drivekin._core.wpilog`): the file is memory-mapped
+read-only and indexed in one C pass (timestamps, payload offsets and sizes per entry), and
+:meth:`LogData.values` copies the payloads straight from the file into the arrays; it
+needs no robotpy-wpiutil. Every size in the file is checked before it is used; damaged
+control records and struct schemas too large to decode raise :class:`DataLogError`.
+The mapping lives as long as the :class:`LogData`: a file that another program shortens
+meanwhile can crash the process (SIGBUS), so read a copy of a log still being written.
+
+Writing (:class:`Writer`) goes through robotpy-wpiutil's ``DataLogWriter``, an optional
+dependency: ``pip install "drivekin[log]"``. It is imported on first use, so neither
+``import drivekin`` nor :func:`read` imports it.
 
 A round trip (writing, then reading)::
 
@@ -63,8 +71,15 @@ Record order and damage:
   rest. Single structs of the wrong byte size follow the same rule.
 * **Truncated files** (a robot that lost power mid-write) raise :class:`DataLogError`
   saying where the file ends; ``read(path, allowTruncated=True)`` keeps every complete
-  record and sets :attr:`LogData.truncated`. The record framing is checked by drivekin
-  (robotpy's reader decodes a cut record as if it were whole).
+  record and sets :attr:`LogData.truncated`.
+* **Damaged records**: a complete control record that is malformed (a Start record too
+  short for its strings, a Finish record that is not 5 bytes, an unknown control type)
+  raises :class:`DataLogError` with its byte offset. Records of an entry never started
+  (or finished) are ignored. Names, types and metadata that are not UTF-8 are decoded
+  with replacement characters.
+* **Struct schemas** are parsed in one linear pass and nested structs resolved without
+  recursion (a cycle is an error); a struct of more than 65,536 doubles per element is
+  refused before any column is built.
 * Entries finished and restarted keep their records under one name; a name restarted
   with a different type is refused when read.
 
@@ -79,7 +94,7 @@ All errors about a file's contents or a missing entry raise :class:`DataLogError
 """
 from __future__ import annotations
 
-import collections
+import mmap
 import operator
 import os
 import re
@@ -91,10 +106,11 @@ import numpy as np
 from drivekin import wpistruct
 from drivekin._core.errors import type_name
 from drivekin._core import catalog
+from drivekin._core import wpilog as _wpilog
 
 __all__ = ["DataLogError", "EntryInfo", "LogData", "Writer", "listEntries", "read"]
 
-_INSTALL_HINT = 'robotpy-wpiutil is needed to read and write .wpilog files: pip install "drivekin[log]"'
+_INSTALL_HINT = 'robotpy-wpiutil is needed to write .wpilog files: pip install "drivekin[log]"'
 
 
 def _wpiutil() -> Any:
@@ -147,18 +163,115 @@ _KNOWN_SCHEMAS.update({
 })
 del _e
 
-_DECL = re.compile(r"\s*(?P<enum>enum\s*\{[^}]*\}\s*)?(?P<type>\w+)\s+(?P<name>\w+)\s*"
-                   r"(?:\[\s*(?P<count>\d+)\s*\])?\s*(?P<bits>:\s*\d+)?\s*")
 _REPEATED_NAME = re.compile("(" + "|".join(_REPEATED) + r")__(\d+)")
 
+# Limits on what one struct element may decode to (WPILib's structs have a few dozen
+# doubles at most): column count and the total length of the column names. A schema is
+# measured before anything is built from it, so a hostile one ("double d[200000000]", or
+# structs nested a thousand times a thousand) is refused without allocating its columns.
+_MAX_COLUMNS = 1 << 16                  # 512 KiB of doubles per element
+_MAX_COLUMN_CHARS = 1 << 23
+_MAX_COUNT_DIGITS = 9                   # an array count of more is beyond _MAX_COLUMNS
+_DOUBLE = ("double", "float64")
+_OTHER_SCALARS = frozenset(("bool", "char", "int8", "int16", "int32", "int64", "uint8",
+                            "uint16", "uint32", "uint64", "float", "float32"))
 
-def _struct_columns(name: str, schemas: dict[str, str],
-                    stack: tuple[str, ...] = ()) -> tuple[str, ...]:
-    """Column paths of struct ``name`` (one per double), resolving nested structs with
-    the log's schemas first, then drivekin's; DataLogError for anything but doubles."""
-    if name in stack:
-        raise DataLogError(f"struct:{name} contains itself (schema cycle "
-                           f"{' -> '.join(stack + (name,))})")
+
+def _clip(text: str, n: int = 60) -> str:
+    """``repr(text)``, shortened to about ``n`` characters (names and schema text come
+    from the file and may be huge)."""
+    return repr(text) if len(text) <= n else repr(text[:n]) + f"... ({len(text)} characters)"
+
+
+def _cut(text: str, n: int = 60) -> str:
+    """``text`` as it is, shortened to about ``n`` characters."""
+    return text if len(text) <= n else text[:n] + f"... ({len(text)} characters)"
+
+
+class _Member(NamedTuple):
+    name: str
+    type: str
+    count: int | None                   # None: not an array
+
+
+def _tokens(decl: str) -> list[str] | None:
+    """Split one schema declaration into words (runs of word characters), enum bodies
+    (``{...}``, one token) and the punctuation ``[ ] :``; None if another character
+    occurs. One pass, no backtracking."""
+    out: list[str] = []
+    i, n = 0, len(decl)
+    while i < n:
+        c = decl[i]
+        if c.isspace():
+            i += 1
+        elif c.isalnum() or c == "_":
+            j = i + 1
+            while j < n and (decl[j].isalnum() or decl[j] == "_"):
+                j += 1
+            out.append(decl[i:j])
+            i = j
+        elif c == "{":
+            j = decl.find("}", i)
+            if j < 0:
+                return None
+            out.append(decl[i:j + 1])
+            i = j + 1
+        elif c in "[]:":
+            out.append(c)
+            i += 1
+        else:
+            return None
+    return out
+
+
+def _word(t: str) -> bool:
+    return t[0].isalnum() or t[0] == "_"
+
+
+def _parse_member(struct: str, decl: str) -> _Member:
+    """One member of a schema: ``[enum {...}] type name [[count]] [: bits]``."""
+    toks = _tokens(decl)
+
+    def bad() -> DataLogError:
+        return DataLogError(f"struct:{_cut(struct)}: cannot parse schema member {_clip(decl.strip())}")
+
+    if toks is None:
+        raise bad()
+    enum = len(toks) >= 2 and toks[0] == "enum" and toks[1][0] == "{"
+    i = 2 if enum else 0
+    if len(toks) < i + 2 or not (_word(toks[i]) and _word(toks[i + 1])):
+        raise bad()
+    mtype, mname = toks[i], toks[i + 1]
+    i += 2
+    count = None
+    if i < len(toks) and toks[i] == "[":
+        if i + 2 >= len(toks) or toks[i + 2] != "]" or not (toks[i + 1].isascii()
+                                                            and toks[i + 1].isdigit()):
+            raise bad()
+        digits = toks[i + 1].lstrip("0") or "0"
+        if len(digits) > _MAX_COUNT_DIGITS:
+            raise DataLogError(f"struct:{_cut(struct)}: member {_clip(mname)} has an array count "
+                               f"of {len(digits)} digits, more than any log holds")
+        count = int(digits)
+        i += 3
+    bits = i < len(toks) and toks[i] == ":"
+    if bits:
+        if i + 1 >= len(toks) or not (toks[i + 1].isascii() and toks[i + 1].isdigit()):
+            raise bad()
+        i += 2
+    if i != len(toks):
+        raise bad()
+    if enum or bits:
+        raise DataLogError(f"struct:{_cut(struct)}: member {_clip(mname)} is an enum or bit "
+                           f"field; only structs of doubles are decoded")
+    if mtype in _OTHER_SCALARS:
+        raise DataLogError(f"struct:{_cut(struct)}: member {_clip(mname)} is {mtype}; only "
+                           f"structs of doubles are decoded")
+    return _Member(mname, mtype, count)
+
+
+def _members(name: str, schemas: dict[str, str]) -> list[_Member]:
+    """The parsed members of struct ``name``: the log's schema first, then drivekin's."""
     schema = schemas.get(name)
     if schema is None:
         schema = _KNOWN_SCHEMAS.get(name)
@@ -166,33 +279,106 @@ def _struct_columns(name: str, schemas: dict[str, str],
         if schema is None and m:
             schema = f"{_REPEATED[m.group(1)].struct.schema}[{m.group(2)}]"  # type: ignore[union-attr]
     if schema is None:
-        raise DataLogError(f"no schema for struct:{name} in the log, and it is not a "
-                           f"WPILib type drivekin knows")
-    columns: list[str] = []
-    for decl in schema.split(";"):
-        if not decl.strip():
-            continue
-        m = _DECL.fullmatch(decl)
-        if m is None:
-            raise DataLogError(f"struct:{name}: cannot parse schema member {decl.strip()!r}")
-        if m.group("enum") or m.group("bits"):
-            raise DataLogError(f"struct:{name}: member {m.group('name')!r} is an enum or "
-                               f"bit field; only structs of doubles are decoded")
-        mtype, mname = m.group("type"), m.group("name")
-        count = m.group("count")
-        names = [mname] if count is None else [f"{mname}[{i}]" for i in range(int(count))]
-        if mtype in ("double", "float64"):
-            sub: tuple[str, ...] = ("",)
-        elif mtype in ("bool", "char", "int8", "int16", "int32", "int64", "uint8",
-                       "uint16", "uint32", "uint64", "float", "float32"):
-            raise DataLogError(f"struct:{name}: member {mname!r} is {mtype}; only structs "
-                               f"of doubles are decoded")
+        raise DataLogError(f"no schema for struct:{_cut(name)} in the log, and it is not "
+                           f"a WPILib type drivekin knows")
+    return [_parse_member(name, d) for d in schema.split(";") if d.strip()]
+
+
+def _digits_below(n: int) -> int:
+    """Total decimal digits of 0, 1, ..., n - 1 (the indices in ``name[i]``)."""
+    total, width, low = 0, 1, 0
+    while low < n:
+        high = min(n, 10 ** width)
+        total += (high - low) * width
+        low, width = high, width + 1
+    return total
+
+
+class _Plan(NamedTuple):
+    root: str
+    members: dict[str, list[_Member]]   # every struct reachable from root
+    columns: int                        # doubles per element of root
+
+
+def _struct_plan(root: str, schemas: dict[str, str]) -> _Plan:
+    """Parse struct ``root`` and every struct it nests (an explicit stack, so any depth
+    works; a cycle is an error), then count its doubles bottom-up, refusing a struct
+    beyond _MAX_COLUMNS / _MAX_COLUMN_CHARS before any column is built."""
+    members = {root: _members(root, schemas)}
+    state = {root: 1}                   # 1: on the path, 2: done
+    path, todo, order = [root], [iter(members[root])], []
+    while todo:
+        for m in todo[-1]:
+            if m.type in _DOUBLE or state.get(m.type) == 2:
+                continue
+            if state.get(m.type) == 1:
+                cycle = path[path.index(m.type):] + [m.type]
+                shown = (" -> ".join(cycle) if len(cycle) <= 8 else
+                         " -> ".join(cycle[:3]) + f" -> ... ({len(cycle) - 6} more) -> "
+                         + " -> ".join(cycle[-3:]))
+                raise DataLogError(f"struct:{_cut(m.type)} contains itself (schema cycle "
+                                   f"{_cut(shown, 300)})")
+            members[m.type] = _members(m.type, schemas)
+            state[m.type] = 1
+            path.append(m.type)
+            todo.append(iter(members[m.type]))
+            break
         else:
-            sub = tuple("." + c for c in _struct_columns(mtype, schemas, stack + (name,)))
-        columns += [n + s for n in names for s in sub]
-    if not columns:
-        raise DataLogError(f"struct:{name} has no members")
-    return tuple(columns)
+            todo.pop()
+            done = path.pop()
+            state[done] = 2
+            order.append(done)
+    ncols: dict[str, int] = {}
+    chars: dict[str, int] = {}
+    for s in order:                     # nested structs before the structs holding them
+        n = c = 0
+        for m in members[s]:
+            reps = 1 if m.count is None else m.count
+            elem = len(m.name) if m.count is None else reps * (len(m.name) + 2) + _digits_below(reps)
+            if m.type in _DOUBLE:
+                n += reps
+                c += elem
+            else:
+                sn = ncols[m.type]
+                n += reps * sn
+                c += elem * sn + reps * (sn + chars[m.type])
+            if n > _MAX_COLUMNS or c > _MAX_COLUMN_CHARS:
+                raise DataLogError(
+                    f"struct:{_cut(root)} has more than {_MAX_COLUMNS} doubles per element "
+                    f"(at member {_clip(m.name)} of struct:{_cut(s)}) or column names of "
+                    f"more than {_MAX_COLUMN_CHARS} characters; drivekin decodes smaller "
+                    f"structs")
+        if n == 0:
+            raise DataLogError(f"struct:{_cut(s)} has no members")
+        ncols[s], chars[s] = n, c
+    return _Plan(root, members, ncols[root])
+
+
+def _plan_columns(plan: _Plan) -> tuple[str, ...]:
+    """Column paths of a planned struct (one per double, nested structs inlined), built
+    top-down with an explicit stack."""
+    out: list[str] = []
+    stack: list[tuple[str, str | None]] = [("", plan.root)]
+    while stack:
+        prefix, s = stack.pop()
+        if s is None:
+            out.append(prefix)
+            continue
+        items: list[tuple[str, str | None]] = []
+        for m in plan.members[s]:
+            elems = [m.name] if m.count is None else [f"{m.name}[{i}]" for i in range(m.count)]
+            if m.type in _DOUBLE:
+                items += [(prefix + e, None) for e in elems]
+            else:
+                items += [(prefix + e + ".", m.type) for e in elems]
+        stack += reversed(items)
+    return tuple(out)
+
+
+def _struct_columns(name: str, schemas: dict[str, str]) -> tuple[str, ...]:
+    """Column paths of struct ``name`` (one per double), resolving nested structs with
+    the log's schemas first, then drivekin's; DataLogError for anything but doubles."""
+    return _plan_columns(_struct_plan(name, schemas))
 
 
 _PLAIN = {  # type -> (numpy dtype of one element, output dtype)
@@ -201,72 +387,82 @@ _PLAIN = {  # type -> (numpy dtype of one element, output dtype)
 }
 
 
-def _layout(type_string: str, schemas: dict[str, str]) -> tuple[str, tuple[str, ...], bool]:
-    """(numpy dtype of one scalar, struct columns or (), is an array) for a type string,
-    or DataLogError if the type is not decodable as numbers."""
+class _Layout(NamedTuple):
+    scalar: str                         # numpy dtype of one stored scalar
+    out: Any                            # numpy dtype of the values
+    k: int                              # scalars per element (struct doubles, or 1)
+    is_array: bool
+    plan: _Plan | None                  # structs
+
+
+def _layout(type_string: str, schemas: dict[str, str]) -> _Layout:
+    """How a type string decodes as numbers, or DataLogError if it does not."""
     is_array = type_string.endswith("[]")
     base = type_string[:-2] if is_array else type_string
     if base in _PLAIN:
-        return _PLAIN[base][0], (), is_array
+        return _Layout(_PLAIN[base][0], _PLAIN[base][1], 1, is_array, None)
     if base.startswith("struct:") and len(base) > 7:
-        return "<f8", _struct_columns(base[7:], schemas), is_array
-    raise DataLogError(f"entry type {type_string!r} is not numeric; readable types: "
+        plan = _struct_plan(base[7:], schemas)
+        return _Layout("<f8", np.float64, plan.columns, is_array, plan)
+    raise DataLogError(f"entry type {_clip(type_string)} is not numeric; readable types: "
                        f"double, float, int64, boolean, their arrays, and struct:<T> or "
                        f"struct:<T>[] of doubles")
 
 
 # ---------------------------------------------------------------------------------------
-# Record framing (checked here: robotpy's reader accepts a cut record as whole)
-
-def _frame_end(data: memoryview) -> tuple[int, int, str | None]:
-    """Walk the record headers of a DataLog image. Return (end of the last complete
-    record, number of complete records, why the rest is not a record or None)."""
-    n = len(data)
-    if n < 12 or bytes(data[:6]) != b"WPILOG":
-        raise DataLogError("not a WPILib DataLog (.wpilog) file: it does not start with "
-                           "the 'WPILOG' header" if n >= 6 or n == 0 else
-                           "not a WPILib DataLog (.wpilog) file: shorter than its header")
-    version = int.from_bytes(data[6:8], "little")
-    if version != 0x0100:
-        raise DataLogError(f"unsupported DataLog version {version >> 8}.{version & 0xFF} "
-                           f"(robotpy-wpiutil reads 1.0)")
-    extra = int.from_bytes(data[8:12], "little")
-    pos = 12 + extra
-    if pos > n:
-        return 12, 0, f"the header says {extra} bytes of extra header, the file has {n - 12}"
-    records = 0
-    b = bytes(data)           # int indexing on bytes is the fastest way to walk
-    frm = int.from_bytes
-    while pos < n:
-        bits = b[pos]
-        le = (bits & 0x3) + 1
-        ls = ((bits >> 2) & 0x3) + 1
-        lt = ((bits >> 4) & 0x7) + 1
-        head = 1 + le + ls + lt
-        if pos + head > n:
-            return pos, records, f"the record at byte {pos} has an incomplete header"
-        size = frm(b[pos + 1 + le:pos + 1 + le + ls], "little")
-        end = pos + head + size
-        if end > n:
-            return pos, records, (f"the record at byte {pos} needs {head + size} bytes, "
-                                  f"the file ends {n - pos} bytes after its start")
-        pos = end
-        records += 1
-    return pos, records, None
-
-
-# ---------------------------------------------------------------------------------------
 # Reading
 
-class _Entry:
-    __slots__ = ("name", "types", "metadata", "ts", "data")
+class _Index(NamedTuple):
+    """The records of every entry: rows ``starts[i]:starts[i + 1]`` belong to entry
+    ``i``; timestamps (int64), payload offsets into ``buf`` (uint32, or int64 from 4 GiB)
+    and payload sizes (uint32), file order; read-only arrays."""
+    buf: Any
+    starts: np.ndarray
+    ts: np.ndarray
+    offsets: np.ndarray
+    sizes: np.ndarray
 
-    def __init__(self, name: str, type_string: str, metadata: str) -> None:
-        self.name = name
-        self.types = [type_string]
-        self.metadata = metadata
-        self.ts: list[int] = []
-        self.data: list[bytes] = []
+
+class _Entry:
+    """One entry's name, types and metadata, and its rows of the log's index."""
+
+    __slots__ = ("name", "types", "metadata", "_index", "_a", "_b")
+
+    def __init__(self, name: str, types: list[str], metadata: str, index: _Index,
+                 a: int, b: int) -> None:
+        self.name, self.types, self.metadata = name, types, metadata
+        self._index, self._a, self._b = index, a, b
+
+    def __len__(self) -> int:
+        return self._b - self._a
+
+    @property
+    def ts(self) -> np.ndarray:
+        """Timestamps (int64 µs, a read-only view, file order)."""
+        return self._index.ts[self._a:self._b]
+
+    @property
+    def offsets(self) -> np.ndarray:
+        return self._index.offsets[self._a:self._b]
+
+    @property
+    def sizes(self) -> np.ndarray:
+        return self._index.sizes[self._a:self._b]
+
+    @property
+    def data(self) -> list[bytes]:
+        """The payloads, as bytes objects (file order)."""
+        return _wpilog.payloads(self._index.buf, self.offsets, self.sizes)
+
+
+def _shown(name: str) -> str:
+    """A file name for messages: as it is when it is valid text, else its repr (a name
+    that is not UTF-8 comes from os.fsdecode with surrogate escapes)."""
+    try:
+        name.encode("utf-8")
+    except UnicodeEncodeError:
+        return repr(name)
+    return name
 
 
 class LogData:
@@ -278,23 +474,41 @@ class LogData:
         """The file name (or ``"<buffer>"``)."""
         self._entries = entries
         self._schemas = schemas
+        self._layouts: dict[str, _Layout | DataLogError] = {}
         self.truncated = truncated
         """None, or why the file ended early (only with ``allowTruncated=True``)."""
         self.extraHeader = extraHeader
         """The file header's extra string (often JSON from the producer)."""
+
+    def _layout(self, type_string: str) -> _Layout:
+        got = self._layouts.get(type_string)
+        if got is None:
+            try:
+                got = _layout(type_string, self._schemas)
+            except DataLogError as err:
+                got = err
+            self._layouts[type_string] = got
+        if isinstance(got, DataLogError):
+            raise DataLogError(*got.args)
+        return got
 
     @property
     def entries(self) -> dict[str, EntryInfo]:
         """Every entry by name, in order of first appearance (schema entries
         ``/.schema/...`` included)."""
         out = {}
+        columns: dict[str, tuple[str, ...]] = {}
         for e in self._entries.values():
-            try:
-                columns = _layout(e.types[0], self._schemas)[1] if len(e.types) == 1 else ()
-            except DataLogError:
-                columns = ()
-            out[e.name] = EntryInfo(e.name, "|".join(e.types), e.metadata, len(e.ts),
-                                    columns)
+            cols: tuple[str, ...] = ()
+            if len(e.types) == 1:
+                if e.types[0] not in columns:
+                    try:
+                        plan = self._layout(e.types[0]).plan
+                        columns[e.types[0]] = () if plan is None else _plan_columns(plan)
+                    except DataLogError:
+                        columns[e.types[0]] = ()
+                cols = columns[e.types[0]]
+            out[e.name] = EntryInfo(e.name, "|".join(e.types), e.metadata, len(e), cols)
         return out
 
     @property
@@ -309,16 +523,18 @@ class LogData:
         if e is None:
             close = [n for n in self._entries if n.lower().endswith(name.lower().rsplit("/", 1)[-1])]
             hint = f"; similar: {', '.join(close[:5])}" if close else ""
-            raise DataLogError(f"{self.source}: no entry named {name!r}{hint}")
+            raise DataLogError(f"{_shown(self.source)}: no entry named {_clip(name, 200)}{hint}")
         if len(e.types) > 1:
-            raise DataLogError(f"{self.source}: entry {name!r} was started with several "
-                               f"types ({', '.join(e.types)})")
+            shown = ", ".join(_cut(t) for t in e.types[:5])
+            more = f", ... ({len(e.types)} types)" if len(e.types) > 5 else ""
+            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)} was started "
+                               f"with several types ({shown}{more})")
         return e
 
     def records(self, name: str) -> tuple[np.ndarray, list[bytes]]:
         """Timestamps (int64 µs) and raw payloads of an entry, in file order (unsorted)."""
         e = self._entry(name)
-        return np.array(e.ts, dtype=np.int64), list(e.data)
+        return e.ts.copy(), e.data
 
     def values(self, name: str, *, ragged: str = "error") -> tuple[np.ndarray, np.ndarray]:
         """Return ``(timestamps, values)`` of a numeric entry, sorted by timestamp
@@ -332,53 +548,50 @@ class LogData:
             raise ValueError(f"ragged must be 'error' or 'drop', got {ragged!r}")
         e = self._entry(name)
         type_string = e.types[0]
+        what = f"{_shown(self.source)}: entry {_clip(name, 200)} ({_cut(type_string)})"
         try:
-            scalar, columns, is_array = _layout(type_string, self._schemas)
+            lay = self._layout(type_string)
         except DataLogError as err:
-            raise DataLogError(f"{self.source}: entry {name!r}: {err}") from None
-        k = max(len(columns), 1)
-        item = np.dtype(scalar).itemsize
-        elem = item * k
-        ts = np.array(e.ts, dtype=np.int64)
-        data = e.data
-        sizes = np.fromiter((len(d) for d in data), dtype=np.int64, count=len(data))
-        if is_array:
+            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)}: {err}") from None
+        elem = np.dtype(lay.scalar).itemsize * lay.k
+        ts, sizes = e.ts, e.sizes
+        rows = None
+        if lay.is_array and len(sizes):
             bad = sizes % elem != 0
             if bad.any():
                 i = int(np.argmax(bad))
-                raise DataLogError(f"{self.source}: entry {name!r} ({type_string}): record "
-                                   f"{i} has {sizes[i]} bytes, not a multiple of {elem}")
-        if len(data) and (sizes != sizes[0]).any():
-            counts = collections.Counter(sizes.tolist())
+                raise DataLogError(f"{what}: record {i} has {sizes[i]} bytes, not a "
+                                   f"multiple of {elem}")
+        if len(sizes) and (sizes != sizes[0]).any():
+            uniq, first, counts = np.unique(sizes, return_index=True, return_counts=True)
             if ragged == "error":
-                seen = ", ".join(f"{(s // elem) if is_array else s} ({c} records)"
-                                 for s, c in sorted(counts.items()))
-                what = "array lengths" if is_array else "record sizes in bytes"
+                seen = ", ".join(f"{(int(s) // elem) if lay.is_array else int(s)} ({c} records)"
+                                 for s, c in zip(uniq.tolist(), counts.tolist()))
+                kind = "array lengths" if lay.is_array else "record sizes in bytes"
                 raise DataLogError(
-                    f"{self.source}: entry {name!r} ({type_string}) changes size between "
-                    f"records: {what} {seen}; pass ragged='drop' (replay: --ragged drop) "
-                    f"to keep only the most common")
-            best = max(counts.values())
-            keep_size = next(s for s in sizes.tolist() if counts[s] == best)
-            keep = sizes == keep_size
-            ts = ts[keep]
-            data = [d for d, k_ in zip(data, keep.tolist()) if k_]
-            sizes = sizes[keep]
-        n = len(data)
-        if not is_array and n and sizes[0] != elem:
-            raise DataLogError(f"{self.source}: entry {name!r} ({type_string}) has "
-                               f"{sizes[0]}-byte records, expected {elem}")
-        m = int(sizes[0]) // elem if n and is_array else 0
-        flat = np.frombuffer(b"".join(data), dtype=scalar)
-        base = type_string[:-2] if is_array else type_string
-        out_dtype = _PLAIN[base][1] if base in _PLAIN else np.float64
-        shape: tuple[int, ...] = (n, m) if is_array else (n,)
-        if columns and len(columns) > 1:
-            shape += (k,)
-        values: np.ndarray = flat.astype(out_dtype).reshape(shape)
+                    f"{what} changes size between records: {kind} {seen}; pass "
+                    f"ragged='drop' (replay: --ragged drop) to keep only the most common")
+            best = counts == counts.max()
+            keep_size = uniq[best][np.argmin(first[best])]   # the earliest on a tie
+            rows = np.flatnonzero(sizes == keep_size)
+            ts = ts[rows]
+        n = len(ts)
+        size = int(sizes[0] if rows is None else sizes[rows[0]]) if n else 0
+        if not lay.is_array and n and size != elem:
+            raise DataLogError(f"{what} has {size}-byte records, expected {elem}")
+        m = size // elem if n and lay.is_array else 0
         if n > 1 and (np.diff(ts) < 0).any():
             order = np.argsort(ts, kind="stable")
-            ts, values = ts[order], values[order]
+            rows = order if rows is None else rows[order]
+            ts = ts[order]
+        else:
+            ts = ts.copy()
+        raw = np.empty(n * size, dtype=np.uint8)
+        _wpilog.gather(e._index.buf, e.offsets, rows, size, raw)
+        shape: tuple[int, ...] = (n, m) if lay.is_array else (n,)
+        if lay.k > 1:
+            shape += (lay.k,)
+        values: np.ndarray = raw.view(lay.scalar).astype(lay.out, copy=False).reshape(shape)
         return ts, values
 
     def __repr__(self) -> str:
@@ -386,70 +599,60 @@ class LogData:
                 f"{', truncated' if self.truncated else ''}>")
 
 
+def _open(path: str | bytes) -> Any:
+    """The file's contents: a read-only memory map, or bytes where the file cannot be
+    mapped (empty files, pipes)."""
+    with open(path, "rb") as f:
+        try:
+            if os.fstat(f.fileno()).st_size > 0:
+                return mmap.mmap(f.fileno(), 0, access=mmap.ACCESS_READ)
+        except (OSError, ValueError):
+            pass
+        return f.read()
+
+
 def read(source: str | os.PathLike[str] | bytes | bytearray | memoryview, *,
          allowTruncated: bool = False) -> LogData:
-    """Read a ``.wpilog`` file (a path, or the file's bytes) with robotpy-wpiutil's
-    DataLogReader and return its entries (see :class:`LogData`).
+    """Read a ``.wpilog`` file (a path, or the file's bytes) and return its entries (see
+    :class:`LogData`). A file is memory-mapped (read-only) and indexed in one pass;
+    values are decoded from it on demand. robotpy-wpiutil is not needed to read.
 
-    DataLogError: not a DataLog, or truncated (unless ``allowTruncated``).
-    OSError: the file cannot be opened. ImportError: robotpy-wpiutil is missing."""
+    DataLogError: not a DataLog, damaged, or truncated (unless ``allowTruncated``); the
+    message names the file (its repr when the name is not valid text).
+    OSError: the file cannot be opened."""
     if isinstance(source, (str, os.PathLike)):
-        name = os.fspath(source)
-        with open(name, "rb") as f:
-            raw = f.read()
+        path = os.fspath(source)
+        name = os.fsdecode(path)
+        buf = _open(path)
     elif isinstance(source, (bytes, bytearray, memoryview)):
         name = "<buffer>"
-        raw = bytes(source)
+        buf = bytes(source)
     else:
         raise TypeError(f"read() takes a path or bytes, got {type_name(source)}")
-    wpiutil = _wpiutil()
     try:
-        end, _, why = _frame_end(memoryview(raw))
-    except DataLogError as err:
-        raise DataLogError(f"{name}: {err}") from None
+        header, found, starts, ts, offsets, sizes, end, why = _wpilog.scan(buf)
+    except _wpilog.Damaged as err:
+        raise DataLogError(f"{_shown(name)}: {err}") from None
     truncated = None
     if why is not None:
-        truncated = f"truncated at byte {end} of {len(raw)}: {why}"
+        truncated = f"truncated at byte {end} of {len(buf)}: {why}"
         if not allowTruncated:
-            raise DataLogError(f"{name}: {truncated} (pass allowTruncated=True, replay: "
-                               f"--allow-truncated, to use the complete records)")
-        raw = raw[:end]
-    reader = wpiutil.log.DataLogReader(raw, name)
-    if not reader.isValid():
-        raise DataLogError(f"{name}: robotpy-wpiutil does not accept it as a DataLog")
-    entries: dict[str, _Entry] = {}
-    active: dict[int, _Entry] = {}
-    for rec in reader:
-        entry_id = rec.getEntry()
-        if entry_id == 0:               # control record
-            if rec.isStart():
-                s = rec.getStartData()
-                e = entries.get(s.name)
-                if e is None:
-                    e = entries[s.name] = _Entry(s.name, s.type, s.metadata)
-                elif s.type not in e.types:
-                    e.types.append(s.type)
-                active[s.entry] = e
-            elif rec.isFinish():
-                active.pop(rec.getFinishEntry(), None)
-            elif rec.isSetMetadata():
-                md = rec.getSetMetadataData()
-                e = active.get(md.entry)
-                if e is not None:
-                    e.metadata = md.metadata
-            continue
-        e = active.get(entry_id)
-        if e is None:
-            continue                    # a record for an entry never started: ignored
-        e.ts.append(rec.getTimestamp())
-        e.data.append(rec.getRaw())
+            raise DataLogError(f"{_shown(name)}: {truncated} (pass allowTruncated=True, "
+                               f"replay: --allow-truncated, to use the complete records)")
+    for a in (ts, offsets, sizes):
+        a.flags.writeable = False
+    index = _Index(buf, starts, ts, offsets, sizes)
+    bounds = starts.tolist()
+    entries = {ename: _Entry(ename, types, metadata, index, bounds[i], bounds[i + 1])
+               for i, (ename, types, metadata) in enumerate(found)}
     schemas = {}
     for e in entries.values():
         if (e.name.startswith("/.schema/struct:") and e.types == ["structschema"]
-                and e.data):
-            schemas[e.name[len("/.schema/struct:"):]] = bytes(e.data[-1]).decode(
+                and len(e)):
+            o, s = int(e.offsets[-1]), int(e.sizes[-1])
+            schemas[e.name[len("/.schema/struct:"):]] = bytes(buf[o:o + s]).decode(
                 "utf-8", "replace")
-    return LogData(name, entries, schemas, truncated, reader.getExtraHeader())
+    return LogData(name, entries, schemas, truncated, header)
 
 
 def listEntries(source: str | os.PathLike[str] | bytes, *,

@@ -419,19 +419,35 @@ def test_import_drivekin_imports_neither_wpiutil_nor_matplotlib():
     assert r.stdout.strip() == "[]"
 
 
-def test_missing_wpiutil_is_an_import_error_naming_the_extra():
-    r = _python("""
+def test_missing_wpiutil_is_an_import_error_naming_the_extra(tmp_path):
+    # Reading needs no robotpy-wpiutil (and does not import it); writing does.
+    path = tmp_path / "w.wpilog"
+    r = _python(f"""
         import sys
         sys.modules["wpiutil"] = None        # as if robotpy-wpiutil were not installed
         from drivekin import datalog
+        print(datalog.read(b"WPILOG\\x00\\x01\\x00\\x00\\x00\\x00").entries)
         try:
-            datalog.read(b"WPILOG")
+            datalog.Writer({str(path)!r})
         except ImportError as e:
             print("ImportError:", e)
     """)
     assert r.returncode == 0, r.stderr
-    assert 'ImportError: robotpy-wpiutil is needed' in r.stdout
+    assert r.stdout.splitlines()[0] == "{}"
+    assert 'ImportError: robotpy-wpiutil is needed to write' in r.stdout
     assert 'pip install "drivekin[log]"' in r.stdout
+
+
+def test_read_imports_no_wpiutil(robotpy_file):
+    r = _python(f"""
+        import sys
+        from drivekin import datalog
+        log = datalog.read({str(robotpy_file)!r})
+        log.values("/Pose"), log.records("/Msg"), log.entries
+        print("wpiutil" in sys.modules)
+    """)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == "False"
 
 
 def test_entry_restarted_with_another_type_is_refused(tmp_path):

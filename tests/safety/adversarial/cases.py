@@ -5,8 +5,9 @@ groups run in a child process (isolate.py), so a crash fails only its own case.
 Groups: ``args`` (hostile arguments at every position; a failed call changes nothing),
 ``gc`` (finalizers that mutate the caller's list or re-enter the receiver mid-call),
 ``reentry`` (re-entrant __float__/__index__/__iter__/__len__), ``threads``,
-``lifecycle`` (repeated/failed __init__, __new__, copies, crafted pickles) and ``misc``
-(huge counts, str/repr under hostile decimal contexts).
+``lifecycle`` (repeated/failed __init__, __new__, copies, crafted pickles), ``misc``
+(huge counts, str/repr under hostile decimal contexts) and ``datalog`` (hostile
+``.wpilog`` files: tests/_support/wpilog_bytes.py).
 """
 from __future__ import annotations
 
@@ -1093,6 +1094,35 @@ def porting_cases():
     return cases
 
 
+# ---- hostile .wpilog files (issue 17, item 5) ------------------------------------------
+
+def check_wpilog(case):
+    from tests._support import wpilog_bytes as W
+    make, needle = W.HOSTILE[case]
+    data = make()
+    errors = W.exercise(data)
+    if needle is None and errors:
+        raise Fail(f"refused a readable file: {errors[0]}")
+    if needle is not None and not any(needle in e for e in errors):
+        raise Fail(f"no DataLogError naming {needle!r}: {errors[:2]}")
+
+
+def check_wpilog_truncations():
+    from tests._support import wpilog_bytes as W
+    data = W.small_log()
+    for cut in range(len(data)):
+        W.exercise(data[:cut])
+        W.exercise(data[:cut], allowTruncated=True)
+
+
+def datalog_cases():
+    from tests._support import wpilog_bytes as W
+    cases = {f"datalog.read {case}": functools.partial(check_wpilog, case)
+             for case in W.HOSTILE}
+    cases["datalog.read truncated at every byte"] = check_wpilog_truncations
+    return cases
+
+
 def group_misc():
     cases = {}
     for cls in reg.public_classes():
@@ -1111,4 +1141,5 @@ def group_misc():
 
 
 GROUPS = {"args": group_args, "gc": group_gc, "reentry": group_reentry,
-          "threads": group_threads, "lifecycle": group_lifecycle, "misc": group_misc}
+          "threads": group_threads, "lifecycle": group_lifecycle, "misc": group_misc,
+          "datalog": datalog_cases}
