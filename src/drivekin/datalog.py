@@ -594,6 +594,36 @@ class LogData:
         values: np.ndarray = raw.view(lay.scalar).astype(lay.out, copy=False).reshape(shape)
         return ts, values
 
+    def concatenated(self, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Return ``(timestamps, counts, values)`` of an array entry whose records may
+        differ in length (AdvantageKit's high-rate odometry arrays hold however many
+        samples arrived in a cycle): records sorted by timestamp (stable), timestamps
+        int64 (N,) µs, ``counts`` int64 (N,) elements per record, and every record's
+        elements concatenated in that order: float64 (sum of counts,) or
+        (sum of counts, k) for structs of k doubles, as :meth:`values` shapes them."""
+        e = self._entry(name)
+        type_string = e.types[0]
+        try:
+            lay = self._layout(type_string)
+        except DataLogError as err:
+            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)}: {err}") from None
+        if not lay.is_array:
+            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)} "
+                               f"({_cut(type_string)}) is not an array")
+        elem = np.dtype(lay.scalar).itemsize * lay.k
+        ts, sizes = e.ts, e.sizes.astype(np.int64)
+        if (sizes % elem != 0).any():
+            i = int(np.argmax(sizes % elem != 0))
+            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)}: record "
+                               f"{i} has {sizes[i]} bytes, not a multiple of {elem}")
+        order = np.argsort(ts, kind="stable")
+        data = e.data
+        raw = b"".join([data[i] for i in order.tolist()])
+        values = np.frombuffer(raw, dtype=lay.scalar).astype(lay.out)
+        if lay.k > 1:
+            values = values.reshape(-1, lay.k)
+        return ts[order], sizes[order] // elem, values
+
     def __repr__(self) -> str:
         return (f"<drivekin.datalog.LogData {self.source!r}: {len(self._entries)} entries"
                 f"{', truncated' if self.truncated else ''}>")

@@ -55,6 +55,8 @@ import numpy as np
 
 from drivekin import batch, datalog
 from drivekin._core import catalog
+from drivekin._core import loglayouts as layouts
+from drivekin._core.loglayouts import REPLAY_PREFIX, Signal
 from drivekin._core.plotting import pyplot
 from drivekin.datalog import DataLogError, LogData
 from drivekin.deadwheel import DeadWheelKinematics
@@ -66,7 +68,6 @@ __all__ = ["DriftStats", "ReplayConfig", "ReplayResult", "plotReplay", "replayLo
 #: The drivetrains a log can be replayed for: the catalog's odometry classes that can be
 #: started from a positions stack (in catalog order).
 DRIVETRAINS = tuple(e.drivetrain for e in catalog.entries("odometry") if e.start is not None)
-REPLAY_PREFIX = "/drivekin/"
 GAP_PERIODS = 3.0       # a wheel-sample interval this many median periods long is a gap
 POSE_ENTRY = "/drivekin/ReplayPose"
 ERROR_ENTRY = "/drivekin/ReplayError"
@@ -87,10 +88,16 @@ class ReplayConfig:
     gyro: str | None = None
     pose: str | None = None
     truth: str | None = None                      # a second pose to compare with
-    gyroUnits: str | None = None                  # "rad" or "deg", for a double gyro
+    gyroUnits: str | None = None                  # "rad", "deg" or "rot", for a double gyro
+    driveUnits: str | None = None                 # "m", "rad" or "rot" (of the wheel)
+    turnUnits: str | None = None                  # "rad", "deg" or "rot"
+    wheelRadius: float | None = None              # m, for drive positions in rad or rot
     modules: list[tuple[float, float]] | None = None      # swerve / mecanum offsets, m
+    wheelbase: float | None = None                # with trackwidth: modules at (±L/2, ±W/2)
     deadWheels: list[tuple[float, float, float]] | None = None  # x m, y m, direction deg
-    trackwidth: float | None = None               # differential, with heading="wheels"
+    trackwidth: float | None = None               # m: differential heading="wheels", or
+                                                  # with wheelbase, a rectangle of modules
+    odometryRate: str = "auto"                    # or "cycle": ignore high-rate samples
     heading: str = "gyro"                         # or "wheels" (differential only)
     wheelScale: float = 1.0
     gyroAlign: str = "latest"                     # or "interpolate"
@@ -147,6 +154,9 @@ class ReplayResult:
     vsTruth: DriftStats | None = None
     truncated: str | None = None
     log: LogData | None = field(default=None, repr=False)
+    why: dict[str, str] = field(default_factory=dict)      # role -> why that entry
+    notes: list[str] = field(default_factory=list)         # what the replay decided
+    warnings: list[str] = field(default_factory=list)      # what looks wrong
 
     @property
     def pathLength(self) -> float:
@@ -170,7 +180,8 @@ class ReplayResult:
                            "heading_deg": math.degrees(float(last[2]))},
             "vs_logged": self.vsLogged.asdict() if self.vsLogged else None,
             "vs_truth": self.vsTruth.asdict() if self.vsTruth else None,
-            "truncated": self.truncated,
+            "truncated": self.truncated, "why": dict(self.why), "notes": list(self.notes),
+            "warnings": list(self.warnings),
         }
 
 
@@ -191,30 +202,151 @@ def replayPoses(odometry: Any, gyro: np.ndarray, positions: np.ndarray) -> np.nd
 
 
 # ---------------------------------------------------------------------------------------
-# Finding entries
+# Finding entries (the layouts table: drivekin/_core/loglayouts.py)
 
-def _pick(log: LogData, role: str, types: tuple[str, ...], prefer: str | None,
-          exclude: set[str]) -> str | None:
-    cands = [e.name for e in log.entries.values()
-             if e.type in types and not e.name.startswith(REPLAY_PREFIX)
-             and e.name not in exclude and e.records > 0]
-    if len(cands) <= 1:
-        return cands[0] if cands else None
-    if prefer:
-        liked = [c for c in cands if prefer in c.lower()]
-        if len(liked) == 1:
-            return liked[0]
-    option = {"gyro": "--gyro", "pose": "--pose", "positions": "--positions",
-              "kinematics": "--module"}[role]
-    raise DataLogError(f"several {role} entries ({' or '.join(types)}): "
-                       f"{', '.join(cands)}; name one with {option}")
+def _choose(cands: list[Signal], role: str, option: str, rank: Any) -> tuple[Signal, str]:
+    """The best-ranked candidate and why; DataLogError when the best are tied."""
+    scored = sorted(((rank(s), i, s) for i, s in enumerate(cands)), key=lambda x: (-x[0], x[1]))
+    best = [s for r, _, s in scored if r == scored[0][0]]
+    if len(best) > 1:
+        raise DataLogError(f"several {role} entries: "
+                           f"{'; '.join(f'{s.source} ({s.layout})' for s in best)}; "
+                           f"name one with {option}")
+    chosen = best[0]
+    others = [s.source for _, _, s in scored[1:]]
+    why = chosen.why or chosen.layout
+    if others:
+        why += f"; over {', '.join(others[:3])}" + (f" and {len(others) - 3} more"
+                                                    if len(others) > 3 else "")
+    return chosen, why
 
 
-def _named(log: LogData, name: str, option: str) -> datalog.EntryInfo:
-    info = log.entries.get(name)
-    if info is None:
-        raise DataLogError(f"{option} {name!r}: no such entry")
-    return info
+def _named_signal(log: LogData, cands: list[Signal], name: str, option: str) -> Signal | None:
+    """The candidate holding the entry a user named, or whose entries all lie under the
+    named prefix (``--positions /Drive`` for AdvantageKit's per-module entries)."""
+    try:
+        want = {layouts.resolve(log, name, option).name}
+        under = None
+    except DataLogError:
+        want = set()
+        under = layouts.fold(layouts._bare(name)).rstrip("/") + "/"
+        if not any(all(layouts.fold(layouts._bare(n)).startswith(under) for n in s.entries)
+                   for s in cands):
+            raise
+    hits = [s for s in cands if (want & set(s.entries)) or (
+        under is not None and all(layouts.fold(layouts._bare(n)).startswith(under)
+                                  for n in s.entries))]
+    high = [s for s in hits if s.highRate]
+    return (high or hits or [None])[0]
+
+
+_POSITION_RANK = {"AdvantageKit high-rate odometry": 4, "WPILib struct": 3,
+                  "per-module entries": 2, "left/right doubles": 1, "double[] wheels": 0}
+
+
+def _positions(log: LogData, cfg: ReplayConfig, units: layouts.Options
+               ) -> tuple[Signal, Signal | None, str]:
+    """The positions signal, the cycle-rate one beside high-rate samples (or None), why."""
+    want = cfg.drivetrain
+    cands = [s for s in layouts.candidates(log, "positions", units)
+             if want in ("auto", s.drivetrain)]
+    if cfg.odometryRate == "cycle":
+        cands = [s for s in cands if not s.highRate] or cands
+    if cfg.positions is not None:
+        chosen = _named_signal(log, cands, cfg.positions, "--positions")
+        if chosen is None:
+            chosen = _named_array(log, cfg.positions, want, cfg.ragged)
+        why = "named with --positions"
+    else:
+        if want == "deadwheel":
+            raise DataLogError("dead-wheel positions are a double[] entry: name it with "
+                               "--positions")
+        if not cands:
+            found = ", ".join(dict.fromkeys(lay.name for lay in layouts.LAYOUTS
+                                            if lay.role == "positions"))
+            raise DataLogError(f"no wheel or module positions found (layouts tried: "
+                               f"{found}); name an entry with --positions (--list shows "
+                               f"them)")
+        chosen, why = _choose(cands, "positions", "--positions",
+                              lambda s: _POSITION_RANK.get(s.layout, 0))
+    cycle = None
+    if chosen.highRate:
+        group = layouts.fold(chosen.source.split("/...")[0])
+        cycle = next((s for s in cands if s.layout == "per-module entries" and
+                      layouts.fold(s.source.split("/...")[0]) == group), None)
+    return chosen, cycle, why
+
+
+def _named_array(log: LogData, name: str, want: str, ragged: str) -> Signal:
+    """A named double[] entry: dead wheels, or differential [left, right]."""
+    info = layouts.resolve(log, name, "--positions")
+    if info.type != "double[]":
+        raise DataLogError(f"--positions {info.name!r} has type {info.type}; expected one "
+                           f"of {', '.join(_POSITION_TYPES)}, double[], or a folder of "
+                           f"per-module entries")
+    kind = "deadwheel" if want == "auto" else want
+    if kind not in ("deadwheel", "differential", "mecanum"):
+        raise DataLogError(f"--positions {info.name!r} is double[]: that is read as dead "
+                           f"wheels, differential [left, right] or mecanum [fl, fr, rl, "
+                           f"rr], not {kind}")
+    t, v = log.values(info.name, ragged=ragged)
+    return Signal("positions", t, v, (info.name,), "double[]", kind, "m")
+
+
+def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Signal
+          ) -> tuple[Signal, str]:
+    cands = layouts.candidates(log, "gyro", units)
+    if cfg.gyro is not None:
+        info = layouts.resolve(log, cfg.gyro, "--gyro")
+        hits = [s for s in cands if info.name in s.entries]
+        if not hits and info.type in ("double", "float"):
+            if units.gyro is None:
+                raise DataLogError(f"gyro entry {info.name!r} is a plain {info.type}: give "
+                                   f"its units with --gyro-units deg, rad or rot")
+            t, v = log.values(info.name)
+            hits = [Signal("gyro", t, v * layouts.angle_scale(units.gyro), (info.name,),
+                           "double", units=f"{units.gyro} (--gyro-units)")]
+        if not hits:
+            raise DataLogError(f"--gyro {info.name!r} has type {info.type}; expected "
+                               f"struct:Rotation2d, Rotation2d[] with its timestamps, or a "
+                               f"double (with --gyro-units)")
+        chosen, why = hits[0], "named with --gyro"
+    else:
+        if positions.highRate:
+            high = [s for s in cands if s.highRate]
+            if high:
+                cands = high
+        else:
+            cands = [s for s in cands if not s.highRate]
+        named = [s for s in cands if s.why]
+        if not cands:
+            raise DataLogError("no gyro entry (struct:Rotation2d, or a double named gyro, "
+                               "yaw or heading); name one with --gyro")
+        chosen, why = _choose(named or cands, "gyro", "--gyro",
+                              lambda s: (s.layout != "double") + 0)
+    if not chosen.units:
+        raise DataLogError(f"gyro entry {chosen.source!r} is a plain number with no units "
+                           f"in its name or metadata: give --gyro-units deg, rad or rot")
+    return chosen, why
+
+
+def _pose(log: LogData, cfg: ReplayConfig, units: layouts.Options, exclude: set[str]
+          ) -> tuple[Signal | None, str]:
+    cands = [s for s in layouts.candidates(log, "pose", units)
+             if not exclude & set(s.entries)]
+    if cfg.pose is not None:
+        info = layouts.resolve(log, cfg.pose, "--pose")
+        hits = [s for s in cands if info.name in s.entries]
+        if not hits:
+            raise DataLogError(f"--pose {info.name!r} has type {info.type}, expected "
+                               f"struct:Pose2d or a Field2d double[3]")
+        return hits[0], "named with --pose"
+    usable = [s for s in cands if layouts.pose_score(s.source)[0] > -10]
+    if not usable:
+        return None, ("no pose entry" if not cands else
+                      f"none of {', '.join(s.source for s in cands)} is the robot's pose "
+                      f"(name one with --pose)")
+    return _choose(usable, "pose", "--pose", lambda s: layouts.pose_score(s.source)[0])
 
 
 def _unwrap(theta: np.ndarray) -> np.ndarray:
@@ -282,41 +414,38 @@ def _odometry_entry(kind: str) -> catalog.Entry:
 def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig) -> tuple[Any, str]:
     """The kinematics object (or None) and a description of the geometry used."""
     kin: Any
-    if kind == "swerve":
+    if kind in ("swerve", "mecanum"):
+        count = width if kind == "swerve" else 4
+        what = ("module" if kind == "swerve" else "wheel")
+        struct = (f"struct:SwerveDriveKinematics__{width}" if kind == "swerve"
+                  else "struct:MecanumDriveKinematics")
         mods = cfg.modules
         src = "from the options"
+        if mods is None and cfg.wheelbase is not None and cfg.trackwidth is not None:
+            hl, hw = cfg.wheelbase / 2.0, cfg.trackwidth / 2.0
+            mods = [(hl, hw), (hl, -hw), (-hl, hw), (-hl, -hw)]
+            src = (f"--wheelbase {cfg.wheelbase:g} --trackwidth {cfg.trackwidth:g}: FL, FR, "
+                   f"{'BL, BR' if kind == 'swerve' else 'RL, RR'}")
         if mods is None:
-            name = _pick(log, "kinematics", (f"struct:SwerveDriveKinematics__{width}",),
-                         "kinematics", set())
-            if name is None:
-                raise DataLogError(f"no module offsets: give --module X,Y for each of the "
-                                   f"{width} modules (in the order of the log's array)")
-            v = log.values(name)[1][-1]
-            mods = [(float(v[2 * j]), float(v[2 * j + 1])) for j in range(width)]
-            src = f"from {name}"
-        if len(mods) != width:
-            raise DataLogError(f"{len(mods)} module offsets given, the log's module array "
-                               f"has {width} modules")
+            names = [e.name for e in log.entries.values() if e.type == struct and e.records
+                     and not e.name.startswith(REPLAY_PREFIX)]
+            if len(names) > 1:
+                raise DataLogError(f"several {struct} entries: {', '.join(names)}; give "
+                                   f"the offsets with --module or --trackwidth/--wheelbase")
+            if not names:
+                raise DataLogError(
+                    f"no {what} offsets in the log: give --trackwidth W --wheelbase L for a "
+                    f"rectangle, or --module X,Y for each of the {count} {what}s (in the "
+                    f"log's order{', FL, FR, RL, RR' if kind == 'mecanum' else ''})")
+            v = log.values(names[0])[1][-1]
+            mods = [(float(v[2 * j]), float(v[2 * j + 1])) for j in range(count)]
+            src = f"from {names[0]}"
+        if len(mods) != count:
+            raise DataLogError(f"{len(mods)} {what} offsets given, the log's positions have "
+                               f"{count} {what}s")
         kin = _kinematics_entry(kind).build(*[c for xy in mods for c in xy])  # type: ignore[misc]
         text = ", ".join(f"({x:g}, {y:g})" for x, y in mods)
-        return kin, f"{width} modules at {text} m ({src})"
-    if kind == "mecanum":
-        mods = cfg.modules
-        src = "from the options"
-        if mods is None:
-            name = _pick(log, "kinematics", ("struct:MecanumDriveKinematics",), "kinematics",
-                         set())
-            if name is None:
-                raise DataLogError("no wheel offsets: give --module X,Y for the four "
-                                   "wheels (front-left, front-right, rear-left, rear-right)")
-            v = log.values(name)[1][-1]
-            mods = [(float(v[2 * j]), float(v[2 * j + 1])) for j in range(4)]
-            src = f"from {name}"
-        if len(mods) != 4:
-            raise DataLogError(f"mecanum needs 4 wheel offsets, got {len(mods)}")
-        kin = _kinematics_entry(kind).build(*[c for xy in mods for c in xy])  # type: ignore[misc]
-        text = ", ".join(f"({x:g}, {y:g})" for x, y in mods)
-        return kin, f"wheels at {text} m ({src})"
+        return kin, f"{count} {what}s at {text} m ({src})"
     if kind == "deadwheel":
         wheels = cfg.deadWheels
         if not wheels:
@@ -341,58 +470,41 @@ def replayLog(log: LogData | str | os.PathLike[str],
     cfg = config or ReplayConfig()
     if not isinstance(log, LogData):
         log = datalog.read(log, allowTruncated=cfg.allowTruncated)
+    opts = layouts.Options(cfg.driveUnits, cfg.turnUnits, cfg.gyroUnits, cfg.wheelRadius,
+                           cfg.ragged)
     entries: dict[str, str] = {}
+    why: dict[str, str] = {}
+    notes: list[str] = []
 
     # 1. positions and drivetrain
-    want = cfg.drivetrain
-    if cfg.positions is not None:
-        info = _named(log, cfg.positions, "--positions")
-        kind = _POSITION_TYPES.get(info.type)
-        if kind is None and info.type == "double[]":
-            kind = "deadwheel" if want == "auto" else want
-            if kind not in ("deadwheel", "differential"):
-                raise DataLogError(f"--positions {info.name!r} is double[]: that is read "
-                                   f"as dead wheels or differential [left, right], not "
-                                   f"{kind}")
-        if kind is None:
-            raise DataLogError(f"--positions {info.name!r} has type {info.type}; expected "
-                               f"one of {', '.join(_POSITION_TYPES)} or double[]")
-        if want not in ("auto", kind):
-            raise DataLogError(f"--positions {info.name!r} ({info.type}) holds {kind} "
-                               f"positions, not {want}")
-        pos_name = info.name
-    else:
-        if want == "deadwheel":
-            raise DataLogError("dead-wheel positions are a double[] entry: name it with "
-                               "--positions")
-        types = tuple(t for t, k in _POSITION_TYPES.items() if want in ("auto", k))
-        found = _pick(log, "positions", types, None, set())
-        if found is None:
-            raise DataLogError(f"no wheel or module position entry ({', '.join(types)}); "
-                               f"name one with --positions")
-        pos_name = found
-        kind = _POSITION_TYPES[log.entries[pos_name].type]
-    entries["positions"] = pos_name
-    tw, P = log.values(pos_name, ragged=cfg.ragged)
+    pos, cycle, why["positions"] = _positions(log, cfg, opts)
+    kind = pos.drivetrain
+    assert kind is not None
+    entries["positions"] = pos.source
+    tw, P = pos.t, pos.values
     if len(tw) == 0:
-        raise DataLogError(f"entry {pos_name!r} has no samples")
+        raise DataLogError(f"entry {pos.source!r} has no samples")
     if kind == "differential" and P.ndim == 2 and P.shape[1] != 2:
-        raise DataLogError(f"differential positions must be [left, right], {pos_name!r} "
+        raise DataLogError(f"differential positions must be [left, right], {pos.source!r} "
                            f"has {P.shape[1]} values per sample")
     width = P.shape[1] if P.ndim >= 2 else 1
     if kind == "swerve" and width < 2:
-        raise DataLogError(f"{pos_name!r} has {width} module(s) per sample; a swerve drive "
-                           f"has at least 2")
-    if not np.isfinite(P).all():
-        bad = int(np.argmax(~np.isfinite(P.reshape(len(P), -1)).all(axis=1)))
-        raise DataLogError(f"{pos_name!r} holds a NaN or infinite value (sample {bad} at "
-                           f"{tw[bad] / 1e6:.3f} s)")
+        raise DataLogError(f"{pos.source!r} has {width} module(s) per sample; a swerve "
+                           f"drive has at least 2")
+    _check_positions(pos, kind)
     P = P.copy()
     if cfg.wheelScale != 1.0:
         if kind == "swerve":
             P[:, :, 0] *= cfg.wheelScale
         else:
             P *= cfg.wheelScale
+    if cycle is not None:
+        notes.append(f"replaying the odometry thread's {layouts._rate(tw):.0f} Hz samples, "
+                     f"not the {layouts._rate(cycle.t):.0f} Hz cycle values")
+    elif cfg.odometryRate == "cycle" and any(
+            s.highRate for s in layouts.candidates(log, "positions", opts)):
+        notes.append("the log holds high-rate odometry samples; replaying the cycle values "
+                     "(--odometry-rate cycle)")
 
     # 2. gyro
     if cfg.heading == "wheels":
@@ -405,40 +517,71 @@ def replayLog(log: LogData | str | os.PathLike[str],
         G = (P[:, 1] - P[:, 0]) / cfg.trackwidth
         entries["gyro"] = "(wheels)"
     else:
-        if cfg.gyro is not None:
-            ginfo = _named(log, cfg.gyro, "--gyro")
-            gname = ginfo.name
-        else:
-            found = _pick(log, "gyro", ("struct:Rotation2d",), "gyro", set())
-            if found is None:
-                raise DataLogError("no gyro entry (struct:Rotation2d); name one with "
-                                   "--gyro (a double entry also needs --gyro-units)")
-            gname = found
-            ginfo = log.entries[gname]
-        if ginfo.type == "struct:Rotation2d":
-            scale = 1.0 if cfg.gyroUnits in (None, "rad") else math.pi / 180.0
-        elif ginfo.type in ("double", "float"):
-            if cfg.gyroUnits is None:
-                raise DataLogError(f"gyro entry {gname!r} is a plain {ginfo.type}: give its "
-                                   f"units with --gyro-units deg or rad")
-            scale = 1.0 if cfg.gyroUnits == "rad" else math.pi / 180.0
-        else:
-            raise DataLogError(f"--gyro {gname!r} has type {ginfo.type}; expected "
-                               f"struct:Rotation2d or double")
-        entries["gyro"] = gname
-        tg, G = log.values(gname)
+        gyro_sig, why["gyro"] = _gyro(log, cfg, opts, pos)
+        entries["gyro"] = gyro_sig.source
+        tg, G = gyro_sig.t, gyro_sig.values
         if len(tg) == 0:
-            raise DataLogError(f"gyro entry {gname!r} has no samples")
+            raise DataLogError(f"gyro entry {gyro_sig.source!r} has no samples")
         if not np.isfinite(G).all():
-            raise DataLogError(f"gyro entry {gname!r} holds a NaN or infinite value")
-        G = _unwrap(G * scale)
+            raise DataLogError(f"gyro entry {gyro_sig.source!r} holds a NaN or infinite "
+                               f"value")
+        if len(tg) > 1 and (np.diff(tg) < 0).any():
+            order = np.argsort(tg, kind="stable")
+            tg, G = tg[order], G[order]
+        _check_gyro(gyro_sig.source, tg, G, gyro_sig.units)
+        G = _unwrap(G)
 
     # 3. alignment
+    tw, P, gyro, skipped, max_age, alignment = _align(tw, P, tg, G, cfg, pos.source)
+    max_gap = float(np.diff(tw).max()) / 1e6 if len(tw) > 1 else 0.0
+
+    # logged pose and truth
+    logged = truth = None
+    if cfg.truth is not None:
+        tsig = _named_pose(log, cfg.truth, "--truth", opts)
+        truth = (tsig.t, tsig.values)
+        entries["truth"] = tsig.source
+    pose_sig, why["pose"] = _pose(log, cfg, opts,
+                                  {entries["truth"]} if "truth" in entries else set())
+    if pose_sig is not None and len(pose_sig.t):
+        logged = (pose_sig.t, pose_sig.values)
+        entries["pose"] = pose_sig.source
+
+    # 4. replay
+    kin, geometry = _geometry(log, kind, width, cfg)
+    if cfg.wheelScale != 1.0:
+        geometry += f"; wheel distances × {cfg.wheelScale:g}"
+    start = Pose2d()
+    if cfg.start == "logged" and logged is not None:
+        x, y, th = _interp_poses(logged[0], logged[1], tw[:1])[0]
+        start = Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th)))
+    poses = _run(kind, kin, gyro, P, start)
+
+    rates = {"positions": _rate(tw)}
+    if entries["gyro"] != "(wheels)":
+        rates["gyro"] = _rate(tg)
+    result = ReplayResult(log.source, kind, _ODOMETRY[kind], entries, geometry, tw, poses,
+                          skipped, max_gap, max_age, rates, alignment, logged, truth,
+                          truncated=log.truncated, log=log, why=why, notes=notes)
+    # 5. compare
+    if logged is not None:
+        rates["pose"] = _rate(logged[0])
+        result.vsLogged = _drift(tw, poses, logged[0], logged[1], cfg.compare)
+    if truth is not None and len(truth[0]):
+        result.vsTruth = _drift(tw, poses, truth[0], truth[1], cfg.compare)
+    if cycle is not None and result.vsLogged is not None:
+        result.warnings += _rate_check(result, cycle, tg, G, cfg, kin, start)
+    return result
+
+
+def _align(tw: np.ndarray, P: np.ndarray, tg: np.ndarray, G: np.ndarray, cfg: ReplayConfig,
+           source: str) -> tuple[np.ndarray, np.ndarray, np.ndarray, int, float, str]:
+    """Pair each wheel sample with a gyro angle (the module docstring's step 3)."""
     idx = np.searchsorted(tg, tw, side="right") - 1
     valid = idx >= 0
     skipped = int((~valid).sum())
     if skipped == len(tw):
-        raise DataLogError(f"every wheel sample of {pos_name!r} comes before the first "
+        raise DataLogError(f"every wheel sample of {source!r} comes before the first "
                            f"gyro sample ({tg[0] / 1e6:.3f} s)")
     tw, P, idx = tw[valid], P[valid], idx[valid]
     if cfg.heading == "wheels":
@@ -456,58 +599,91 @@ def replayLog(log: LogData | str | os.PathLike[str],
                      f"{max_age * 1e3:.1f} ms)")
     alignment += ("; compared at the reference times: latest replayed pose" if
                   cfg.compare == "hold" else "; compared with the replay interpolated")
-    max_gap = float(np.diff(tw).max()) / 1e6 if len(tw) > 1 else 0.0
+    return tw, P, gyro, skipped, max_age, alignment
 
-    # logged pose and truth
-    logged = truth = None
-    if cfg.truth is not None:
-        tinfo = _named(log, cfg.truth, "--truth")
-        if tinfo.type != "struct:Pose2d":
-            raise DataLogError(f"--truth {tinfo.name!r} has type {tinfo.type}, expected "
-                               f"struct:Pose2d")
-        truth = log.values(tinfo.name)
-        entries["truth"] = tinfo.name
-    if cfg.pose is not None:
-        pinfo = _named(log, cfg.pose, "--pose")
-        if pinfo.type != "struct:Pose2d":
-            raise DataLogError(f"--pose {pinfo.name!r} has type {pinfo.type}, expected "
-                               f"struct:Pose2d")
-        pose_name: str | None = pinfo.name
-    else:
-        pose_name = _pick(log, "pose", ("struct:Pose2d",), "odometry",
-                          {cfg.truth} if cfg.truth else set())
-    if pose_name is not None:
-        logged = log.values(pose_name)
-        if len(logged[0]) == 0:
-            logged = None
-        else:
-            entries["pose"] = pose_name
 
-    # 4. replay
-    kin, geometry = _geometry(log, kind, width, cfg)
-    if cfg.wheelScale != 1.0:
-        geometry += f"; wheel distances × {cfg.wheelScale:g}"
-    start = Pose2d()
-    if cfg.start == "logged" and logged is not None:
-        x, y, th = _interp_poses(logged[0], logged[1], tw[:1])[0]
-        start = Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th)))
+def _run(kind: str, kin: Any, gyro: np.ndarray, P: np.ndarray, start: Pose2d) -> np.ndarray:
     g0 = Rotation2d.fromRadians(float(gyro[0]))
     odo = _odometry_entry(kind).start(kin, g0, P[0], start)  # type: ignore[misc]
-    poses = replayPoses(odo, gyro, P)
+    return replayPoses(odo, gyro, P)
 
-    rates = {"positions": _rate(tw)}
-    if entries["gyro"] != "(wheels)":
-        rates["gyro"] = _rate(tg)
-    result = ReplayResult(log.source, kind, _ODOMETRY[kind], entries, geometry, tw, poses,
-                          skipped, max_gap, max_age, rates, alignment, logged, truth,
-                          truncated=log.truncated, log=log)
-    # 5. compare
-    if logged is not None:
-        rates["pose"] = _rate(logged[0])
-        result.vsLogged = _drift(tw, poses, logged[0], logged[1], cfg.compare)
-    if truth is not None and len(truth[0]):
-        result.vsTruth = _drift(tw, poses, truth[0], truth[1], cfg.compare)
-    return result
+
+def _rate_check(result: ReplayResult, cycle: Signal, tg: np.ndarray, G: np.ndarray,
+                cfg: ReplayConfig, kin: Any, start: Pose2d) -> list[str]:
+    """Replay the cycle values too; warn when the logged pose follows them, not the
+    high-rate samples (a robot whose odometry ran at the loop rate after all)."""
+    assert result.vsLogged is not None and result.logged is not None
+    P = cycle.values.copy()
+    if cfg.wheelScale != 1.0:
+        P[:, :, 0] *= cfg.wheelScale
+    try:
+        tc, Pc, gc, _, _, _ = _align(cycle.t, P, tg, G, cfg, cycle.source)
+    except DataLogError:
+        return []
+    other = _drift(tc, _run(result.drivetrain, kin, gc, Pc, start), *result.logged,
+                   cfg.compare)
+    mine = result.vsLogged
+    if other is None or mine.rmsPosition <= 1e-3 or other.rmsPosition >= 0.2 * mine.rmsPosition:
+        return []
+    return [f"the logged pose follows the {layouts._rate(cycle.t):.0f} Hz cycle values "
+            f"(RMS {_cm(other.rmsPosition)}) far better than the {result.rates['positions']:.0f}"
+            f" Hz samples replayed (RMS {_cm(mine.rmsPosition)}): it was evidently "
+            f"produced at the cycle rate; --odometry-rate cycle replays that"]
+
+
+def _named_pose(log: LogData, name: str, option: str, opts: layouts.Options) -> Signal:
+    info = layouts.resolve(log, name, option)
+    for s in layouts.candidates(log, "pose", opts):
+        if info.name in s.entries:
+            return s
+    raise DataLogError(f"{option} {info.name!r} has type {info.type}, expected "
+                       f"struct:Pose2d or a Field2d double[3]")
+
+
+# The fastest a wheel rolls or a robot turns that the sanity checks believe.
+MAX_WHEEL_SPEED = 30.0      # m/s
+MAX_TURN_RATE = 60.0        # rad/s (about 10 turns a second)
+
+
+def _steps(t: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per-sample changes and intervals (s) between samples under 0.1 s apart."""
+    dt = np.diff(t) / 1e6
+    d = np.diff(v, axis=0)
+    near = (dt > 0) & (dt < 0.1)
+    return d[near], dt[near]
+
+
+def _check_positions(pos: Signal, kind: str) -> None:
+    """Refuse wheel distances that move impossibly fast: wrong units."""
+    P = pos.values
+    if not np.isfinite(P).all():
+        bad = int(np.argmax(~np.isfinite(P.reshape(len(P), -1)).all(axis=1)))
+        raise DataLogError(f"{pos.source!r} holds a NaN or infinite value (sample {bad} at "
+                           f"{pos.t[bad] / 1e6:.3f} s)")
+    dist = P[:, :, 0] if kind == "swerve" else P
+    d, dt = _steps(pos.t, dist.reshape(len(dist), -1))
+    if not len(dt):
+        return
+    speed = np.abs(d).max(axis=1) / dt
+    if (speed > MAX_WHEEL_SPEED).mean() > 0.01:
+        raise DataLogError(
+            f"{pos.source!r}: wheel distances ({pos.units}) change by up to "
+            f"{float(np.abs(d).max()):.3g} m between samples ({float(speed.max()):.3g} m/s), "
+            f"faster than any robot: check the units (--drive-units, --wheel-radius)")
+
+
+def _check_gyro(source: str, t: np.ndarray, G: np.ndarray, units: str) -> None:
+    """Refuse a gyro that turns impossibly fast between samples: degrees read as
+    radians (a wrap of a full turn is not a step)."""
+    d, dt = _steps(t, G)
+    if not len(dt):
+        return
+    step = np.abs(_wrap(d))
+    if ((step / dt > MAX_TURN_RATE) & (step > math.pi / 4)).mean() > 0.01:
+        raise DataLogError(
+            f"gyro entry {source!r} ({units}) turns by up to {float(step.max()):.3g} rad "
+            f"between samples: in those units that is faster than any robot turns; it is "
+            f"probably in degrees (--gyro-units deg)")
 
 
 # ---------------------------------------------------------------------------------------

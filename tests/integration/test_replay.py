@@ -205,8 +205,8 @@ def _struct_bytes(*values):
 
 
 GOOD_MODULES = ("/Drive/ModulePositions", "struct:SwerveModulePosition[]",
-                [(1000 * k, _struct_bytes(*(0.1 * k, 0.0) * 4)) for k in range(1, 6)])
-GOOD_GYRO = ("/Gyro", "struct:Rotation2d", [(1000 * k, _struct_bytes(0.0)) for k in range(1, 6)])
+                [(20_000 * k, _struct_bytes(*(0.1 * k, 0.0) * 4)) for k in range(1, 6)])
+GOOD_GYRO = ("/Gyro", "struct:Rotation2d", [(20_000 * k, _struct_bytes(0.0)) for k in range(1, 6)])
 
 
 @pytest.fixture(scope="module")
@@ -223,16 +223,16 @@ def bad_logs(tmp_path_factory, match):
     logs["missing file"] = (folder / "nope.wpilog", "No such file or directory")
     p = folder / "nomodules.wpilog"
     _robotpy_log_with(p, [GOOD_GYRO])
-    logs["no positions"] = (p, "no wheel or module position entry")
+    logs["no positions"] = (p, "no wheel or module positions found")
     p = folder / "nogyro.wpilog"
     _robotpy_log_with(p, [GOOD_MODULES])
-    logs["no gyro"] = (p, "no gyro entry (struct:Rotation2d); name one with --gyro")
+    logs["no gyro"] = (p, "no gyro entry (struct:Rotation2d, or a double named gyro, yaw or heading); name one with --gyro")
     p = folder / "twogyros.wpilog"
     _robotpy_log_with(p, [GOOD_MODULES, GOOD_GYRO, ("/Drive/GyroBackup", *GOOD_GYRO[1:])])
     logs["two gyros"] = (p, "several gyro entries")
     p = folder / "nogeometry.wpilog"
     _robotpy_log_with(p, [GOOD_MODULES, GOOD_GYRO])
-    logs["no geometry"] = (p, "no module offsets: give --module X,Y for each of the 4")
+    logs["no geometry"] = (p, "no module offsets in the log: give --trackwidth W --wheelbase L for a rectangle, or --module X,Y for each of the 4 modules")
     p = folder / "ragged.wpilog"
     _robotpy_log_with(p, [GOOD_GYRO, (GOOD_MODULES[0], GOOD_MODULES[1],
                                       GOOD_MODULES[2] + [(9000, _struct_bytes(1.0, 0.0))])])
@@ -264,16 +264,16 @@ def test_wrong_entry_types_named_on_the_command_line(match, capsys):
     path = str(match[0])
     cases = [
         (["--gyro", "messages"], "--gyro 'messages' has type string; expected "
-                                 "struct:Rotation2d or double"),
+                                 "struct:Rotation2d, Rotation2d[]"),
         (["--positions", "/RealOutputs/Odometry/Robot"], "has type struct:Pose2d; expected"),
         (["--pose", "/Drive/Gyro/YawPosition"], "--pose '/Drive/Gyro/YawPosition' has type "
                                                 "struct:Rotation2d, expected struct:Pose2d"),
         (["--gyro", "/SystemStats/BatteryVoltage"], "is a plain double: give its units with "
                                                     "--gyro-units"),
         (["--gyro", "/Nope"], "--gyro '/Nope': no such entry"),
-        (["--drivetrain", "mecanum"], "no wheel or module position entry "
-                                      "(struct:MecanumDriveWheelPositions)"),
-        (["--module", "1,1"], "1 module offsets given, the log's module array has 4 modules"),
+        (["--drivetrain", "mecanum"], "no wheel or module positions found "
+                                      "(layouts tried: WPILib struct, "),
+        (["--module", "1,1"], "1 module offsets given, the log's positions have 4 modules"),
     ]
     for extra, message in cases:
         code = main(["replay", path, "--no-write", *(_module_args() if "--module" not in extra

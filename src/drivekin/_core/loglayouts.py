@@ -1,0 +1,654 @@
+"""Where a replay's inputs live in the logs teams write: the layouts table that
+:mod:`drivekin.replay` walks (documented in docs/logs-and-replay.md, "Log layouts").
+
+A layout turns entries of a log into one *signal*, a quantity in drivekin's own stacking
+and SI units with its timestamps:
+
+* ``positions``: swerve (N, M, 2) ``[distance m, angle rad]``, mecanum (N, 4) m,
+  differential (N, 2) ``[left, right]`` m;
+* ``gyro``: (N,) rad;
+* ``pose``: (N, 3) ``[x m, y m, θ rad]``.
+
+Names are compared after :func:`fold` (case and underscores ignored), so AdvantageKit's
+``DrivePositionRad`` and robotpy-pykit's ``drive_position_rad`` are the same key, and a
+name given by the user is found with or without NetworkTables' ``NT:`` prefix.
+
+Units come, in this order, from what the user gave (``--drive-units`` and friends), the
+name's suffix (``...Rad``, ``...Rotations``, ``...Meters``, ``...Deg``), the entry's
+``{"unit": ...}`` metadata, and the layout's own convention; where none says, the
+replay stops and names the option.
+"""
+from __future__ import annotations
+
+import difflib
+import json
+import math
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from drivekin.datalog import DataLogError, EntryInfo, LogData
+
+REPLAY_PREFIX = "/drivekin/"
+
+# --------------------------------------------------------------------------------------
+# Names
+
+
+def fold(name: str) -> str:
+    """A name as the layouts compare it: lower case, without ``_``, spaces or ``-``."""
+    return name.replace("_", "").replace(" ", "").replace("-", "").lower()
+
+
+def _bare(name: str) -> str:
+    return name[3:] if name.startswith("NT:") else name
+
+
+def resolve(log: LogData, name: str, option: str) -> EntryInfo:
+    """The entry a user named: exactly, else the one entry equal to it after
+    :func:`fold`, with or without the ``NT:`` prefix; DataLogError with the closest
+    names otherwise."""
+    entries = log.entries
+    if name in entries:
+        return entries[name]
+    want = fold(_bare(name))
+    hits = [e for n, e in entries.items() if fold(_bare(n)) == want]
+    if len(hits) == 1:
+        return hits[0]
+    if len(hits) > 1:
+        raise DataLogError(f"{option} {name!r} matches several entries: "
+                           f"{', '.join(e.name for e in hits)}; give one exactly")
+    names = [n for n in entries if not n.startswith("/.schema/")]
+    folded = {fold(_bare(n)): n for n in names}
+    close = difflib.get_close_matches(want, list(folded), n=3, cutoff=0.6)
+    hint = f"; did you mean {' or '.join(repr(folded[c]) for c in close)}?" if close else ""
+    raise DataLogError(f"{option} {name!r}: no such entry{hint} "
+                       f"(python -m drivekin replay LOG --list shows them all)")
+
+
+# --------------------------------------------------------------------------------------
+# Units
+
+DRIVE_UNITS = ("m", "rad", "rot")
+TURN_UNITS = ("rad", "deg", "rot")
+GYRO_UNITS = ("rad", "deg", "rot")
+_UNIT_WORDS = {
+    "m": "m", "meters": "m", "metres": "m", "meter": "m",
+    "rad": "rad", "rads": "rad", "radians": "rad",
+    "rot": "rot", "rots": "rot", "rotations": "rot", "revs": "rot", "revolutions": "rot",
+    "deg": "deg", "degrees": "deg",
+}
+_TO_RAD = {"rad": 1.0, "deg": math.pi / 180.0, "rot": 2.0 * math.pi}
+
+
+def unit_of(suffix: str, metadata: str) -> str | None:
+    """The unit a name's suffix (after the quantity's own word) or the entry's
+    ``{"unit": ...}`` metadata names, or None."""
+    u = _UNIT_WORDS.get(suffix)
+    if u is not None:
+        return u
+    if metadata and len(metadata) < 4096 and metadata.lstrip().startswith("{"):
+        try:
+            meta = json.loads(metadata)
+        except ValueError:
+            return None
+        unit = meta.get("unit") if isinstance(meta, dict) else None
+        if isinstance(unit, str):
+            return _UNIT_WORDS.get(fold(unit))
+    return None
+
+
+def angle_scale(unit: str) -> float:
+    return _TO_RAD[unit]
+
+
+# --------------------------------------------------------------------------------------
+# Signals
+
+
+@dataclass
+class Signal:
+    """One quantity assembled from a log (see the module docstring)."""
+
+    role: str
+    t: np.ndarray                       # int64 µs
+    values: np.ndarray
+    entries: tuple[str, ...]            # the log entries it came from
+    layout: str                         # the layout's name
+    drivetrain: str | None = None       # positions only
+    units: str = ""                     # the units assumed, and from where
+    why: str = ""                       # why this one was chosen
+    highRate: bool = False              # AdvantageKit odometry-thread samples
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def source(self) -> str:
+        return self.entries[0] if len(self.entries) == 1 else _common(self.entries)
+
+
+def _common(names: tuple[str, ...]) -> str:
+    parts = [n.split("/") for n in names]
+    head = []
+    for level in zip(*parts):
+        if len(set(level)) != 1:
+            break
+        head.append(level[0])
+    prefix = "/".join(head)
+    return f"{prefix}/... ({len(names)} entries)"
+
+
+@dataclass
+class Options:
+    """What the user said that a log cannot say: units, the wheel radius, and what to do
+    with arrays that change length."""
+
+    drive: str | None = None            # DRIVE_UNITS
+    turn: str | None = None             # TURN_UNITS
+    gyro: str | None = None             # GYRO_UNITS
+    wheelRadius: float | None = None    # m, for drive positions in rad or rot
+    ragged: str = "error"               # or "drop" (LogData.values)
+
+
+def _drive_scale(unit: str | None, where: str, units: Options) -> tuple[float, str]:
+    """Metres per logged drive unit, and how that was decided."""
+    if units.drive is not None:
+        unit, said = units.drive, "--drive-units"
+    elif unit is not None:
+        said = "the entry's name or metadata"
+    else:
+        raise DataLogError(f"{where}: the drive positions' units are not in the log; give "
+                           f"--drive-units m|rad|rot (rad and rot: of the wheel, with "
+                           f"--wheel-radius)")
+    if unit == "m":
+        return 1.0, f"drive m ({said})"
+    if units.wheelRadius is None:
+        raise DataLogError(f"{where}: drive positions are wheel {unit} ({said}); give "
+                           f"--wheel-radius M to turn them into metres")
+    return (_TO_RAD[unit] * units.wheelRadius,
+            f"drive wheel {unit} ({said}) × radius {units.wheelRadius:g} m")
+
+
+def _turn_scale(unit: str | None, where: str, units: Options, is_rotation: bool) -> tuple[float, str]:
+    if is_rotation:
+        return 1.0, "turn Rotation2d"
+    if units.turn is not None:
+        return _TO_RAD[units.turn], f"turn {units.turn} (--turn-units)"
+    if unit is not None and unit in _TO_RAD:
+        return _TO_RAD[unit], f"turn {unit} (the entry's name or metadata)"
+    raise DataLogError(f"{where}: the turn angles' units are not in the log; give "
+                       f"--turn-units rad|deg|rot")
+
+
+# --------------------------------------------------------------------------------------
+# Module and side groups: per-module entries such as /Drive/Module0/DrivePositionRad
+
+_CORNERS = {  # folded corner names -> module order FL, FR, BL, BR (RL, RR are BL, BR)
+    "fl": 0, "frontleft": 0, "fr": 1, "frontright": 1, "bl": 2, "backleft": 2,
+    "rl": 2, "rearleft": 2, "br": 3, "backright": 3, "rr": 3, "rearright": 3,
+}
+_MODULE_WORDS = ("swervemodule", "module", "mod")
+
+
+def _module_index(part: str) -> tuple[int, int] | None:
+    """(kind, index) for a path component naming a module: kind 0 numbered, 1 corner."""
+    f = fold(part)
+    if f in _CORNERS:
+        return 1, _CORNERS[f]
+    for w in _MODULE_WORDS:
+        if f.startswith(w) and f[len(w):].isdigit() and len(f) - len(w) <= 2:
+            return 0, int(f[len(w):])
+    return None
+
+
+# Leaf keys (folded) of a module's entries, each with the word a unit suffix follows.
+_HIGH_DRIVE = "odometrydrivepositions"
+_HIGH_TURN = "odometryturnpositions"
+_HIGH_TIME = "odometrytimestamps"
+_DRIVE_WORDS = ("driveposition", "drivedistance", "distance")
+_TURN_WORDS = ("turnposition", "turnangle", "steerposition", "steerangle", "angle",
+               "azimuth")
+
+
+def _split_word(leaf: str, words: tuple[str, ...]) -> str | None:
+    """The unit suffix after the first of ``words`` that ``leaf`` starts with (``""``
+    for none), or None if it starts with none of them or the rest is not a unit."""
+    for w in words:
+        if leaf.startswith(w):
+            rest = leaf[len(w):]
+            if rest == "" or rest in _UNIT_WORDS:
+                return rest
+    return None
+
+
+@dataclass
+class _Module:
+    entries: dict[str, tuple[EntryInfo, str]] = field(default_factory=dict)  # role -> (info, suffix)
+
+
+def _module_groups(log: LogData) -> dict[tuple[str, int], dict[int, _Module]]:
+    """Per-module entries grouped by (path before the module component, naming kind)."""
+    groups: dict[tuple[str, int], dict[int, _Module]] = {}
+    for info in log.entries.values():
+        if info.records == 0 or info.name.startswith(REPLAY_PREFIX):
+            continue
+        parts = info.name.split("/")
+        for j in range(len(parts) - 1):
+            mi = _module_index(parts[j])
+            if mi is None:
+                continue
+            leaf = fold("".join(parts[j + 1:]))
+            role = suffix = None
+            if leaf.startswith(_HIGH_DRIVE):
+                role, suffix = "hdrive", leaf[len(_HIGH_DRIVE):]
+            elif leaf.startswith(_HIGH_TURN):
+                role, suffix = "hturn", leaf[len(_HIGH_TURN):]
+            elif leaf == _HIGH_TIME:
+                role, suffix = "htime", ""
+            elif _split_word(leaf, _DRIVE_WORDS) is not None:
+                role, suffix = "drive", _split_word(leaf, _DRIVE_WORDS)
+            elif _split_word(leaf, _TURN_WORDS) is not None:
+                role, suffix = "turn", _split_word(leaf, _TURN_WORDS)
+            if role is not None:
+                key = ("/".join(parts[:j]), mi[0])
+                mod = groups.setdefault(key, {}).setdefault(mi[1], _Module())
+                mod.entries.setdefault(role, (info, suffix or ""))
+            break
+    return groups
+
+
+def _module_positions(log: LogData, prefix: str, mods: dict[int, _Module], units: Options,
+                      high: bool) -> Signal | None:
+    """Swerve positions from per-module entries (cycle values or high-rate arrays)."""
+    order = sorted(mods)
+    if len(order) < 2 or order != list(range(order[0], order[0] + len(order))):
+        return None
+    where = prefix or "/"
+    if high:
+        need = ("hdrive", "hturn", "htime")
+        if not all(all(r in mods[i].entries for r in need) for i in order):
+            return None
+        counts = None
+        dist, ang, times = [], [], []
+        for i in order:
+            e = mods[i].entries
+            di, dsuf = e["hdrive"]
+            ti, tsuf = e["hturn"]
+            _, cd, vd = log.concatenated(di.name)
+            _, ct, vt = log.concatenated(ti.name)
+            _, cs, vs = log.concatenated(e["htime"][0].name)
+            if not (len(cd) == len(ct) == len(cs) and (cd == ct).all() and (cd == cs).all()):
+                raise DataLogError(f"{where}: module {i}'s high-rate arrays do not hold the "
+                                   f"same number of samples in each cycle")
+            if counts is None:
+                counts = cd
+            elif len(cd) != len(counts) or (cd != counts).any():
+                raise DataLogError(f"{where}: the modules' high-rate arrays hold different "
+                                   f"numbers of samples per cycle")
+            dscale, dunits = _drive_scale(unit_of(dsuf, di.metadata), f"{di.name}", units)
+            tscale, tunits = _turn_scale(unit_of(tsuf, ti.metadata), f"{ti.name}", units,
+                                         ti.type == "struct:Rotation2d[]")
+            dist.append(vd * dscale)
+            ang.append(vt * tscale)
+            times.append(vs)
+        stamps = times[0]
+        t = np.round(stamps * 1e6).astype(np.int64)
+        P = np.stack([np.stack(dist, axis=1), np.stack(ang, axis=1)], axis=2)
+        names = tuple(n for i in order for n in (mods[i].entries["hdrive"][0].name,
+                                                  mods[i].entries["hturn"][0].name,
+                                                  mods[i].entries["htime"][0].name))
+        rate = _rate(t)
+        return Signal("positions", t, P, names, "AdvantageKit high-rate odometry",
+                      "swerve", f"{dunits}; {tunits}; timestamps s",
+                      highRate=True,
+                      notes=[f"odometry-thread samples at {rate:.0f} Hz "
+                             f"(OdometryTimestamps of module {order[0]})"])
+    if not all("drive" in mods[i].entries and "turn" in mods[i].entries for i in order):
+        return None
+    names_d = [mods[i].entries["drive"][0].name for i in order]
+    names_t = [mods[i].entries["turn"][0].name for i in order]
+    dists, angs = [], []
+    dunits = tunits = ""
+    for i in order:
+        di, dsuf = mods[i].entries["drive"]
+        ti, tsuf = mods[i].entries["turn"]
+        if di.type not in ("double", "float") or ti.type not in ("double", "float",
+                                                                 "struct:Rotation2d"):
+            return None
+        dscale, dunits = _drive_scale(unit_of(dsuf, di.metadata), di.name, units)
+        tscale, tunits = _turn_scale(unit_of(tsuf, ti.metadata), ti.name, units,
+                                     ti.type == "struct:Rotation2d")
+        td, vd = log.values(di.name)
+        tt, vt = log.values(ti.name)
+        dists.append((td, vd * dscale))
+        angs.append((tt, vt * tscale))
+    t, P = _join([*dists, *angs], where)
+    m = len(order)
+    P = np.stack([P[:, :m], P[:, m:]], axis=2)
+    return Signal("positions", t, P, tuple(names_d + names_t), "per-module entries",
+                  "swerve", f"{dunits}; {tunits}")
+
+
+def _join(series: list[tuple[np.ndarray, np.ndarray]], where: str) -> tuple[np.ndarray, np.ndarray]:
+    """Scalar series logged in one cycle, as columns at their common timestamps: the
+    records of each are matched by time (a cycle logs them all with one timestamp)."""
+    t = series[0][0]
+    for ts, _ in series[1:]:
+        t = np.intersect1d(t, ts)
+    if len(t) == 0:
+        raise DataLogError(f"{where}: the per-module entries share no timestamps (they are "
+                           f"not logged in the same cycle)")
+    cols = []
+    for ts, v in series:
+        # the last record at each shared time (a value logged twice in a cycle)
+        k = np.searchsorted(ts, t, side="right") - 1
+        cols.append(v[k])
+    return t, np.stack(cols, axis=1)
+
+
+def _rate(t: np.ndarray) -> float:
+    d = np.diff(t)
+    d = d[d > 0]
+    return float(1e6 / np.median(d)) if len(d) else 0.0
+
+
+# --------------------------------------------------------------------------------------
+# The layouts table
+
+
+@dataclass(frozen=True)
+class Layout:
+    """One way a quantity is written into logs: ``find`` returns its signals."""
+
+    name: str
+    role: str
+    writers: str                        # who writes it this way
+    units: str                          # the units it implies
+    find: Callable[[LogData, Options], list[Signal]]
+
+
+_POSITION_STRUCTS = {
+    "struct:SwerveModulePosition[]": "swerve",
+    "struct:MecanumDriveWheelPositions": "mecanum",
+    "struct:DifferentialDriveWheelPositions": "differential",
+}
+
+
+def _live(log: LogData) -> list[EntryInfo]:
+    return [e for e in log.entries.values()
+            if e.records > 0 and not e.name.startswith(REPLAY_PREFIX)
+            and not e.name.startswith("/.schema/")]
+
+
+def _find_struct_positions(log: LogData, units: Options) -> list[Signal]:
+    out = []
+    for e in _live(log):
+        kind = _POSITION_STRUCTS.get(e.type)
+        if kind is not None:
+            t, v = log.values(e.name, ragged=units.ragged)
+            out.append(Signal("positions", t, np.array(v, dtype=np.float64), (e.name,),
+                              "WPILib struct", kind, "m; rad"))
+    return out
+
+
+def _find_module_positions(high: bool) -> Callable[[LogData, Options], list[Signal]]:
+    def find(log: LogData, units: Options) -> list[Signal]:
+        out = []
+        for (prefix, _), mods in _module_groups(log).items():
+            s = _module_positions(log, prefix, mods, units, high)
+            if s is not None:
+                out.append(s)
+        return out
+    return find
+
+
+_SIDE_WORDS = ("position", "distance", "encoderposition", "encoderdistance",
+               "driveposition", "drivedistance")
+
+
+def _find_side_positions(log: LogData, units: Options) -> list[Signal]:
+    """Differential left/right doubles beside each other: LeftPosition, RightPosition."""
+    sides: dict[tuple[str, str], dict[str, tuple[EntryInfo, str]]] = {}
+    for e in _live(log):
+        if e.type not in ("double", "float"):
+            continue
+        head, _, leaf = e.name.rpartition("/")
+        f = fold(leaf)
+        for side in ("left", "right"):
+            if f.startswith(side):
+                suf = _split_word(f[len(side):], _SIDE_WORDS)
+                if suf is not None:
+                    sides.setdefault((head, fold(f[len(side):])), {})[side] = (e, suf)
+    out = []
+    for (head, _), pair in sides.items():
+        if len(pair) != 2:
+            continue
+        (li, ls), (ri, rs) = pair["left"], pair["right"]
+        scale, text = _drive_scale(unit_of(ls, li.metadata) or unit_of(rs, ri.metadata),
+                                   f"{li.name}", units)
+        tl, vl = log.values(li.name)
+        tr, vr = log.values(ri.name)
+        t, P = _join([(tl, vl * scale), (tr, vr * scale)], head or "/")
+        out.append(Signal("positions", t, P, (li.name, ri.name), "left/right doubles",
+                          "differential", text))
+    return out
+
+
+_ARRAY_WORDS = ("position", "distance", "wheel", "encoder")
+
+
+def _find_array_positions(log: LogData, units: Options) -> list[Signal]:
+    """double[2] [left, right] (differential) and double[4] FL, FR, RL, RR (mecanum)."""
+    out = []
+    for e in _live(log):
+        if e.type != "double[]" or not any(w in fold(e.name) for w in _ARRAY_WORDS):
+            continue
+        if "odometry" in fold(e.name.rpartition("/")[2]):
+            continue                    # AdvantageKit's high-rate arrays
+        try:
+            t, v = log.values(e.name)
+        except DataLogError:
+            continue                    # a ragged array is not a wheel array
+        kind = {2: "differential", 4: "mecanum"}.get(v.shape[1] if v.ndim == 2 else 0)
+        if kind is None:
+            continue
+        leaf = fold(e.name.rpartition("/")[2])
+        suffix = next((u for u in ("rotations", "radians", "meters", "rad", "rot")
+                       if leaf.endswith(u)), "")
+        unit = unit_of(suffix, e.metadata)
+        if unit is None and units.drive is None:
+            scale, text = 1.0, ("m (a double[] of wheel distances is read as metres; "
+                                "--drive-units says otherwise)")
+        else:
+            scale, text = _drive_scale(unit, e.name, units)
+        out.append(Signal("positions", t, v * scale, (e.name,), f"double[{v.shape[1]}]",
+                          kind, text))
+    return out
+
+
+_GYRO_WORDS = ("gyro", "yaw", "heading", "imu", "pigeon", "navx", "ahrs")
+_NOT_GYRO = ("velocity", "rate", "persec", "turn", "steer", "module", "absolute",
+             "connected", "pitch", "roll", "setpoint", "target", "desired")
+
+
+def _gyro_name(e: EntryInfo) -> bool:
+    f = fold(e.name)
+    return any(w in f for w in _GYRO_WORDS) and not any(w in f for w in _NOT_GYRO)
+
+
+def _find_struct_gyro(log: LogData, units: Options) -> list[Signal]:
+    out = []
+    for e in _live(log):
+        if e.type == "struct:Rotation2d" and not _module_entry(e.name):
+            t, v = log.values(e.name)
+            out.append(Signal("gyro", t, v.astype(np.float64), (e.name,), "Rotation2d",
+                              units="rad", why="name says gyro" if _gyro_name(e) else ""))
+    return out
+
+
+def _module_entry(name: str) -> bool:
+    return any(_module_index(p) is not None for p in name.split("/")[:-1])
+
+
+def _find_high_gyro(log: LogData, units: Options) -> list[Signal]:
+    """AdvantageKit's OdometryYawPositions with OdometryYawTimestamps."""
+    out = []
+    by_name = {fold(e.name): e for e in _live(log)}
+    for f, e in by_name.items():
+        if not f.endswith("odometryyawpositions") and "odometryyawpositions" not in f:
+            continue
+        head = f[:f.rfind("odometryyawpositions")]
+        suffix = f[len(head) + len("odometryyawpositions"):]
+        te = by_name.get(head + "odometryyawtimestamps")
+        if te is None:
+            continue
+        if e.type == "struct:Rotation2d[]":
+            scale, text = 1.0, "Rotation2d"
+        else:
+            u = units.gyro or unit_of(suffix, e.metadata)
+            if u is None:
+                continue
+            scale, text = _TO_RAD[u], u
+        ty, cy, vy = log.concatenated(e.name)
+        ts, cs, vs = log.concatenated(te.name)
+        if len(cy) != len(cs) or (cy != cs).any():
+            raise DataLogError(f"{e.name} and {te.name} hold different numbers of samples")
+        out.append(Signal("gyro", np.round(vs * 1e6).astype(np.int64), vy * scale,
+                          (e.name, te.name), "AdvantageKit high-rate odometry",
+                          units=text, highRate=True, why="odometry-thread yaw samples"))
+    return out
+
+
+def _find_double_gyro(log: LogData, units: Options) -> list[Signal]:
+    out = []
+    for e in _live(log):
+        if e.type not in ("double", "float") or not _gyro_name(e):
+            continue
+        leaf = fold(e.name.rpartition("/")[2])
+        suffix = ""
+        for u in sorted(_UNIT_WORDS, key=len, reverse=True):
+            if leaf.endswith(u) and len(leaf) > len(u):
+                suffix = u
+                break
+        u = units.gyro or unit_of(suffix, e.metadata)
+        t, v = log.values(e.name)
+        if u is None:
+            out.append(Signal("gyro", t, v, (e.name,), "double", units="",
+                              why="needs --gyro-units"))
+            continue
+        said = "--gyro-units" if units.gyro else "the entry's name or metadata"
+        out.append(Signal("gyro", t, v * _TO_RAD[u], (e.name,), "double",
+                          units=f"{u} ({said})", why="name says gyro"))
+    return out
+
+
+# Pose candidates: words that make a Pose2d the robot's own pose, and words that make it
+# something else (what the robot was told to do, or saw).
+_POSE_GOOD = (("odometry/robot", 6, "AdvantageKit's odometry output"),
+              ("drivestate/pose", 5, "CTRE's swerve drive state"),
+              ("estimat", 4, "an estimate of the robot's pose"),
+              ("odometry", 3, "odometry"),
+              ("currentpose", 3, "the current pose"),
+              ("field/robot", 2, "Field2d's robot pose"),
+              ("robot", 1, "the robot"),
+              ("pose", 1, "a pose"))
+_POSE_BAD = ("setpoint", "target", "trajectory", "desired", "goal", "reference",
+             "commanded", "path", "vision", "camera", "tag", "replayoutputs", "truth",
+             "sim", "ghost", "auto", "start", "initial", "reset")
+
+
+def pose_score(name: str) -> tuple[int, str]:
+    """How much a pose entry's name says it is the robot's own pose, and why."""
+    f = fold(name)
+    for w in _POSE_BAD:
+        if w in f:
+            return -10, f"its name says {w!r}: not the robot's measured pose"
+    for w, s, why in _POSE_GOOD:
+        if w in f:
+            return s, why
+    return 0, "no hint in the name"
+
+
+def _find_struct_pose(log: LogData, units: Options) -> list[Signal]:
+    out = []
+    for e in _live(log):
+        if e.type == "struct:Pose2d":
+            t, v = log.values(e.name)
+            score, why = pose_score(e.name)
+            out.append(Signal("pose", t, v, (e.name,), "Pose2d", units="m; rad", why=why))
+    return out
+
+
+def _find_field2d_pose(log: LogData, units: Options) -> list[Signal]:
+    out = []
+    for e in _live(log):
+        if e.type != "double[]":
+            continue
+        f = fold(e.name)
+        if not any(w in f for w in ("field", "pose", "robot")):
+            continue
+        try:
+            t, v = log.values(e.name)
+        except DataLogError:
+            continue
+        if v.ndim != 2 or v.shape[1] != 3:
+            continue
+        score, why = pose_score(e.name)
+        P = v.copy()
+        P[:, 2] = np.radians(P[:, 2])
+        out.append(Signal("pose", t, P, (e.name,), "Field2d double[3]",
+                          units="m; deg (Field2d)", why=why))
+    return out
+
+
+LAYOUTS: tuple[Layout, ...] = (
+    Layout("WPILib struct", "positions",
+           "robotpy / Java struct entries (DataLogManager NT mirroring, CTRE DriveState "
+           "ModulePositions, drivekin)", "m; rad", _find_struct_positions),
+    Layout("AdvantageKit high-rate odometry", "positions",
+           "AdvantageKit and robotpy-pykit swerve templates: per-module "
+           "OdometryDrivePositions*, OdometryTurnPositions, OdometryTimestamps",
+           "drive from the suffix (Rad: wheel radians); turn Rotation2d; timestamps s",
+           _find_module_positions(True)),
+    Layout("per-module entries", "positions",
+           "AdvantageKit cycle inputs (DrivePositionRad, TurnPosition) and robotpy teams' "
+           "per-module doubles (Module0..N or FL/FR/BL/BR)",
+           "from the suffix, the metadata or --drive-units / --turn-units",
+           _find_module_positions(False)),
+    Layout("left/right doubles", "positions", "differential drives: LeftPosition, "
+           "RightPosition", "m unless the suffix or --drive-units says otherwise",
+           _find_side_positions),
+    Layout("double[] wheels", "positions",
+           "double[2] [left, right] (differential), double[4] FL, FR, RL, RR (mecanum): "
+           "robotpy 2026 has no struct for these", "m unless --drive-units says otherwise",
+           _find_array_positions),
+    Layout("AdvantageKit high-rate odometry", "gyro",
+           "AdvantageKit / robotpy-pykit OdometryYawPositions + OdometryYawTimestamps",
+           "Rotation2d; timestamps s", _find_high_gyro),
+    Layout("Rotation2d", "gyro", "struct:Rotation2d entries (AdvantageKit YawPosition)",
+           "rad", _find_struct_gyro),
+    Layout("double", "gyro", "double entries named gyro, yaw, heading, ...",
+           "from the suffix, the metadata or --gyro-units", _find_double_gyro),
+    Layout("Pose2d", "pose", "struct:Pose2d entries (AdvantageKit Odometry/Robot, CTRE "
+           "DriveState/Pose, PathPlanner currentPose)", "m; rad", _find_struct_pose),
+    Layout("Field2d double[3]", "pose", "SmartDashboard Field2d (legacy double[3])",
+           "m; deg", _find_field2d_pose),
+)
+
+
+def layouts_table() -> str:
+    """The layouts table as Markdown (docs/logs-and-replay.md shows it; a test keeps the
+    two in step)."""
+    rows = ["| quantity | layout | written by | units |", "|---|---|---|---|"]
+    for lay in LAYOUTS:
+        rows.append(f"| {lay.role} | {lay.name} | {lay.writers} | {lay.units} |")
+    return "\n".join(rows)
+
+
+def candidates(log: LogData, role: str, units: Options) -> list[Signal]:
+    """Every signal of ``role`` the layouts find, in the table's order."""
+    out: list[Signal] = []
+    for lay in LAYOUTS:
+        if lay.role == role:
+            out += lay.find(log, units)
+    return out
