@@ -52,7 +52,8 @@ Struct columns are the struct's doubles in schema order, nested structs inlined:
 ``MecanumDriveWheelPositions`` → ``[fl, fr, rl, rr]``; :attr:`EntryInfo.columns` names
 them. Angles come back exactly as stored (robotpy 2026 stores a Rotation2d's constructor
 value, WPILib 2027 the wrapped one). A struct is decoded with the schema the log
-publishes for it (``/.schema/struct:<Name>``); any struct whose members are all
+publishes for it (``/.schema/struct:<Name>``, or ``NT:/.schema/struct:<Name>`` as ntcore
+mirrors it from NetworkTables); any struct whose members are all
 ``double`` (``float64``) is readable, nested and fixed-size array members included.
 Without a published schema the WPILib types drivekin knows are still read (2027 and 2026
 names: ``ChassisSpeeds``, ``SwerveModuleState``, ``MecanumDriveWheelSpeeds``,
@@ -675,13 +676,15 @@ def read(source: str | os.PathLike[str] | bytes | bytearray | memoryview, *,
     bounds = starts.tolist()
     entries = {ename: _Entry(ename, types, metadata, index, bounds[i], bounds[i + 1])
                for i, (ename, types, metadata) in enumerate(found)}
+    # The log's own schemas, and those ntcore mirrors from NetworkTables (NT:/.schema/);
+    # the log's own win where both exist.
     schemas = {}
-    for e in entries.values():
-        if (e.name.startswith("/.schema/struct:") and e.types == ["structschema"]
-                and len(e)):
-            o, s = int(e.offsets[-1]), int(e.sizes[-1])
-            schemas[e.name[len("/.schema/struct:"):]] = bytes(buf[o:o + s]).decode(
-                "utf-8", "replace")
+    for prefix in ("NT:/.schema/struct:", "/.schema/struct:"):
+        for e in entries.values():
+            if e.name.startswith(prefix) and e.types == ["structschema"] and len(e):
+                o, s = int(e.offsets[-1]), int(e.sizes[-1])
+                schemas[e.name[len(prefix):]] = bytes(buf[o:o + s]).decode("utf-8",
+                                                                           "replace")
     return LogData(name, entries, schemas, truncated, header)
 
 

@@ -62,8 +62,8 @@ from drivekin.datalog import DataLogError, LogData
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.geometry import Pose2d, Rotation2d
 
-__all__ = ["DriftStats", "ReplayConfig", "ReplayResult", "plotReplay", "replayLog",
-           "replayPoses", "report", "writeReplayLog"]
+__all__ = ["DriftStats", "ReplayConfig", "ReplayResult", "listing", "plotReplay",
+           "replayLog", "replayPoses", "report", "writeReplayLog"]
 
 #: The drivetrains a log can be replayed for: the catalog's odometry classes that can be
 #: started from a positions stack (in catalog order).
@@ -206,14 +206,22 @@ def replayPoses(odometry: Any, gyro: np.ndarray, positions: np.ndarray) -> np.nd
 
 def _choose(cands: list[Signal], role: str, option: str, rank: Any) -> tuple[Signal, str]:
     """The best-ranked candidate and why; DataLogError when the best are tied."""
-    scored = sorted(((rank(s), i, s) for i, s in enumerate(cands)), key=lambda x: (-x[0], x[1]))
-    best = [s for r, _, s in scored if r == scored[0][0]]
+    ordered = sorted(cands, key=rank, reverse=True)          # stable: table order on ties
+    # One entry read by two layouts (CTRE's Pose as a Pose2d and on DriveState's clock)
+    # is one candidate: the better-ranked reading.
+    seen: set[str] = set()
+    unique = []
+    for s in ordered:
+        if s.entries[0] not in seen:
+            seen.add(s.entries[0])
+            unique.append(s)
+    best = [s for s in unique if rank(s) == rank(unique[0])]
     if len(best) > 1:
         raise DataLogError(f"several {role} entries: "
                            f"{'; '.join(f'{s.source} ({s.layout})' for s in best)}; "
                            f"name one with {option}")
     chosen = best[0]
-    others = [s.source for _, _, s in scored[1:]]
+    others = [s.source for s in unique[1:]]
     why = chosen.why or chosen.layout
     if others:
         why += f"; over {', '.join(others[:3])}" + (f" and {len(others) - 3} more"
@@ -240,7 +248,8 @@ def _named_signal(log: LogData, cands: list[Signal], name: str, option: str) -> 
     return (high or hits or [None])[0]
 
 
-_POSITION_RANK = {"AdvantageKit high-rate odometry": 4, "WPILib struct": 3,
+_POSITION_RANK = {"CTRE DriveState": 5, "AdvantageKit high-rate odometry": 4,
+                  "WPILib struct": 3,
                   "per-module entries": 2, "left/right doubles": 1, "double[] wheels": 0}
 
 
@@ -293,8 +302,8 @@ def _named_array(log: LogData, name: str, want: str, ragged: str) -> Signal:
     return Signal("positions", t, v, (info.name,), "double[]", kind, "m")
 
 
-def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Signal
-          ) -> tuple[Signal, str]:
+def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Signal,
+          pose: Signal | None) -> tuple[Signal, str]:
     cands = layouts.candidates(log, "gyro", units)
     if cfg.gyro is not None:
         info = layouts.resolve(log, cfg.gyro, "--gyro")
@@ -319,6 +328,14 @@ def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Si
         else:
             cands = [s for s in cands if not s.highRate]
         named = [s for s in cands if s.why]
+        if not cands and pose is not None:
+            # CTRE's generated Telemetry publishes the drive state without the gyro; the
+            # pose's heading is the gyro's plus a constant there, which is all odometry
+            # takes from a gyro (its changes).
+            return (Signal("gyro", pose.t, pose.values[:, 2].copy(), pose.entries,
+                           "pose heading", units="rad"),
+                    "no gyro in the log: the logged pose's heading stands in for it, so "
+                    "only the translation is replayed independently")
         if not cands:
             raise DataLogError("no gyro entry (struct:Rotation2d, or a double named gyro, "
                                "yaw or heading); name one with --gyro")
@@ -341,12 +358,19 @@ def _pose(log: LogData, cfg: ReplayConfig, units: layouts.Options, exclude: set[
             raise DataLogError(f"--pose {info.name!r} has type {info.type}, expected "
                                f"struct:Pose2d or a Field2d double[3]")
         return hits[0], "named with --pose"
-    usable = [s for s in cands if layouts.pose_score(s.source)[0] > -10]
+    usable = [s for s in cands if layouts.pose_score(s.entries[0])[0] > -10]
     if not usable:
         return None, ("no pose entry" if not cands else
                       f"none of {', '.join(s.source for s in cands)} is the robot's pose "
                       f"(name one with --pose)")
-    return _choose(usable, "pose", "--pose", lambda s: layouts.pose_score(s.source)[0])
+    chosen, why = _choose(usable, "pose", "--pose",
+                          lambda s: (layouts.pose_score(s.entries[0])[0],
+                                     s.layout == "CTRE DriveState"))
+    rejected = [f"{s.source} ({layouts.pose_score(s.entries[0])[1].split(':')[0]})"
+                for s in cands if layouts.pose_score(s.entries[0])[0] <= -10]
+    if rejected:
+        why += "; not " + ", ".join(rejected[:3])
+    return chosen, why
 
 
 def _unwrap(theta: np.ndarray) -> np.ndarray:
@@ -517,7 +541,7 @@ def replayLog(log: LogData | str | os.PathLike[str],
         G = (P[:, 1] - P[:, 0]) / cfg.trackwidth
         entries["gyro"] = "(wheels)"
     else:
-        gyro_sig, why["gyro"] = _gyro(log, cfg, opts, pos)
+        gyro_sig, why["gyro"] = _gyro(log, cfg, opts, pos, _pose(log, cfg, opts, set())[0])
         entries["gyro"] = gyro_sig.source
         tg, G = gyro_sig.t, gyro_sig.values
         if len(tg) == 0:
@@ -687,6 +711,60 @@ def _check_gyro(source: str, t: np.ndarray, G: np.ndarray, units: str) -> None:
 
 
 # ---------------------------------------------------------------------------------------
+# Listing
+
+def listing(log: LogData, config: ReplayConfig | None = None) -> str:
+    """Every entry of a log with its type, record count and median rate, and what
+    :func:`replayLog` would use it for (``python -m drivekin replay LOG --list``)."""
+    cfg = config or ReplayConfig()
+    opts = layouts.Options(cfg.driveUnits, cfg.turnUnits, cfg.gyroUnits, cfg.wheelRadius,
+                           cfg.ragged)
+    use: dict[str, list[str]] = {}
+    chosen: dict[str, str] = {}
+    problems = []
+
+    def mark(signals: list[Signal], role: str) -> None:
+        for s in signals:
+            what = f"{role} candidate: {s.layout}" + (f", {s.drivetrain}" if s.drivetrain
+                                                     else "")
+            for n in s.entries:
+                use.setdefault(n, []).append(what)
+
+    for role in ("positions", "gyro", "pose"):
+        try:
+            mark(layouts.candidates(log, role, opts), role)
+        except DataLogError as e:
+            problems.append(f"{role}: {e}")
+    try:
+        pos, _, _ = _positions(log, cfg, opts)
+        chosen.update(dict.fromkeys(pos.entries, "positions"))
+        if cfg.heading != "wheels":
+            g, _ = _gyro(log, cfg, opts, pos, _pose(log, cfg, opts, set())[0])
+            chosen.update(dict.fromkeys(g.entries, "gyro"))
+    except DataLogError as e:
+        problems.append(str(e))
+    try:
+        p, _ = _pose(log, cfg, opts, set())
+        if p is not None:
+            chosen.update(dict.fromkeys(p.entries, "pose"))
+    except DataLogError as e:
+        problems.append(str(e))
+    infos = [e for e in log.entries.values() if not layouts.is_schema(e.name)]
+    width = min(max((len(e.name) for e in infos), default=4), 60)
+    rows = [f"{log.source}: {len(infos)} entries (schemas not listed)",
+            f"  {'entry':<{width}}  {'type':<30} {'records':>8} {'rate':>8}  replay uses it as"]
+    for e in infos:
+        t = log._entries[e.name].ts
+        rate = _rate(np.sort(t)) if len(t) > 1 else 0.0
+        role = chosen.get(e.name)
+        text = (f"{role} (chosen)" if role else "; ".join(dict.fromkeys(use.get(e.name, []))))
+        rows.append(f"  {e.name:<{width}}  {e.type[:30]:<30} {e.records:>8} "
+                    f"{(f'{rate:.0f} Hz' if rate else '-'):>8}  {text}")
+    rows += [f"  note: {p}" for p in problems]
+    return "\n".join(rows)
+
+
+# ---------------------------------------------------------------------------------------
 # Outputs
 
 def writeReplayLog(result: ReplayResult, path: str | os.PathLike[str]) -> None:
@@ -758,9 +836,9 @@ def plotReplay(result: ReplayResult, path: str | os.PathLike[str]) -> None:
 
 
 def _cm(x: float) -> str:
-    if x < 1e-4:
-        return f"{x:.1e} m"
-    return f"{x * 100:.2f} cm" if x < 10.0 else f"{x:.2f} m"
+    # Every position error in the report in one unit (cm), however small or large.
+    cm = x * 100.0
+    return f"{cm:.1e} cm" if cm < 0.01 else f"{cm:.2f} cm"
 
 
 def _deg(a: float) -> str:
@@ -787,11 +865,15 @@ def report(result: ReplayResult, outputs: tuple[str, ...] = ()) -> str:
 
     align = r.alignment
     last = r.poses[-1]
+    def because(role: str) -> str:
+        return f" [{r.why[role]}]" if r.why.get(role) else ""
+
     rows = [
         f"{r.source}: {r.drivetrain} ({r.odometry})",
-        f"  positions  {entry('positions')}",
-        f"  gyro       {entry('gyro') if 'gyro' in r.rates else e['gyro']}",
-        f"  pose       {entry('pose') if 'pose' in e else '(none logged: nothing to compare with)'}",
+        f"  positions  {entry('positions')}{because('positions')}",
+        f"  gyro       {entry('gyro') if 'gyro' in r.rates else e['gyro']}{because('gyro')}",
+        f"  pose       " + (f"{entry('pose')}{because('pose')}" if 'pose' in e else
+                            f"(none: nothing to compare with; {r.why.get('pose', '')})"),
         f"  geometry   {r.geometry}",
         f"  alignment  {align}; largest wheel-sample gap {r.maxWheelGap * 1e3:.1f} ms"
         + (f"; {r.skipped} wheel samples before the first gyro sample skipped"
@@ -804,6 +886,8 @@ def report(result: ReplayResult, outputs: tuple[str, ...] = ()) -> str:
         rows.append(f"  vs logged  {_drift_line(r.vsLogged)}")
     if r.vsTruth is not None:
         rows.append(f"  vs truth   {_drift_line(r.vsTruth)} [{e['truth']}]")
+    rows += [f"  note       {n}" for n in r.notes]
+    rows += [f"  warning    {w}" for w in r.warnings]
     if r.truncated:
         rows.append(f"  warning    {r.truncated}; the complete records were used")
     if outputs:

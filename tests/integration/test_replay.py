@@ -398,8 +398,8 @@ def test_demo_log_and_plot_options_are_validated():
     (["--seconds", "1", "--plot", "x.png"], "matplotlib",
      'python -m drivekin: error: --plot needs matplotlib: pip install "drivekin[plot]"'),
     (["replay", "x.wpilog"], "wpiutil",
-     "python -m drivekin replay: error: reading .wpilog files needs robotpy-wpiutil: "
-     'pip install "drivekin[log]"'),
+     "python -m drivekin replay: error: writing LOG-replay.wpilog (--no-write skips it) "
+     'needs robotpy-wpiutil: pip install "drivekin[log]"'),
     (["replay", "x.wpilog", "--plot"], "matplotlib",
      'python -m drivekin replay: error: --plot needs matplotlib: pip install "drivekin[plot]"'),
 ])
@@ -414,6 +414,17 @@ def test_missing_extras_are_usage_errors_before_any_work(monkeypatch, capsys, ar
     assert exc.value.code == 2
     errors = [line for line in capsys.readouterr().err.splitlines() if "error:" in line]
     assert errors == [message]
+
+
+def test_replay_without_robotpy_wpiutil_reads_and_reports(monkeypatch, capsys, match):
+    # Reading is drivekin's own: only writing LOG-replay.wpilog needs robotpy-wpiutil.
+    import importlib.util
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *a: None if name == "wpiutil" else real(name, *a))
+    monkeypatch.setitem(sys.modules, "wpiutil", None)      # importing it would fail
+    assert main(["replay", str(match[0]), "--no-write", *_module_args()]) == 0
+    assert "vs logged" in capsys.readouterr().out
 
 
 def test_replay_poses_matches_update_calls_bit_for_bit_on_a_real_log(match):

@@ -41,6 +41,11 @@ def fold(name: str) -> str:
     return name.replace("_", "").replace(" ", "").replace("-", "").lower()
 
 
+def is_schema(name: str) -> bool:
+    """A struct schema entry, the log's own or mirrored from NetworkTables."""
+    return name.startswith(("/.schema/", "NT:/.schema/"))
+
+
 def _bare(name: str) -> str:
     return name[3:] if name.startswith("NT:") else name
 
@@ -59,7 +64,7 @@ def resolve(log: LogData, name: str, option: str) -> EntryInfo:
     if len(hits) > 1:
         raise DataLogError(f"{option} {name!r} matches several entries: "
                            f"{', '.join(e.name for e in hits)}; give one exactly")
-    names = [n for n in entries if not n.startswith("/.schema/")]
+    names = [n for n in entries if not is_schema(n)]
     folded = {fold(_bare(n)): n for n in names}
     close = difflib.get_close_matches(want, list(folded), n=3, cutoff=0.6)
     hint = f"; did you mean {' or '.join(repr(folded[c]) for c in close)}?" if close else ""
@@ -107,7 +112,7 @@ def angle_scale(unit: str) -> float:
 # Signals
 
 
-@dataclass
+@dataclass(eq=False)
 class Signal:
     """One quantity assembled from a log (see the module docstring)."""
 
@@ -268,28 +273,21 @@ def _module_positions(log: LogData, prefix: str, mods: dict[int, _Module], units
         need = ("hdrive", "hturn", "htime")
         if not all(all(r in mods[i].entries for r in need) for i in order):
             return None
-        counts = None
         dist, ang, times = [], [], []
         for i in order:
             e = mods[i].entries
             di, dsuf = e["hdrive"]
             ti, tsuf = e["hturn"]
-            _, cd, vd = log.concatenated(di.name)
-            _, ct, vt = log.concatenated(ti.name)
-            _, cs, vs = log.concatenated(e["htime"][0].name)
-            if not (len(cd) == len(ct) == len(cs) and (cd == ct).all() and (cd == cs).all()):
-                raise DataLogError(f"{where}: module {i}'s high-rate arrays do not hold the "
-                                   f"same number of samples in each cycle")
-            if counts is None:
-                counts = cd
-            elif len(cd) != len(counts) or (cd != counts).any():
-                raise DataLogError(f"{where}: the modules' high-rate arrays hold different "
-                                   f"numbers of samples per cycle")
+            clock = e["htime"][0].name
+            vs = log.concatenated(clock)[2]
+            if times and len(vs) != len(times[0]):
+                raise DataLogError(f"{where}: the modules' OdometryTimestamps hold "
+                                   f"different numbers of samples")
             dscale, dunits = _drive_scale(unit_of(dsuf, di.metadata), f"{di.name}", units)
             tscale, tunits = _turn_scale(unit_of(tsuf, ti.metadata), f"{ti.name}", units,
                                          ti.type == "struct:Rotation2d[]")
-            dist.append(vd * dscale)
-            ang.append(vt * tscale)
+            dist.append(_held(log, clock, di.name, where) * dscale)
+            ang.append(_held(log, clock, ti.name, where) * tscale)
             times.append(vs)
         stamps = times[0]
         t = np.round(stamps * 1e6).astype(np.int64)
@@ -322,28 +320,59 @@ def _module_positions(log: LogData, prefix: str, mods: dict[int, _Module], units
         tt, vt = log.values(ti.name)
         dists.append((td, vd * dscale))
         angs.append((tt, vt * tscale))
-    t, P = _join([*dists, *angs], where)
+    t, P = _join([*dists, *angs], where, _cycle_clock(log))
     m = len(order)
     P = np.stack([P[:, :m], P[:, m:]], axis=2)
     return Signal("positions", t, P, tuple(names_d + names_t), "per-module entries",
                   "swerve", f"{dunits}; {tunits}")
 
 
-def _join(series: list[tuple[np.ndarray, np.ndarray]], where: str) -> tuple[np.ndarray, np.ndarray]:
-    """Scalar series logged in one cycle, as columns at their common timestamps: the
-    records of each are matched by time (a cycle logs them all with one timestamp)."""
-    t = series[0][0]
-    for ts, _ in series[1:]:
-        t = np.intersect1d(t, ts)
+def _cycle_clock(log: LogData) -> np.ndarray | None:
+    """AdvantageKit's and robotpy-pykit's cycle clock: /Timestamp (int64 µs per cycle)."""
+    e = log.entries.get("/Timestamp")
+    if e is None or e.type != "int64" or e.records == 0:
+        return None
+    return log.values("/Timestamp")[1]
+
+
+def _join(series: list[tuple[np.ndarray, np.ndarray]], where: str,
+          clock: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Scalar series logged once per cycle, as columns on one timeline: the cycle clock
+    when the log has one, else every time any of them was logged. Writers that log a
+    value only when it changes (robotpy-pykit, NetworkTables) leave the rest to be held,
+    so each column holds its latest record at or before each time; the timeline starts
+    once every series has a value."""
+    if clock is None:
+        clock = np.unique(np.concatenate([ts for ts, _ in series]))
+    if not all(len(ts) for ts, _ in series):
+        raise DataLogError(f"{where}: an entry of the group has no records")
+    start = max(int(ts[0]) for ts, _ in series)
+    t = clock[clock >= start]
     if len(t) == 0:
-        raise DataLogError(f"{where}: the per-module entries share no timestamps (they are "
-                           f"not logged in the same cycle)")
-    cols = []
-    for ts, v in series:
-        # the last record at each shared time (a value logged twice in a cycle)
-        k = np.searchsorted(ts, t, side="right") - 1
-        cols.append(v[k])
+        raise DataLogError(f"{where}: the entries of the group never all have a value")
+    cols = [v[np.searchsorted(ts, t, side="right") - 1] for ts, v in series]
     return t, np.stack(cols, axis=1)
+
+
+def _held(log: LogData, clock: str, name: str, where: str) -> np.ndarray:
+    """The elements of array entry ``name`` for each record of array entry ``clock``
+    (AdvantageKit's OdometryTimestamps): each clock record takes the latest ``name``
+    record at or before it, which must hold as many elements (a writer that logs only
+    changes skips a record whose array repeats the last one)."""
+    tc, cc, _ = log.concatenated(clock)
+    tx, cx, vx = log.concatenated(name)
+    k = np.searchsorted(tx, tc, side="right") - 1
+    if len(tc) and (k < 0).any():
+        raise DataLogError(f"{where}: {name} starts after {clock}")
+    if len(tc) and (cx[k] != cc).any():
+        i = int(np.argmax(cx[k] != cc))
+        raise DataLogError(f"{where}: {name} holds {cx[k[i]]} samples where {clock} holds "
+                           f"{cc[i]} (record at {tc[i] / 1e6:.3f} s)")
+    starts = np.concatenate([[0], np.cumsum(cx)[:-1]]).astype(np.int64)
+    first = np.concatenate([[0], np.cumsum(cc)[:-1]]).astype(np.int64)
+    total = int(cc.sum())
+    idx = np.repeat(starts[k], cc) + (np.arange(total) - np.repeat(first, cc))
+    return vx[idx]
 
 
 def _rate(t: np.ndarray) -> float:
@@ -377,7 +406,7 @@ _POSITION_STRUCTS = {
 def _live(log: LogData) -> list[EntryInfo]:
     return [e for e in log.entries.values()
             if e.records > 0 and not e.name.startswith(REPLAY_PREFIX)
-            and not e.name.startswith("/.schema/")]
+            and not is_schema(e.name)]
 
 
 def _find_struct_positions(log: LogData, units: Options) -> list[Signal]:
@@ -402,6 +431,48 @@ def _find_module_positions(high: bool) -> Callable[[LogData, Options], list[Sign
     return find
 
 
+def _drivestate(log: LogData, leaf: str, type_string: str) -> list[tuple[EntryInfo, EntryInfo]]:
+    """CTRE's DriveState entries named ``leaf`` with their table's Timestamp entry."""
+    by_name = {fold(e.name): e for e in _live(log)}
+    out = []
+    for f, e in by_name.items():
+        if f.endswith("drivestate/" + leaf) and e.type == type_string:
+            clock = by_name.get(f[:-len(leaf)] + "timestamp")
+            if clock is not None and clock.type == "double":
+                out.append((e, clock))
+    return out
+
+
+def _on_clock(log: LogData, entry: EntryInfo, clock: EntryInfo) -> tuple[np.ndarray, np.ndarray]:
+    """Values of ``entry`` at each sample of CTRE's DriveState/Timestamp (the sample time
+    in seconds; NetworkTables stamps the records later and drops repeated values, so
+    each sample holds the latest record at or before its own record)."""
+    tc, sec = log.values(clock.name)
+    tx, vx = log.values(entry.name)
+    k = np.searchsorted(tx, tc, side="right") - 1
+    keep = k >= 0
+    return np.round(sec[keep] * 1e6).astype(np.int64), vx[k[keep]]
+
+
+def _find_ctre_positions(log: LogData, units: Options) -> list[Signal]:
+    out = []
+    for e, clock in _drivestate(log, "modulepositions", "struct:SwerveModulePosition[]"):
+        t, v = _on_clock(log, e, clock)
+        out.append(Signal("positions", t, v, (e.name, clock.name), "CTRE DriveState",
+                          "swerve", "m; rad; timestamps s", why="CTRE's swerve drive state, "
+                          "on its own sample clock (DriveState/Timestamp)"))
+    return out
+
+
+def _find_ctre_pose(log: LogData, units: Options) -> list[Signal]:
+    out = []
+    for e, clock in _drivestate(log, "pose", "struct:Pose2d"):
+        t, v = _on_clock(log, e, clock)
+        out.append(Signal("pose", t, v, (e.name, clock.name), "CTRE DriveState",
+                          units="m; rad", why="CTRE's swerve drive state"))
+    return out
+
+
 _SIDE_WORDS = ("position", "distance", "encoderposition", "encoderdistance",
                "driveposition", "drivedistance")
 
@@ -424,24 +495,32 @@ def _find_side_positions(log: LogData, units: Options) -> list[Signal]:
         if len(pair) != 2:
             continue
         (li, ls), (ri, rs) = pair["left"], pair["right"]
-        scale, text = _drive_scale(unit_of(ls, li.metadata) or unit_of(rs, ri.metadata),
-                                   f"{li.name}", units)
+        unit = unit_of(ls, li.metadata) or unit_of(rs, ri.metadata)
+        if unit is None and units.drive is None:
+            scale, text = 1.0, ("m (left/right distances are read as metres; --drive-units "
+                                "says otherwise)")
+        else:
+            scale, text = _drive_scale(unit, li.name, units)
         tl, vl = log.values(li.name)
         tr, vr = log.values(ri.name)
-        t, P = _join([(tl, vl * scale), (tr, vr * scale)], head or "/")
+        t, P = _join([(tl, vl * scale), (tr, vr * scale)], head or "/", _cycle_clock(log))
         out.append(Signal("positions", t, P, (li.name, ri.name), "left/right doubles",
                           "differential", text))
     return out
 
 
 _ARRAY_WORDS = ("position", "distance", "wheel", "encoder")
+_NOT_POSITION = ("speed", "velocity", "rate", "current", "volt", "accel", "setpoint",
+                 "target", "desired")
 
 
 def _find_array_positions(log: LogData, units: Options) -> list[Signal]:
     """double[2] [left, right] (differential) and double[4] FL, FR, RL, RR (mecanum)."""
     out = []
     for e in _live(log):
-        if e.type != "double[]" or not any(w in fold(e.name) for w in _ARRAY_WORDS):
+        f = fold(e.name)
+        if e.type != "double[]" or not any(w in f for w in _ARRAY_WORDS) or any(
+                w in f for w in _NOT_POSITION):
             continue
         if "odometry" in fold(e.name.rpartition("/")[2]):
             continue                    # AdvantageKit's high-rate arrays
@@ -509,10 +588,8 @@ def _find_high_gyro(log: LogData, units: Options) -> list[Signal]:
             if u is None:
                 continue
             scale, text = _TO_RAD[u], u
-        ty, cy, vy = log.concatenated(e.name)
-        ts, cs, vs = log.concatenated(te.name)
-        if len(cy) != len(cs) or (cy != cs).any():
-            raise DataLogError(f"{e.name} and {te.name} hold different numbers of samples")
+        vs = log.concatenated(te.name)[2]
+        vy = _held(log, te.name, e.name, e.name)
         out.append(Signal("gyro", np.round(vs * 1e6).astype(np.int64), vy * scale,
                           (e.name, te.name), "AdvantageKit high-rate odometry",
                           units=text, highRate=True, why="odometry-thread yaw samples"))
@@ -605,6 +682,9 @@ LAYOUTS: tuple[Layout, ...] = (
     Layout("WPILib struct", "positions",
            "robotpy / Java struct entries (DataLogManager NT mirroring, CTRE DriveState "
            "ModulePositions, drivekin)", "m; rad", _find_struct_positions),
+    Layout("CTRE DriveState", "positions",
+           "CTRE Phoenix 6 generated swerve Telemetry (NT:/DriveState/ModulePositions with "
+           "DriveState/Timestamp)", "m; rad; timestamps s", _find_ctre_positions),
     Layout("AdvantageKit high-rate odometry", "positions",
            "AdvantageKit and robotpy-pykit swerve templates: per-module "
            "OdometryDrivePositions*, OdometryTurnPositions, OdometryTimestamps",
@@ -629,6 +709,8 @@ LAYOUTS: tuple[Layout, ...] = (
            "rad", _find_struct_gyro),
     Layout("double", "gyro", "double entries named gyro, yaw, heading, ...",
            "from the suffix, the metadata or --gyro-units", _find_double_gyro),
+    Layout("CTRE DriveState", "pose", "CTRE's NT:/DriveState/Pose with DriveState/Timestamp",
+           "m; rad; timestamps s", _find_ctre_pose),
     Layout("Pose2d", "pose", "struct:Pose2d entries (AdvantageKit Odometry/Robot, CTRE "
            "DriveState/Pose, PathPlanner currentPose)", "m; rad", _find_struct_pose),
     Layout("Field2d double[3]", "pose", "SmartDashboard Field2d (legacy double[3])",

@@ -7,7 +7,6 @@ reports; the replay itself is :func:`drivekin.replay.replayLog`.
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import json
 import math
 import os
@@ -62,8 +61,23 @@ def build_parser() -> argparse.ArgumentParser:
                         "wheels or [left, right])")
     p.add_argument("--gyro", metavar="NAME",
                    help="gyro entry: struct:Rotation2d, or double with --gyro-units")
-    p.add_argument("--gyro-units", choices=("rad", "deg"),
-                   help="units of a double gyro entry")
+    p.add_argument("--gyro-units", choices=("rad", "deg", "rot"),
+                   help="units of a double gyro entry (default: from its name or metadata)")
+    p.add_argument("--drive-units", choices=("m", "rad", "rot"),
+                   help="units of drive positions that the log does not name: metres, or "
+                        "radians or rotations of the wheel (with --wheel-radius)")
+    p.add_argument("--turn-units", choices=("rad", "deg", "rot"),
+                   help="units of module angles logged as plain numbers")
+    p.add_argument("--wheel-radius", type=number_option(0.0, 1.0, "m", False), metavar="M",
+                   help="wheel radius in m, for drive positions in radians or rotations "
+                        "(AdvantageKit's DrivePositionRad)")
+    p.add_argument("--wheelbase", type=number_option(0.0, 100.0, "m", False), metavar="L",
+                   help="with --trackwidth W: a rectangular swerve or mecanum drive, "
+                        "modules at (±L/2, ±W/2) in the order FL, FR, BL, BR")
+    p.add_argument("--odometry-rate", choices=("auto", "cycle"), default="auto",
+                   help="auto (default): replay the odometry thread's high-rate samples "
+                        "when the log holds them (AdvantageKit OdometryTimestamps); cycle: "
+                        "the once-per-loop values")
     p.add_argument("--pose", metavar="NAME", help="the robot's logged pose (struct:Pose2d)")
     p.add_argument("--truth", metavar="NAME",
                    help="a second struct:Pose2d entry to compare with (e.g. a simulation's "
@@ -77,7 +91,8 @@ def build_parser() -> argparse.ArgumentParser:
                    help="dead wheel pose (contact point in m, rolling direction in degrees), "
                         "once per wheel in the order of the positions array")
     p.add_argument("--trackwidth", type=number_option(0.0, 100.0, "m", False),
-                   metavar="M", help="differential trackwidth, for --heading wheels")
+                   metavar="W", help="trackwidth in m: a differential drive's, for --heading "
+                                     "wheels; with --wheelbase, a rectangular swerve's")
     p.add_argument("--heading", choices=("gyro", "wheels"), default="gyro",
                    help="heading source; 'wheels' (differential only) ignores the gyro")
     p.add_argument("--wheel-scale", type=number_option(0.0, 10.0, "", False), default=1.0,
@@ -101,6 +116,11 @@ def build_parser() -> argparse.ArgumentParser:
                    help="folder for the outputs (default: beside each log)")
     p.add_argument("--no-write", action="store_true",
                    help="do not write LOG-replay.wpilog")
+    p.add_argument("--force", action="store_true",
+                   help="overwrite outputs that exist (default: stop before replaying)")
+    p.add_argument("--list", action="store_true",
+                   help="list every entry of each log (type, records, rate and what replay "
+                        "would use it for) and replay nothing")
     p.add_argument("--plot", action="store_true",
                    help='draw LOG-replay.png (needs matplotlib: pip install "drivekin[plot]")')
     p.add_argument("--json", action="store_true",
@@ -136,14 +156,20 @@ def main(argv) -> int:
         parser.error(f"argument --out-dir: {args.out_dir!r} is not a folder")
     if args.heading == "wheels" and args.trackwidth is None:
         parser.error("--heading wheels needs --trackwidth")
-    if importlib.util.find_spec("wpiutil") is None:
-        parser.error('reading .wpilog files needs robotpy-wpiutil: pip install "drivekin[log]"')
-    need_extras(parser, False, args.plot, "", "--plot")
+    if (args.wheelbase is None) != (args.trackwidth is None) and args.wheelbase is not None:
+        parser.error("--wheelbase needs --trackwidth (modules at (±L/2, ±W/2))")
+    if args.wheelbase is not None and args.module:
+        parser.error("give either --module or --trackwidth with --wheelbase, not both")
+    writes = not (args.no_write or args.list)
+    need_extras(parser, writes, args.plot and not args.list, "writing LOG-replay.wpilog "
+                "(--no-write skips it)", "--plot")
     from drivekin import datalog, replay
 
     config = replay.ReplayConfig(
         drivetrain=args.drivetrain, positions=args.positions, gyro=args.gyro,
-        pose=args.pose, truth=args.truth, gyroUnits=args.gyro_units, modules=args.module,
+        pose=args.pose, truth=args.truth, gyroUnits=args.gyro_units,
+        driveUnits=args.drive_units, turnUnits=args.turn_units, wheelRadius=args.wheel_radius,
+        modules=args.module, wheelbase=args.wheelbase, odometryRate=args.odometry_rate,
         deadWheels=args.dead_wheel, trackwidth=args.trackwidth, heading=args.heading,
         wheelScale=args.wheel_scale, gyroAlign=args.gyro_align, start=args.start,
         compare=args.compare,
@@ -157,25 +183,39 @@ def main(argv) -> int:
         try:
             _progress(f"{tag}: reading")
             log = datalog.read(path, allowTruncated=args.allow_truncated)
-            _progress(f"{tag}: replaying")
-            result = replay.replayLog(log, config)
+            if args.list:
+                if results:
+                    print()
+                results.append(path)
+                print(replay.listing(log, config))
+                continue
             stem = os.path.splitext(os.path.basename(path))[0]
             folder = args.out_dir if args.out_dir is not None else (os.path.dirname(path) or ".")
+            planned = ([os.path.join(folder, stem + "-replay.wpilog")] if writes else []) + (
+                [os.path.join(folder, stem + "-replay.png")] if args.plot else [])
+            exists = [f for f in planned if os.path.exists(f)]
+            if exists and not args.force:
+                raise FileExistsError(f"{' and '.join(exists)} already exist"
+                                      f"{'s' if len(exists) == 1 else ''}: pass --force to "
+                                      f"overwrite, or --out-dir DIR")
+            _progress(f"{tag}: replaying")
+            result = replay.replayLog(log, config)
             outputs = []
-            if not args.no_write:
-                out = os.path.join(folder, stem + "-replay.wpilog")
-                _progress(f"{tag}: writing {out}")
-                replay.writeReplayLog(result, out)
+            for out in planned:
+                if out.endswith(".wpilog"):
+                    _progress(f"{tag}: writing {out}")
+                    replay.writeReplayLog(result, out)
+                else:
+                    _progress(f"{tag}: plotting {out}")
+                    replay.plotReplay(result, out)
                 outputs.append(out)
-            if args.plot:
-                png = os.path.join(folder, stem + "-replay.png")
-                _progress(f"{tag}: plotting {png}")
-                replay.plotReplay(result, png)
-                outputs.append(png)
-        except (datalog.DataLogError, OSError, ValueError, TypeError, ImportError) as e:
+        except (datalog.DataLogError, OSError, ValueError, TypeError, ImportError,
+                MemoryError) as e:
             failed += 1
             message = str(e) if isinstance(e, datalog.DataLogError) else (
-                f"{e}" if isinstance(e, (OSError, ImportError)) else f"{type(e).__name__}: {e}")
+                f"{e}" if isinstance(e, (OSError, ImportError)) else
+                "not enough memory to read it" if isinstance(e, MemoryError) else
+                f"{type(e).__name__}: {e}")
             if isinstance(e, OSError) and e.filename and str(e.filename) not in message:
                 message = f"{e.filename}: {message}"
             first = message if message.startswith(path) else f"{path}: {message}"
@@ -192,9 +232,9 @@ def main(argv) -> int:
                 print()
             results.append(result)
             print(replay.report(result, tuple(outputs)))
-    if args.json:
+    if args.json and not args.list:
         print(json.dumps(results, indent=2))
-    if total > 1:
+    if total > 1 and not args.list:
         _progress(f"replayed {total - failed} of {total} logs")
     return 1 if failed else 0
 

@@ -1,0 +1,166 @@
+"""``python -m drivekin replay`` on logs written by real, independent writers
+(tests/_support/real_logs.py: robotpy-pykit's Logger, ntcore's DataLog mirroring,
+robotpy-wpiutil's DataLogWriter), checked against robotpy-wpimath's own odometry at the
+robot's rate. Each case runs the command line docs/logs-and-replay.md shows for that
+layout (the README test checks the guide shows these same commands)."""
+from __future__ import annotations
+
+import json
+import shlex
+
+import numpy as np
+import pytest
+
+pytest.importorskip("ntcore")
+pytest.importorskip("wpiutil")
+
+from drivekin import datalog, replay                                 # noqa: E402
+from drivekin.app.cli import main                                    # noqa: E402
+from tests._support import real_logs                                 # noqa: E402
+
+# The options a user gives for what each log cannot say (the guide's commands).
+COMMANDS = {
+    "pykit_swerve": "--wheel-radius 0.0508 --trackwidth 0.5842 --wheelbase 0.5842",
+    "ntcore_differential": "--gyro-units deg",
+    "writer_mecanum": "--trackwidth 0.6 --wheelbase 0.5",
+    "writer_swerve_per_module_doubles": ("--drive-units rot --wheel-radius 0.05 "
+                                         "--turn-units deg --gyro-units deg "
+                                         "--trackwidth 0.5 --wheelbase 0.6"),
+    "ctre_drivestate": "--trackwidth 0.5842 --wheelbase 0.5842",
+}
+
+
+@pytest.fixture(scope="module")
+def logs(tmp_path_factory):
+    if "pykit_swerve" in real_logs.ALL:
+        pytest.importorskip("pykit")
+    folder = tmp_path_factory.mktemp("real")
+    return {name: make(folder) for name, make in real_logs.ALL.items()}
+
+
+def _run(path, options, capsys, *extra):
+    code = main(["replay", str(path), "--no-write", "--json", *shlex.split(options), *extra])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    return json.loads(out)[0]
+
+
+def _replayed(rl, options):
+    """The replay the command line runs, as a ReplayResult (the same configuration)."""
+    from drivekin.app.replay_cli import build_parser
+    args = build_parser().parse_args([str(rl.path), *shlex.split(options)])
+    cfg = replay.ReplayConfig(
+        driveUnits=args.drive_units, turnUnits=args.turn_units, gyroUnits=args.gyro_units,
+        wheelRadius=args.wheel_radius, trackwidth=args.trackwidth, wheelbase=args.wheelbase,
+        odometryRate=args.odometry_rate)
+    return replay.replayLog(rl.path, cfg)
+
+
+@pytest.mark.parametrize("name", sorted(COMMANDS))
+def test_replay_reproduces_robotpy_wpimath_odometry(logs, capsys, name):
+    rl = logs[name]
+    d = _run(rl.path, COMMANDS[name], capsys)
+    assert d["drivetrain"] == rl.drivetrain
+    r = _replayed(rl, COMMANDS[name])
+    if name == "ctre_drivestate":
+        # NetworkTables stamps each record 800 µs after CTRE's own sample time; the
+        # samples are the same, one for one.
+        assert len(r.t) == len(rl.t_us)
+        poses = r.poses
+    else:
+        # Writers that log only changes (robotpy-pykit, NetworkTables) leave no sample
+        # while the robot rests: the replayed pose then is the latest one, as on the robot.
+        k = np.searchsorted(r.t, rl.t_us, side="right") - 1
+        assert r.t[0] == rl.t_us[0] and (k >= 0).all()
+        poses = r.poses[k]
+    err = np.hypot(*(poses[:, :2] - rl.truth[:, :2]).T)
+    assert err.max() < 1e-9, err.max()
+    head = np.abs(np.angle(np.exp(1j * (poses[:, 2] - rl.truth[:, 2]))))
+    assert head.max() < 1e-9
+
+
+def test_pykit_high_rate_samples_are_replayed_at_their_rate(logs, capsys):
+    rl = logs["pykit_swerve"]
+    d = _run(rl.path, COMMANDS["pykit_swerve"], capsys)
+    assert round(d["rates_hz"]["positions"]) == 250
+    assert any("250 Hz samples, not the 50 Hz cycle values" in n for n in d["notes"])
+    assert d["entries"]["pose"] == "/RealOutputs/Odometry/Robot"
+    assert "not /RealOutputs/Odometry/TrajectorySetpoint (its name says 'setpoint')" in \
+        d["why"]["pose"]
+    # The logged pose was produced at 250 Hz: replayed so, it agrees to rounding.
+    assert d["vs_logged"]["max_position_m"] < 1e-9
+    assert d["warnings"] == []
+
+
+def test_cycle_rate_replay_of_a_250_hz_robot_is_flagged(logs, capsys):
+    # Replaying only the 50 Hz values reports drift that is not there (the issue's
+    # 2.6 cm / 5.9 cm); the run says it ignored the high-rate samples.
+    rl = logs["pykit_swerve"]
+    d = _run(rl.path, COMMANDS["pykit_swerve"], capsys, "--odometry-rate", "cycle")
+    assert round(d["rates_hz"]["positions"]) == 50
+    assert any("holds high-rate odometry samples" in n for n in d["notes"])
+    assert d["vs_logged"]["max_position_m"] > 1e-3
+    assert abs(d["vs_logged"]["max_position_m"] - rl.notes["max_error_50hz_m"]) < 2e-3
+
+
+def test_names_match_whatever_the_case_underscores_or_nt_prefix(logs, capsys):
+    rl = logs["ntcore_differential"]
+    d = _run(rl.path, COMMANDS["ntcore_differential"], capsys,
+             "--pose", "/smartdashboard/FIELD/robot", "--gyro", "/Drive/gyro_angle")
+    assert d["entries"]["pose"] == "NT:/SmartDashboard/Field/Robot"
+    assert d["entries"]["gyro"] == "NT:/Drive/GyroAngle"
+
+
+def test_a_misspelt_name_gets_a_did_you_mean(logs, capsys):
+    rl = logs["ntcore_differential"]
+    code = main(["replay", str(rl.path), "--no-write", "--gyro-units", "deg",
+                 "--pose", "/SmartDashboard/Feild/Robot"])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert "did you mean 'NT:/SmartDashboard/Field/Robot'" in err
+
+
+def test_a_degrees_gyro_read_as_radians_is_refused(logs, capsys):
+    rl = logs["ntcore_differential"]
+    code = main(["replay", str(rl.path), "--no-write", "--gyro-units", "rad"])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert "probably in degrees (--gyro-units deg)" in err
+
+
+def test_wheel_radians_read_as_metres_are_refused(logs, capsys):
+    # AdvantageKit's DrivePositionRad taken for metres: 1 / 0.0508 times too far.
+    rl = logs["pykit_swerve"]
+    code = main(["replay", str(rl.path), "--no-write", "--drive-units", "m",
+                 "--trackwidth", "0.5842", "--wheelbase", "0.5842"])
+    err = capsys.readouterr().err
+    assert code == 1
+    assert "faster than any robot: check the units" in err
+
+
+def test_list_shows_every_entry_and_its_use(logs, capsys):
+    rl = logs["pykit_swerve"]
+    assert main(["replay", str(rl.path), "--list", "--wheel-radius", "0.0508"]) == 0
+    out = capsys.readouterr().out
+    log = datalog.read(rl.path)
+    for name in log.entries:
+        if not name.startswith(("/.schema/", "NT:/.schema/")):
+            assert name in out
+    line = next(x for x in out.splitlines() if "/RealOutputs/Odometry/Robot" in x)
+    assert "pose (chosen)" in line
+    line = next(x for x in out.splitlines() if "/Drive/Module0/odometryTimestamps" in x)
+    assert "positions (chosen)" in line and "250 Hz" not in line.split()[0]
+
+
+def test_an_existing_output_is_not_overwritten_without_force(logs, capsys, tmp_path):
+    rl = logs["writer_mecanum"]
+    args = ["replay", str(rl.path), "--out-dir", str(tmp_path),
+            *shlex.split(COMMANDS["writer_mecanum"])]
+    assert main(args) == 0
+    out = tmp_path / (rl.path.stem + "-replay.wpilog")
+    before = out.stat().st_mtime_ns
+    capsys.readouterr()
+    assert main(args) == 1
+    assert "already exists: pass --force" in capsys.readouterr().err
+    assert out.stat().st_mtime_ns == before
+    assert main(args + ["--force"]) == 0
