@@ -3,13 +3,12 @@
 * Hypothesis profiles: ``dev`` (the default, which the README's test command and CI run:
   derandomized, so a landing never depends on the luck of the draw) and ``explore``
   (random seeds, five times the examples: run it while developing to find new
-  counter-examples, then pin each one with ``@example``), and ``emulated`` (derandomized,
-  a tenth of the examples: the aarch64 wheel's tests under qemu-user,
-  scripts/wheel_tests.sh). Pick one with the environment variable ``HYPOTHESIS_PROFILE``.
+  counter-examples, then pin each one with ``@example``). Pick one with the environment
+  variable ``HYPOTHESIS_PROFILE``.
 * ``DRIVEKIN_TEST_INSTALLED=1`` (scripts/wheel_tests.sh): the tests must run against an
   installed drivekin, not the source tree; the session fails at once otherwise.
 * The shared helper modules live in the package ``tests._support`` (``strategies``,
-  ``alloc``, ``wpilib_port``, ``wpilog_logs``) and are imported from it by full name;
+  ``alloc``, ``wpilib_port``, ``wpilog_logs``, ``wpilog_bytes``, ``real_logs``) and are imported from it by full name;
   ``tests`` is a package, so nothing edits ``sys.path`` (see ``tests/README.md``).
 * The robotpy-wpimath oracle is optional: ``wpimath_kin`` / ``wpimath_geo`` fixtures and
   :func:`require_wpimath` skip cleanly when it is not installed.
@@ -40,13 +39,6 @@ settings.register_profile(
     suppress_health_check=_COMMON_SUPPRESS,
     print_blob=True,
     database=None,
-)
-settings.register_profile(
-    "emulated",
-    max_examples=10,
-    derandomize=True,
-    deadline=None,
-    suppress_health_check=_COMMON_SUPPRESS,
 )
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "dev"))
 

@@ -30,15 +30,11 @@ from __future__ import annotations
 
 import gc
 import itertools
-import os
 import tracemalloc
 
 import pytest
 
-# Measured calls per test: 10,000, or DRIVEKIN_ALLOC_CALLS (scripts/wheel_tests.sh runs
-# fewer under emulation, where Python is about 100 times slower; any allocation per call
-# still shows in 1,000).
-CALLS = int(os.environ.get("DRIVEKIN_ALLOC_CALLS", 10_000))
+CALLS = 10_000           # measured calls per test
 WARMUP = 1000
 
 
