@@ -3,19 +3,22 @@ pose the robot logged (``python -m drivekin replay``; command line in ``app/repl
 
 Steps, for one ``.wpilog`` file (read with :mod:`drivekin.datalog`):
 
-1. **Find the entries.** Wheel or module positions, by type unless named
-   (``positions=``): ``struct:SwerveModulePosition[]`` (swerve, M modules),
-   ``struct:MecanumDriveWheelPositions`` (mecanum), ``struct:DifferentialDriveWheelPositions``
-   (differential); dead wheels are a ``double[]`` entry that must be named, with their
-   poses. The gyro: a ``struct:Rotation2d`` entry (or a named ``double`` entry with its
-   units). The logged pose, if any: a ``struct:Pose2d`` entry. When several entries of
-   a type exist, the one whose name contains "gyro" (for the gyro) or "odometry" (for
-   the pose) is taken if exactly one does; otherwise the replay stops and lists them.
-   Entries under ``/drivekin/`` (an earlier replay's output) are never picked.
+1. **Find the entries** through the layouts table of :mod:`drivekin._core.loglayouts`
+   (WPILib structs, CTRE's DriveState, AdvantageKit / robotpy-pykit per-module entries
+   and their high-rate odometry arrays, left/right doubles, ``double[]`` wheel arrays,
+   Field2d poses), unless named (``positions=``, ``gyro=``, ``pose=``; names match
+   regardless of case, underscores and the ``NT:`` prefix). Where one layout finds
+   several candidates, the best-ranked is taken and the result says why
+   (:attr:`ReplayResult.why`); a tie stops the replay and lists them. High-rate odometry
+   samples are preferred to cycle values (``odometryRate="cycle"`` inverts that).
+   Impossible units (wheels faster than ``MAX_WHEEL_SPEED``, a gyro turning faster than
+   ``MAX_TURN_RATE``) are refused. Entries under ``/drivekin/`` (an earlier replay's
+   output) are never picked.
 2. **Geometry.** Module (or mecanum wheel) offsets from the options, else from a
    ``struct:SwerveDriveKinematics__M`` / ``struct:MecanumDriveKinematics`` entry in the
-   log. Dead wheels: their poses (x, y, rolling direction). ``wheelScale`` multiplies every
-   wheel distance (a corrected wheel radius: true radius / the radius the robot used).
+   log, or ``trackwidth`` with ``wheelbase`` for a rectangle. Dead wheels: their poses
+   (x, y, rolling direction). ``wheelScale`` multiplies every wheel distance (a corrected
+   wheel radius: true radius / the radius the robot used).
 3. **Alignment** (the rule a robot's odometry loop follows): the odometry is updated once
    per wheel-position sample, with the **latest gyro sample at or before** that sample's
    timestamp (``gyroAlign="latest"``); ``"interpolate"`` instead interpolates the

@@ -2,10 +2,12 @@
 (tests/_support/real_logs.py: robotpy-pykit's Logger, ntcore's DataLog mirroring,
 robotpy-wpiutil's DataLogWriter), checked against robotpy-wpimath's own odometry at the
 robot's rate. Each case runs the command line docs/logs-and-replay.md shows for that
-layout (the README test checks the guide shows these same commands)."""
+layout (the last tests check the guide shows these same commands, and the layouts
+table as the code has it)."""
 from __future__ import annotations
 
 import json
+import pathlib
 import shlex
 
 import numpy as np
@@ -164,3 +166,16 @@ def test_an_existing_output_is_not_overwritten_without_force(logs, capsys, tmp_p
     assert "already exists: pass --force" in capsys.readouterr().err
     assert out.stat().st_mtime_ns == before
     assert main(args + ["--force"]) == 0
+
+
+GUIDE = pathlib.Path(__file__).resolve().parents[2] / "docs" / "logs-and-replay.md"
+
+
+@pytest.mark.parametrize("name", sorted(COMMANDS))
+def test_the_guide_shows_each_layouts_command(name):
+    assert f"`python -m drivekin replay LOG.wpilog {COMMANDS[name]}`" in GUIDE.read_text()
+
+
+def test_the_guide_shows_the_layouts_table():
+    from drivekin._core.loglayouts import layouts_table
+    assert layouts_table() in GUIDE.read_text()

@@ -42,13 +42,16 @@ def build_parser() -> argparse.ArgumentParser:
             "Recompute a robot's odometry from WPILib DataLogs (.wpilog): the gyro and "
             "wheel or module positions the robot logged go through drivekin's odometry, "
             "optionally with corrected geometry, and the result is compared with the pose "
-            "the robot logged. Entries are found by type (struct:SwerveModulePosition[], "
-            "struct:MecanumDriveWheelPositions, struct:DifferentialDriveWheelPositions; "
-            "gyro struct:Rotation2d; pose struct:Pose2d) unless named. The odometry is "
-            "updated at every wheel-position sample with the latest gyro sample at or "
-            "before it (or the gyro interpolated, --gyro-align interpolate). For each log "
-            "it prints the drift statistics and writes LOG-replay.wpilog (the original "
-            "entries plus /drivekin/ReplayPose and /drivekin/ReplayError); --plot also "
+            "the robot logged. Entries are found through a table of log layouts "
+            "(WPILib structs, AdvantageKit and robotpy-pykit inputs with their high-rate "
+            "odometry arrays, CTRE's DriveState, per-module and left/right doubles, "
+            "double[] wheel arrays, Field2d poses; --list shows what each entry would be "
+            "used for) unless named. The odometry is updated at every wheel-position "
+            "sample with the latest gyro sample at or before it (or the gyro "
+            "interpolated, --gyro-align interpolate). For each log it prints the drift "
+            "statistics and writes LOG-replay.wpilog (the original entries plus "
+            "/drivekin/ReplayPose and /drivekin/ReplayError; an existing one only with "
+            "--force); --plot also "
             "draws LOG-replay.png. Progress goes to stderr. Exit status: 0 if every log "
             "was replayed, 1 if any failed, 2 for bad options."),
         epilog="Example: python -m drivekin replay match.wpilog --wheel-scale 1.02 --plot. "
@@ -57,8 +60,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--drivetrain", choices=("auto",) + DRIVETRAINS, default="auto",
                    help="drivetrain (default: from the type of the positions entry)")
     p.add_argument("--positions", metavar="NAME",
-                   help="entry of wheel or module positions (a double[] entry for dead "
-                        "wheels or [left, right])")
+                   help="entry of wheel or module positions, or the folder of per-module "
+                        "entries (e.g. /Drive); a double[] entry for dead wheels or [left, "
+                        "right]")
     p.add_argument("--gyro", metavar="NAME",
                    help="gyro entry: struct:Rotation2d, or double with --gyro-units")
     p.add_argument("--gyro-units", choices=("rad", "deg", "rot"),
