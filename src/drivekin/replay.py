@@ -49,6 +49,7 @@ logged pose, ``/drivekin/ReplayError`` (``double``, m) into a new ``.wpilog``;
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import os
 from dataclasses import dataclass, field
@@ -597,7 +598,7 @@ def replayLog(log: LogData | str | os.PathLike[str],
     if truth is not None and len(truth[0]):
         result.vsTruth = _drift(tw, poses, truth[0], truth[1], cfg.compare)
     if cycle is not None and result.vsLogged is not None:
-        result.warnings += _rate_check(result, cycle, tg, G, cfg, kin, start)
+        result.warnings += _rate_check(log, cfg, result)
     return result
 
 
@@ -635,27 +636,24 @@ def _run(kind: str, kin: Any, gyro: np.ndarray, P: np.ndarray, start: Pose2d) ->
     return replayPoses(odo, gyro, P)
 
 
-def _rate_check(result: ReplayResult, cycle: Signal, tg: np.ndarray, G: np.ndarray,
-                cfg: ReplayConfig, kin: Any, start: Pose2d) -> list[str]:
+def _rate_check(log: LogData, cfg: ReplayConfig, result: ReplayResult) -> list[str]:
     """Replay the cycle values too; warn when the logged pose follows them, not the
     high-rate samples (a robot whose odometry ran at the loop rate after all)."""
-    assert result.vsLogged is not None and result.logged is not None
-    P = cycle.values.copy()
-    if cfg.wheelScale != 1.0:
-        P[:, :, 0] *= cfg.wheelScale
+    mine = result.vsLogged
+    assert mine is not None
+    if mine.rmsPosition <= 1e-3:
+        return []
     try:
-        tc, Pc, gc, _, _, _ = _align(cycle.t, P, tg, G, cfg, cycle.source)
+        other = replayLog(log, dataclasses.replace(cfg, odometryRate="cycle"))
     except DataLogError:
         return []
-    other = _drift(tc, _run(result.drivetrain, kin, gc, Pc, start), *result.logged,
-                   cfg.compare)
-    mine = result.vsLogged
-    if other is None or mine.rmsPosition <= 1e-3 or other.rmsPosition >= 0.2 * mine.rmsPosition:
+    if other.vsLogged is None or other.vsLogged.rmsPosition >= 0.2 * mine.rmsPosition:
         return []
-    return [f"the logged pose follows the {layouts._rate(cycle.t):.0f} Hz cycle values "
-            f"(RMS {_cm(other.rmsPosition)}) far better than the {result.rates['positions']:.0f}"
-            f" Hz samples replayed (RMS {_cm(mine.rmsPosition)}): it was evidently "
-            f"produced at the cycle rate; --odometry-rate cycle replays that"]
+    return [f"the logged pose follows the {other.rates['positions']:.0f} Hz cycle values "
+            f"(RMS {_cm(other.vsLogged.rmsPosition)}) far better than the "
+            f"{result.rates['positions']:.0f} Hz samples replayed (RMS "
+            f"{_cm(mine.rmsPosition)}): it was evidently produced at the cycle rate; "
+            f"--odometry-rate cycle replays that"]
 
 
 def _named_pose(log: LogData, name: str, option: str, opts: layouts.Options) -> Signal:
@@ -875,7 +873,7 @@ def report(result: ReplayResult, outputs: tuple[str, ...] = ()) -> str:
         f"{r.source}: {r.drivetrain} ({r.odometry})",
         f"  positions  {entry('positions')}{because('positions')}",
         f"  gyro       {entry('gyro') if 'gyro' in r.rates else e['gyro']}{because('gyro')}",
-        f"  pose       " + (f"{entry('pose')}{because('pose')}" if 'pose' in e else
+        "  pose       " + (f"{entry('pose')}{because('pose')}" if 'pose' in e else
                             f"(none: nothing to compare with; {r.why.get('pose', '')})"),
         f"  geometry   {r.geometry}",
         f"  alignment  {align}; largest wheel-sample gap {r.maxWheelGap * 1e3:.1f} ms"

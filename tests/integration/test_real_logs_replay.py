@@ -179,3 +179,40 @@ def test_the_guide_shows_each_layouts_command(name):
 def test_the_guide_shows_the_layouts_table():
     from drivekin._core.loglayouts import layouts_table
     assert layouts_table() in GUIDE.read_text()
+
+
+def test_a_pose_produced_at_the_cycle_rate_is_flagged(logs, capsys, tmp_path):
+    # The same 250 Hz inputs, but the logged Odometry/Robot is what a robot integrating
+    # only its 50 Hz cycle values computed: the replay at 250 Hz warns that the logged
+    # pose follows the cycle values.
+    rl = logs["pykit_swerve"]
+    path = tmp_path / "pose_at_50hz.wpilog"
+    with datalog.Writer(path) as w:
+        w.copyFrom(datalog.read(rl.path), exclude=["/RealOutputs/Odometry/Robot"])
+        w.appendSeries("/RealOutputs/Odometry/Robot", "struct:Pose2d",
+                       rl.notes["t_us_50hz"], rl.notes["truth_50hz"])
+    d = _run(path, COMMANDS["pykit_swerve"], capsys)
+    assert round(d["rates_hz"]["positions"]) == 250
+    assert any("the logged pose follows the 50 Hz cycle values" in x for x in d["warnings"])
+
+
+@pytest.mark.parametrize("names, chosen", [
+    (["/RealOutputs/Odometry/TrajectorySetpoint", "/RealOutputs/Odometry/Robot"],
+     "/RealOutputs/Odometry/Robot"),
+    (["/PathPlanner/targetPose", "/PathPlanner/currentPose"], "/PathPlanner/currentPose"),
+    (["NT:/Vision/RobotPose", "NT:/Drive/EstimatedPose"], "NT:/Drive/EstimatedPose"),
+])
+def test_the_robots_own_pose_is_chosen_over_targets(tmp_path, names, chosen):
+    from drivekin import Pose2d, Rotation2d, SwerveModulePosition
+    path = tmp_path / "poses.wpilog"
+    with datalog.Writer(path) as w:
+        for k in range(1, 4):
+            t = 20_000 * k
+            w.append("/Drive/Modules", [SwerveModulePosition(0.01 * k, Rotation2d(0.0))] * 4, t)
+            w.append("/Drive/Gyro", Rotation2d(0.0), t)
+            for i, n in enumerate(names):
+                w.append(n, Pose2d(float(i), 0.0, Rotation2d(0.0)), t)
+    r = replay.replayLog(path, replay.ReplayConfig(trackwidth=0.5, wheelbase=0.5))
+    assert r.entries["pose"] == chosen
+    other = next(n for n in names if n != chosen)
+    assert other in r.why["pose"]

@@ -630,8 +630,8 @@ _POSE_GOOD = (("odometry/robot", 6, "AdvantageKit's odometry output"),
               ("robot", 1, "the robot"),
               ("pose", 1, "a pose"))
 _POSE_BAD = ("setpoint", "target", "trajectory", "desired", "goal", "reference",
-             "commanded", "path", "vision", "camera", "tag", "replayoutputs", "truth",
-             "sim", "ghost", "auto", "start", "initial", "reset")
+             "commanded", "vision", "camera", "tag", "replayoutputs", "truth", "sim",
+             "ghost", "start", "initial", "reset")
 
 
 def pose_score(name: str) -> tuple[int, str]:
