@@ -261,7 +261,8 @@ def _positions(log: LogData, cfg: ReplayConfig, units: layouts.Options
                ) -> tuple[Signal, Signal | None, str]:
     """The positions signal, the cycle-rate one beside high-rate samples (or None), why."""
     want = cfg.drivetrain
-    cands = [s for s in layouts.candidates(log, "positions", units)
+    problems: list[DataLogError] = []
+    cands = [s for s in layouts.candidates(log, "positions", units, problems)
              if want in ("auto", s.drivetrain)]
     if cfg.odometryRate == "cycle":
         cands = [s for s in cands if not s.highRate] or cands
@@ -274,6 +275,8 @@ def _positions(log: LogData, cfg: ReplayConfig, units: layouts.Options
         if want == "deadwheel":
             raise DataLogError("dead-wheel positions are a double[] entry: name it with "
                                "--positions")
+        if not cands and problems:
+            raise problems[0]
         if not cands:
             found = ", ".join(dict.fromkeys(lay.name for lay in layouts.LAYOUTS
                                             if lay.role == "positions"))
@@ -308,7 +311,8 @@ def _named_array(log: LogData, name: str, want: str, ragged: str) -> Signal:
 
 def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Signal,
           pose: Signal | None) -> tuple[Signal, str]:
-    cands = layouts.candidates(log, "gyro", units)
+    problems: list[DataLogError] = []
+    cands = layouts.candidates(log, "gyro", units, problems)
     if cfg.gyro is not None:
         info = layouts.resolve(log, cfg.gyro, "--gyro")
         hits = [s for s in cands if info.name in s.entries]
@@ -332,6 +336,8 @@ def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Si
         else:
             cands = [s for s in cands if not s.highRate]
         named = [s for s in cands if s.why]
+        if not cands and problems:
+            raise problems[0]
         if not cands and pose is not None:
             # CTRE's generated Telemetry publishes the drive state without the gyro; the
             # pose's heading is the gyro's plus a constant there, which is all odometry
@@ -732,10 +738,9 @@ def listing(log: LogData, config: ReplayConfig | None = None) -> str:
                 use.setdefault(n, []).append(what)
 
     for role in ("positions", "gyro", "pose"):
-        try:
-            mark(layouts.candidates(log, role, opts), role)
-        except DataLogError as e:
-            problems.append(f"{role}: {e}")
+        found: list[DataLogError] = []
+        mark(layouts.candidates(log, role, opts, found), role)
+        problems += [f"{role}: {e}" for e in found]
     try:
         pos, _, _ = _positions(log, cfg, opts)
         chosen.update(dict.fromkeys(pos.entries, "positions"))

@@ -727,10 +727,19 @@ def layouts_table() -> str:
     return "\n".join(rows)
 
 
-def candidates(log: LogData, role: str, units: Options) -> list[Signal]:
-    """Every signal of ``role`` the layouts find, in the table's order."""
+def candidates(log: LogData, role: str, units: Options,
+               problems: list[DataLogError] | None = None) -> list[Signal]:
+    """Every signal of ``role`` the layouts find, in the table's order. A layout that
+    recognises its entries but cannot read them as asked (units the log does not give)
+    adds its DataLogError to ``problems`` (raised at once when that is None) and the
+    other layouts still look."""
     out: list[Signal] = []
     for lay in LAYOUTS:
         if lay.role == role:
-            out += lay.find(log, units)
+            try:
+                out += lay.find(log, units)
+            except DataLogError as e:
+                if problems is None:
+                    raise
+                problems.append(e)
     return out
