@@ -66,7 +66,7 @@ SIMD: bool
 renormalisation: results within the module's documented bound instead of bit-identical to
 the per-call API)."""
 
-__all__ = ["desaturate", "desaturateWheelVelocities", "discretize", "exp", "log", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
+__all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize", "exp", "log", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
 
 
 def toSwerveModuleVelocities(
@@ -165,6 +165,17 @@ def discretize(
 ) -> _Array:
     """:meth:`ChassisVelocities.discretize` for ``(3,)`` / ``(N, 3)`` velocities; ``dt`` (s)
     is a float or an ``(N,)`` stack."""
+
+def desaturatedDiscretize(
+    kinematics: SwerveDriveKinematics,
+    chassisVelocities: _Array,
+    dt: _Array | float,
+    attainableMaxModuleVelocity: float,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`SwerveDriveKinematics.desaturatedDiscretize` for ``(3,)`` / ``(N, 3)``
+    velocities; ``dt`` (s) is a float or an ``(N,)`` stack. Every sample is checked
+    before any is written."""
 
 def toRobotRelative(
     chassisVectors: _Array,

@@ -52,13 +52,16 @@ import numpy as np
 
 from drivekin._core.types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 from drivekin._core.args cimport check_float64, check_memory
-from drivekin._core.kernels cimport (chassis_discretize_cs, desaturate_factors, gyro_turn,
+from drivekin._core.kernels cimport (chassis_discretize, chassis_discretize_cs,
+                                     desaturate_factors, desaturated_discretize_scale,
+                                     gyro_turn,
                                      max_abs, odometry_motion, pose, pose_transform_by,
                                      rot_cs, rot_neg, transform_log_angle, twist_exp_cs,
                                      vec, vec_rotate, wheels_desaturate)
 from drivekin.geometry cimport Translation2d
 from drivekin._core.drivetrain cimport Drivetrain
 from drivekin.odometry cimport _Odometry
+from drivekin.swerve cimport SwerveDriveKinematics, check_desaturated_discretize
 from drivekin._core.errors import type_name
 
 cnp.import_array()
@@ -86,10 +89,10 @@ if not dk_cpu_ok():
 cdef enum:
     CHUNK = 32
 
-__all__ = ["desaturate", "desaturateWheelVelocities", "discretize", "exp", "log", "replay",
-           "toChassisAccelerations", "toChassisVelocities", "toFieldRelative",
-           "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities",
-           "toWheelAccelerations", "toWheelVelocities"]
+__all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize",
+           "exp", "log", "replay", "toChassisAccelerations", "toChassisVelocities",
+           "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations",
+           "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
 
 
 # ---------------------------------------------------------------------------------------
@@ -495,6 +498,41 @@ def discretize(chassisVelocities, dt, out=None):
                 o.data[3 * (i0 + i)] = d.x
                 o.data[3 * (i0 + i) + 1] = d.y
                 o.data[3 * (i0 + i) + 2] = d.z
+    return o.array
+
+
+def desaturatedDiscretize(kinematics, chassisVelocities, dt, double attainableMaxModuleVelocity,
+                          out=None):
+    """:meth:`SwerveDriveKinematics.desaturatedDiscretize` for ``(3,)`` / ``(N, 3)``
+    velocities; ``dt`` (s) is a float or an ``(N,)`` stack. Every sample is checked
+    before any is written."""
+    if type(kinematics) is not SwerveDriveKinematics:
+        raise TypeError(f"desaturatedDiscretize takes a SwerveDriveKinematics as its first "
+                        f"argument, got {type_name(kinematics)}")
+    cdef SwerveDriveKinematics k = <SwerveDriveKinematics>kinematics
+    k._ready()
+    cdef _Stack v = _stack(chassisVelocities, (3,), "chassisVelocities")
+    cdef _Stack t = _per_sample(dt, v.n, v.single, "dt")
+    cdef _Stack o = _result(out, v.n, v.single, (3,), (v, t), "chassisVelocities")
+    cdef Py_ssize_t i, count = v.n
+    cdef vec3_t c, d
+    cdef double f
+    for i in range(count):
+        c.x, c.y, c.z = v.data[3 * i], v.data[3 * i + 1], v.data[3 * i + 2]
+        try:
+            check_desaturated_discretize(c, t.data[i], attainableMaxModuleVelocity)
+        except ValueError as e:
+            raise ValueError(f"sample {i}: {e}") from None
+    with nogil:
+        for i in range(count):
+            f = desaturated_discretize_scale(k.n, k.mx, k.my, v.data[3 * i],
+                                             v.data[3 * i + 1], v.data[3 * i + 2],
+                                             t.data[i], attainableMaxModuleVelocity)
+            d = chassis_discretize(f * v.data[3 * i], f * v.data[3 * i + 1],
+                                   f * v.data[3 * i + 2], t.data[i])
+            o.data[3 * i] = d.x
+            o.data[3 * i + 1] = d.y
+            o.data[3 * i + 2] = d.z
     return o.array
 
 

@@ -3,7 +3,7 @@
 # place without creating Python objects.
 cimport cython
 from drivekin._core.drivetrain cimport Drivetrain
-from drivekin._core.types cimport rot2_t, vec2_t
+from drivekin._core.types cimport vec3_t, rot2_t, vec2_t
 from drivekin.chassis cimport ChassisVelocities
 from drivekin.geometry cimport Translation2d
 
@@ -62,3 +62,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
     cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1
     cdef int _deltas(self, object start, object end) except -1
     cdef int _read(self, object states, type cls, str what) except -1
+    cdef int _desaturated_discretize(self, vec3_t v, double dt, double limit,
+                                     vec3_t* out) except -1
+
+
+cdef int check_desaturated_discretize(vec3_t v, double dt, double limit) except -1

@@ -187,6 +187,33 @@ class SwerveDriveKinematics(Drivetrain):
         or a float64 C-contiguous writeable numpy array of shape (N, 2) that receives
         ``[velocity m/s, angle rad]`` per module. Returns None."""
 
+    def desaturatedDiscretize(
+        self,
+        chassisVelocities: ChassisVelocities,
+        dt: float,
+        attainableMaxModuleVelocity: float,
+    ) -> ChassisVelocities:
+        """Return ``discretize(k·v, dt)`` for the largest k in [0, 1] at which no module
+        (about the robot origin) goes faster than ``attainableMaxModuleVelocity`` (m/s).
+
+        ``v`` is the robot-relative ``chassisVelocities`` (m/s, rad/s) and ``dt`` the loop
+        period (s, > 0). Unlike ``discretize`` followed by
+        :meth:`desaturateWheelVelocities`, which scales the modules after the discretize
+        correction and so turns the direction of travel by (k − 1)·ω·dt/2 (the skew
+        WPILib's ``discretize`` documentation warns about), the robot moves exactly in
+        the commanded direction, and unlike desaturating before discretizing, no module
+        ends above the limit. k is exact to 1e-14 relative; with no saturation the result
+        is ``chassisVelocities.discretize(dt)``. Every input must be finite (the limit
+        may be +inf) and the limit ≥ 0."""
+    def desaturatedDiscretizeInto(
+        self,
+        chassisVelocities: ChassisVelocities,
+        dt: float,
+        attainableMaxModuleVelocity: float,
+        out: ChassisVelocities,
+    ) -> None:
+        """Allocation-free :meth:`desaturatedDiscretize`: the result goes into ``out``
+        (which may be ``chassisVelocities``). Returns None."""
     @overload
     def toChassisVelocities(
         self, moduleVelocities: Sequence[SwerveModuleVelocity]

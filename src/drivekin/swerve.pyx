@@ -19,12 +19,12 @@ from libc.string cimport memcpy
 
 import numpy as np
 
-from drivekin._core.types cimport desat_t, rot2_t, vec2_t
+from drivekin._core.types cimport desat_t, rot2_t, vec2_t, vec3_t
 from drivekin._core.args cimport as_fast, check_type, exact_type, float64_data, is_number, snapshot
 from drivekin._core.kernels cimport (
-    clamp01, desaturate_factors, forward_solve, java_equals, jmax, max_abs, rot_eq,
-    rot_interp, rot_minus, rot_plus, rot_rad, rot_radians, swerve_ik, swerve_ik_accel,
-    vec, vec_eq,
+    chassis_discretize, clamp01, desaturate_factors, desaturated_discretize_scale,
+    forward_solve, java_equals, jmax, max_abs, rot_eq, rot_interp, rot_minus, rot_plus,
+    rot_rad, rot_radians, swerve_ik, swerve_ik_accel, vec, vec_eq,
 )
 from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
 from drivekin.chassis cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
@@ -640,6 +640,46 @@ cdef class SwerveDriveKinematics(Drivetrain):
             self.s2[i] = (<_ModuleVector>items[i]).a.s
         return 0
 
+    def desaturatedDiscretize(self, chassisVelocities: ChassisVelocities, double dt,
+                              double attainableMaxModuleVelocity):
+        """Return ``discretize(k·v, dt)`` for the largest k in [0, 1] at which no module
+        (about the robot origin) goes faster than ``attainableMaxModuleVelocity`` (m/s).
+
+        ``v`` is the robot-relative ``chassisVelocities`` (m/s, rad/s) and ``dt`` the loop
+        period (s, > 0). Unlike ``discretize`` followed by
+        :meth:`desaturateWheelVelocities`, which scales the modules after the discretize
+        correction and so turns the direction of travel by (k − 1)·ω·dt/2 (the skew
+        WPILib's ``discretize`` documentation warns about), the robot moves exactly in
+        the commanded direction, and unlike desaturating before discretizing, no module
+        ends above the limit. k is exact to 1e-14 relative; with no saturation the result
+        is ``chassisVelocities.discretize(dt)``. Every input must be finite (the limit
+        may be +inf) and the limit ≥ 0."""
+        cdef vec3_t d
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        self._desaturated_discretize((<ChassisVelocities>chassisVelocities).v, dt,
+                                     attainableMaxModuleVelocity, &d)
+        return new_chassis_velocities(d.x, d.y, d.z)
+
+    def desaturatedDiscretizeInto(self, chassisVelocities: ChassisVelocities, double dt,
+                                  double attainableMaxModuleVelocity,
+                                  out: ChassisVelocities):
+        """Allocation-free :meth:`desaturatedDiscretize`: the result goes into ``out``
+        (which may be ``chassisVelocities``). Returns None."""
+        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(out, ChassisVelocities, "out")
+        self._desaturated_discretize((<ChassisVelocities>chassisVelocities).v, dt,
+                                     attainableMaxModuleVelocity,
+                                     &(<ChassisVelocities>out).v)
+
+    cdef int _desaturated_discretize(self, vec3_t v, double dt, double limit,
+                                     vec3_t* out) except -1:
+        check_desaturated_discretize(v, dt, limit)
+        self._ready()
+        cdef double k = desaturated_discretize_scale(self.n, self.mx, self.my, v.x, v.y,
+                                                     v.z, dt, limit)
+        out[0] = chassis_discretize(k * v.x, k * v.y, k * v.z, dt)
+        return 0
+
     def toChassisVelocities(self, moduleVelocities, *more):
         """Return the least-squares ChassisVelocities (robot-relative) for N measured
         module velocities (SwerveModuleVelocity, as arguments or one sequence, or an (N, 2)
@@ -867,6 +907,19 @@ cdef class SwerveDriveKinematics(Drivetrain):
 
 # ---------------------------------------------------------------------------------------
 # Desaturation: parse the two Java overloads once, then one kernel decides the factors.
+
+cdef int check_desaturated_discretize(vec3_t v, double dt, double limit) except -1:
+    # Shared by the per-call, allocation-free and batch forms.
+    if not (isfinite(v.x) and isfinite(v.y) and isfinite(v.z)):
+        raise ValueError(f"chassisVelocities must be finite, got ({v.x!r}, {v.y!r}, "
+                         f"{v.z!r})")
+    if not (isfinite(dt) and dt > 0.0):
+        raise ValueError(f"dt must be a finite number of seconds > 0, got {dt!r}")
+    if not (limit >= 0.0):
+        raise ValueError(f"attainableMaxModuleVelocity must be >= 0 m/s (inf for no "
+                         f"limit), got {limit!r}")
+    return 0
+
 
 cdef int parse_desat(object first, object mm, object mt, object mr,
                      desat_t* p) except -1:                          # OUT p

@@ -181,6 +181,15 @@ def test_desaturate_in_place_array_both_forms():
     assert_allocation_free(lambda: d(arr, desired, 5.5, 5.5, 3.5))
 
 
+def test_desaturated_discretize_into():
+    T = Translation2d
+    kin = SwerveDriveKinematics(T(0.27, 0.27), T(0.27, -0.27), T(-0.27, 0.27), T(-0.27, -0.27))
+    cv = ChassisVelocities(4.0, 0.0, 6.283185307179586)        # saturated: k < 1
+    out = ChassisVelocities()
+    assert_allocation_free(lambda: kin.desaturatedDiscretizeInto(cv, 0.02, 4.0, out))
+    assert_allocation_free(lambda: kin.desaturatedDiscretizeInto(out, 0.02, 4.0, out))
+
+
 def test_chassis_into_methods():
     cv = ChassisVelocities(1.0, 2.0, 0.5)
     out = ChassisVelocities()

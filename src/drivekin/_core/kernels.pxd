@@ -332,6 +332,63 @@ cdef inline void forward_solve_many(Py_ssize_t rows, Py_ssize_t n, Py_ssize_t co
             for t in range(count):
                 ok[t] = ok[t] + fx * (mi[t] * ci[t]) + fy * (mi[t] * si[t])
 
+cdef inline double swerve_top_speed(Py_ssize_t n, const double* mx, const double* my,
+                                    vec3_t v) noexcept nogil:
+    # The fastest module's speed (m/s) for robot velocities v about the robot origin.
+    cdef Py_ssize_t i
+    cdef double top = 0.0, s
+    for i in range(n):
+        s = fhypot(v.x + (-my[i]) * v.z, v.y + mx[i] * v.z)
+        if s > top:
+            top = s
+    return top
+
+cdef inline double desaturated_discretize_scale(Py_ssize_t n, const double* mx,
+                                                const double* my, double vx, double vy,
+                                                double omega, double dt,
+                                                double limit) noexcept nogil:
+    # The largest k in [0, 1] for which discretize(k·v, dt) keeps every module at most
+    # `limit`. Scaling before discretizing keeps the direction of motion (scaling after
+    # turns it by (k − 1)·ω·dt/2). The top speed is close to linear in k but not exactly
+    # (the discretize correction grows with k·ω·dt), so the largest feasible point of a
+    # 16-point grid is found first, and the crossing after it by the Illinois variant of
+    # regula falsi, to 1e-14 relative; the bracket's feasible end is returned.
+    cdef double lo, hi, mid, glo, ghi, gm
+    cdef int j, side = 0
+    ghi = swerve_top_speed(n, mx, my, chassis_discretize(vx, vy, omega, dt)) - limit
+    if ghi <= 0.0:
+        return 1.0
+    lo = 0.0
+    glo = -limit
+    hi = 1.0
+    for j in range(15, 0, -1):
+        mid = j / 16.0
+        gm = swerve_top_speed(n, mx, my, chassis_discretize(mid * vx, mid * vy,
+                                                            mid * omega, dt)) - limit
+        if gm <= 0.0:
+            lo, glo = mid, gm
+            break
+        hi, ghi = mid, gm
+    for j in range(200):
+        if hi - lo <= 1e-14 * hi:
+            break
+        mid = (lo * ghi - hi * glo) / (ghi - glo)
+        if not (lo < mid < hi):
+            mid = 0.5 * (lo + hi)
+        gm = swerve_top_speed(n, mx, my, chassis_discretize(mid * vx, mid * vy,
+                                                            mid * omega, dt)) - limit
+        if gm <= 0.0:
+            lo, glo = mid, gm
+            if side == -1:
+                ghi *= 0.5
+            side = -1
+        else:
+            hi, ghi = mid, gm
+            if side == 1:
+                glo *= 0.5
+            side = 1
+    return lo
+
 cdef inline double max_abs(Py_ssize_t n, const double* v, Py_ssize_t stride) noexcept nogil:
     # max |v_i| from 0 with Java Math.max semantics (a NaN speed makes the result NaN).
     cdef Py_ssize_t i

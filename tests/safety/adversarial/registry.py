@@ -544,6 +544,9 @@ API = {
         "toSwerveModuleAccelerations": [S(Obj(CA)), S(Obj(CA), NUM, Obj(T))],
         "toWheelAccelerations": S(Obj(CA)),
         "toChassisAccelerations": [S(Seq(SMA)), S(_MOD_ARR)],
+        # The limit stays valid (>= 0) in the alternate build: 0.125 -> 0.0625.
+        "desaturatedDiscretize": S(Obj(CV), Num(0.02), Num(0.125)),
+        "desaturatedDiscretizeInto": S(Obj(CV), Num(0.02), Num(0.125), Out(CV)),
         # Static: any number of modules.
         "desaturateWheelVelocities": [
             S(Seq(SMV, n=None), NUM),
@@ -816,6 +819,8 @@ BATCH = {  # drivekin.batch: stacks of 6 samples
                                   S(Arr((6, N, 2)), Arr((6, 3)), NUM, NUM, NUM)],
     "desaturate": S(Arr((6, 4), rows_free=True), NUM),
     "discretize": S(_CHASSIS_STACK, NUM),
+    "desaturatedDiscretize": S(Obj(SwerveDriveKinematics), _CHASSIS_STACK, Num(0.02),
+                               Num(0.125)),
     "toRobotRelative": S(_CHASSIS_STACK, NUM), "toFieldRelative": S(_CHASSIS_STACK, NUM),
     "exp": S(_CHASSIS_STACK), "log": S(_CHASSIS_STACK),
     "replay": S(Obj(DifferentialDriveOdometry), Arr((6,)), Arr((6, 2))),
