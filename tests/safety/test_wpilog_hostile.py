@@ -262,3 +262,22 @@ def test_values_gathers_without_per_record_objects():
         tracemalloc.stop()
     assert np.array_equal(v, np.arange(n, dtype=float))
     assert peak < 4 * 8 * n, peak
+
+
+@pytest.mark.parametrize("case", list(W.HOSTILE))
+def test_the_replay_command_line_reports_a_hostile_file_in_one_line(case, tmp_path, capsys):
+    # Whatever the file holds, `replay` and `replay --list` end with exit status 1 (or 0)
+    # and at most one error line naming the file, never a traceback, never its bytes.
+    from drivekin.app.cli import main
+    path = tmp_path / "hostile.wpilog"
+    data = W.HOSTILE[case][0]()
+    path.write_bytes(data)
+    for extra in ([], ["--list"]):
+        code = main(["replay", str(path), "--no-write", *extra])
+        out, err = capsys.readouterr()
+        errors = [line for line in err.splitlines() if "error:" in line]
+        assert code in (0, 1) and len(errors) == (code == 1), (code, err[-2000:])
+        assert "Traceback" not in err
+        for line in errors:
+            assert line.startswith(f"python -m drivekin replay: error: {path}: ")
+            assert len(line) < 1000, line[:300]
