@@ -165,7 +165,7 @@ cdef class DCMotor:
 
     # -- the model ----------------------------------------------------------------------
 
-    def getCurrent(self, velocity=MISSING, voltageInput=MISSING, torque=MISSING):
+    def getCurrent(self, *args, velocity=MISSING, voltageInput=MISSING, torque=MISSING):
         """getCurrent(velocity, voltageInput) or getCurrent(torque)
 
         The current drawn, A: by the motor turning at ``velocity`` (rad/s) with
@@ -173,14 +173,22 @@ cdef class DCMotor:
         current that produces ``torque`` (N·m), ``torque / Kt``. One positional argument
         is the torque."""
         cdef double w, u, t
+        cdef Py_ssize_t n = len(args)
         if not self.frozen:
             uninitialised()
+        if n == 2 and velocity is MISSING and voltageInput is MISSING and torque is MISSING:
+            velocity, voltageInput = args
+        elif n == 1 and velocity is MISSING and voltageInput is MISSING and torque is MISSING:
+            torque = args[0]
+        elif n != 0:
+            torque = velocity = MISSING          # a mixture: refused below
+            voltageInput = None
         if torque is MISSING and voltageInput is not MISSING and velocity is not MISSING:
             w = velocity
             u = voltageInput
             return -1.0 / self.kv / self.r * w + 1.0 / self.r * u
-        if voltageInput is MISSING and (velocity is MISSING) != (torque is MISSING):
-            t = torque if velocity is MISSING else velocity
+        if torque is not MISSING and voltageInput is MISSING and velocity is MISSING:
+            t = torque
             return t / self.kt
         raise TypeError("getCurrent() takes (velocity, voltageInput) or (torque)")
 
