@@ -166,11 +166,13 @@ def make(cls):
 # not run must refuse to compute): immutable values, kinematics, odometry, estimators and
 # the interpolation buffer. Immutability is a property of the class that the catalog does
 # not record, so IMMUTABLE is listed here; the rest follows from the catalog's kinds.
-IMMUTABLE = {T, R, Pose2d, Transform2d, DCMotor}
+IMMUTABLE = {T, R, Pose2d, Transform2d}
 KINEMATICS = {e.cls for e in catalog.entries("kinematics")}
 ODOMETRY = {e.cls for e in catalog.entries("odometry")}
 ESTIMATORS = {e.cls for e in catalog.entries("estimator")}
-INIT_ONCE = IMMUTABLE | KINEMATICS | ODOMETRY | ESTIMATORS | {TIB}
+# DCMotor is immutable too, but has no default value for __new__ to match: a __new__'d
+# one refuses to compute, as the kinematics do.
+INIT_ONCE = IMMUTABLE | KINEMATICS | ODOMETRY | ESTIMATORS | {TIB, DCMotor}
 STATEFUL = ODOMETRY | ESTIMATORS | {TIB}   # no value semantics: not copyable, no str of values
 NAMESPACES = {MathSharedStore, Units}      # static methods only; the clock is not deterministic
 
