@@ -29,6 +29,7 @@ from drivekin.estimator import (
 )
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.interpolation import TimeInterpolatableBuffer
+from drivekin.motor import DCMotor
 from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.swerve import (
     SwerveDriveKinematics,
@@ -60,6 +61,7 @@ __all__ = [
     "ChassisAccelerations",
     "ChassisVelocities",
     "ClockMismatchWarning",
+    "DCMotor",
     "DeadWheelKinematics",
     "DeadWheelOdometry",
     "DeadWheelPoseEstimator",

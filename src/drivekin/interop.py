@@ -18,6 +18,7 @@ DifferentialDriveWheelPositions              DifferentialDriveWheelPositions
 SwerveDriveKinematics (N modules)            SwerveDrive2/3/4/6Kinematics (N = 2, 3, 4, 6)
 MecanumDriveKinematics                       MecanumDriveKinematics
 DifferentialDriveKinematics (trackwidth)     DifferentialDriveKinematics (trackWidth)
+DCMotor                                      ``wpimath.system.plant.DCMotor``
 ==========================================  ==========================================
 
 Units are the same on both sides (m, m/s, rad, rad/s). Every conversion is exact: each
@@ -61,9 +62,11 @@ if TYPE_CHECKING:
     # The overloads below give each conversion its static types.
     import wpimath.geometry as wpg
     import wpimath.kinematics as wpk
+    import wpimath.system.plant as wpp
 
     from drivekin import (
         ChassisVelocities,
+        DCMotor,
         DifferentialDriveKinematics,
         DifferentialDriveWheelPositions,
         DifferentialDriveWheelVelocities,
@@ -89,6 +92,13 @@ INSTALL_HINT = ('install it with `pip install robotpy-wpimath` '
 class _Wpimath(NamedTuple):
     geometry: ModuleType
     kinematics: ModuleType
+
+    def module(self, name: str) -> ModuleType:
+        """``wpimath.<name>`` (a catalog peer's ``module``: ``"geometry"``,
+        ``"system.plant"``, ...)."""
+        if name in self._fields:
+            return getattr(self, name)  # type: ignore[no-any-return]
+        return importlib.import_module(f"wpimath.{name}")
 
 
 _wpimath: _Wpimath | None = None
@@ -127,7 +137,7 @@ def _from_table() -> dict[type, Callable[[Any], Any]]:
     global _from
     if _from is None:
         w = _load()
-        _from = {getattr(getattr(w, e.peer.module), name): e.peer.frm
+        _from = {getattr(w.module(e.peer.module), name): e.peer.frm
                  for e in catalog.ENTRIES if e.peer is not None for name in e.peer.names}
     return _from
 
@@ -241,6 +251,8 @@ def toWpimath(obj: MecanumDriveKinematics) -> wpk.MecanumDriveKinematics: ...
 @overload
 def toWpimath(obj: DifferentialDriveKinematics) -> wpk.DifferentialDriveKinematics: ...
 @overload
+def toWpimath(obj: DCMotor) -> wpp.DCMotor: ...
+@overload
 def toWpimath(obj: list[Any]) -> list[Any]: ...
 @overload
 def toWpimath(obj: tuple[Any, ...]) -> tuple[Any, ...]: ...
@@ -295,6 +307,8 @@ def fromWpimath(obj: wpk.SwerveDrive6Kinematics) -> SwerveDriveKinematics: ...
 def fromWpimath(obj: wpk.MecanumDriveKinematics) -> MecanumDriveKinematics: ...
 @overload
 def fromWpimath(obj: wpk.DifferentialDriveKinematics) -> DifferentialDriveKinematics: ...
+@overload
+def fromWpimath(obj: wpp.DCMotor) -> DCMotor: ...
 @overload
 def fromWpimath(obj: list[Any]) -> list[Any]: ...
 @overload

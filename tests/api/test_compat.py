@@ -36,10 +36,16 @@ def test_old_paths_give_the_public_objects(module):
             assert getattr(mod, name) is getattr(drivekin, name), (module, name)
 
 
+# Value classes added after 0.1.0, which therefore has no pickles of them (their pickling
+# is tested with the class: DCMotor in tests/reference/test_dcmotor_wpilib.py).
+NEW_SINCE_0_1_0 = {"DCMotor"}
+
+
 def test_pickle_data_covers_every_value_and_kinematics_class():
     from drivekin._core import catalog
     classes = {e.cls.__name__ for e in catalog.ENTRIES if e.kind in ("value", "kinematics")}
-    assert classes == set(PICKLES)
+    assert classes - NEW_SINCE_0_1_0 == set(PICKLES)
+    assert not NEW_SINCE_0_1_0 & set(PICKLES)
 
 
 @pytest.mark.parametrize("name", sorted(PICKLES))

@@ -43,6 +43,7 @@ def _dead_wheel_poses():
 # One valid value per annotation (as spelled in the stubs).
 SAMPLES = {
     "float": lambda: 0.75,
+    "int": lambda: 2,
     "bool": lambda: True,
     "Translation2d": lambda: Translation2d(0.3, -0.2),
     "Rotation2d": lambda: Rotation2d(0.4),
@@ -68,6 +69,8 @@ SAMPLES = {
         lambda: [SwerveModulePosition(0.1, Rotation2d(0.2)) for _ in range(4)],
 }
 ARRAYS = {"vector": np.array([1.0, 2.0]), "matrix": None}
+# Floats that must differ (a DCMotor's free current is below its stall current).
+FLOATS = {("DCMotor", "stallCurrent"): 105.0, ("DCMotor", "freeCurrent"): 1.8}
 
 
 def _value(annotation: str, name: str, cls_name: str):
@@ -76,6 +79,8 @@ def _value(annotation: str, name: str, cls_name: str):
             return (Rotation2d(0.3).toMatrix() if cls_name == "Rotation2d"
                     else Pose2d(1.0, 2.0, Rotation2d(0.3)).toMatrix())
         return ARRAYS[name]
+    if (cls_name, name) in FLOATS:
+        return FLOATS[cls_name, name]
     return SAMPLES[annotation]()
 
 

@@ -444,6 +444,7 @@ def _sample_instances() -> dict[str, object]:
         "DifferentialDriveOdometry": DifferentialDriveOdometry(Rotation2d(), 0.0, 0.0),
         "DifferentialSwerveModuleKinematics": drivekin.DifferentialSwerveModuleKinematics(
             3.0, 5.0, 0.05),
+        "DCMotor": drivekin.DCMotor.getNEO(2),
     }
 
 

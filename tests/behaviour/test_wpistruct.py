@@ -208,6 +208,10 @@ NO_UPSTREAM_STRUCT = {"DeadWheelKinematics", "DifferentialSwerveModuleKinematics
 # Public classes that are not values: stateful trackers, static-method namespaces and
 # the warning category.
 NOT_VALUES = {"ClockMismatchWarning", "MathSharedStore", "TimeInterpolatableBuffer", "Units"}
+# Values with a WPILib 2027 struct that drivekin does not serialize yet (DCMotor: WPILib
+# has a DCMotorStruct and a protobuf message; robotpy-wpimath 2026 has no protobuf to
+# test the message against, and every drivekin struct type has a protobuf message too).
+NOT_YET_SERIALIZED = {"DCMotor"}
 
 
 def test_struct_types_cover_every_value_and_kinematics_class():
@@ -216,7 +220,7 @@ def test_struct_types_cover_every_value_and_kinematics_class():
     public = [getattr(drivekin, n) for n in drivekin.__all__]
     expected = {c for c in public if isinstance(c, type)
                 and "Odometry" not in c.__name__ and "PoseEstimator" not in c.__name__
-                and c.__name__ not in NO_UPSTREAM_STRUCT | NOT_VALUES}
+                and c.__name__ not in NO_UPSTREAM_STRUCT | NOT_VALUES | NOT_YET_SERIALIZED}
     assert set(wpistruct.STRUCT_TYPES) == expected
     assert len(wpistruct.STRUCT_TYPES) == len(expected)
     assert {c.cls for c in CASES} | {SwerveDriveKinematics} == expected

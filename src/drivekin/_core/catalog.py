@@ -38,6 +38,7 @@ from drivekin.differential import (
 )
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.geometry import _rotation_from_cos_sin  # type: ignore[attr-defined]
+from drivekin.motor import DCMotor
 from drivekin.mecanum import (
     MecanumDriveKinematics,
     MecanumDriveWheelAccelerations,
@@ -303,6 +304,20 @@ def _double_buffer() -> Any:
     return b
 
 
+def _motor_to(m: DCMotor, w: Any) -> Any:
+    # The gearbox's constants as one motor; robotpy derives R, Kv and Kt with the same
+    # operations, so they come out the same bits.
+    import importlib
+    plant = importlib.import_module("wpimath.system.plant")
+    return plant.DCMotor(m.nominalVoltage, m.stallTorque, m.stallCurrent, m.freeCurrent,
+                         m.freeSpeed, 1)
+
+
+def _motor_from(m: Any) -> DCMotor:
+    return DCMotor(m.nominalVoltage, m.stallTorque, m.stallCurrent, m.freeCurrent,
+                   m.freeSpeed)
+
+
 _NEW_2027 = "robotpy-wpimath 2026 has no {} (it is new in WPILib 2027)"
 _DRIVEKIN_ONLY = "robotpy-wpimath 2026 has no counterpart of {}"
 
@@ -501,6 +516,11 @@ ENTRIES: tuple[Entry, ...] = (
     Entry(_dk.DifferentialSwerveMotorVelocities, "value", "diffswerve",
           no_peer=_DRIVEKIN_ONLY,
           example=lambda: _dk.DifferentialSwerveMotorVelocities(1.0, -2.0)),
+    # Motors (WPILib 2027 has a DCMotor struct and protobuf message; drivekin serializes
+    # neither yet, so the entry has no wire form)
+    Entry(DCMotor, "value",
+          peer=Peer("system.plant", ("DCMotor",), _motor_to, _motor_from),
+          example=lambda: DCMotor.getNEO(2)),
     # Helpers (Units has static methods only and refuses instances: no example)
     Entry(_dk.MathSharedStore, "helper", example=_dk.MathSharedStore),
     Entry(_dk.TimeInterpolatableBuffer, "helper", example=_double_buffer),

@@ -46,9 +46,9 @@ def _robotpy_conversion(obj: object) -> tuple[str, type] | None:
         from drivekin._core import catalog
 
         w = interop._load()
-        peers = {getattr(getattr(w, e.peer.module), n): e.cls
+        peers = {getattr(w.module(e.peer.module), n): e.cls
                  for e in catalog.ENTRIES if e.peer is not None for n in e.peer.names
-                 if hasattr(getattr(w, e.peer.module), n)}
+                 if hasattr(w.module(e.peer.module), n)}
         # fromWpimath3d's classes give the 2-D peer of the same name (Pose3d: Pose2d).
         flat = {getattr(w.geometry, n): peers.get(getattr(w.geometry, n[:-2] + "2d", None))
                 for n, _ in interop._FLATTEN_3D if hasattr(w.geometry, n)}

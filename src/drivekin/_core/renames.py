@@ -39,6 +39,18 @@ RENAMES: dict[str, dict[str, str]] = {
                "X": "getX() or .x", "Y": "getY() or .y"},
     "Transform2d": {"rotation": "getRotation()", "translation": "getTranslation()",
                     "X": "getX() or .x", "Y": "getY() or .y"},
+    "DCMotor": {
+        "current": "getCurrent", "torque": "getTorque", "voltage": "getVoltage",
+        "speed": "getVelocity", "CIM": "getCIM", "miniCIM": "getMiniCIM", "bag": "getBag",
+        "vex775Pro": "getVex775Pro", "RS775_125": "getAndymarkRs775_125",
+        "banebotsRS775": "getBanebotsRs775", "andymark9015": "getAndymark9015",
+        "banebotsRS550": "getBanebotsRs550", "NEO": "getNEO", "NEO550": "getNeo550",
+        "falcon500": "getFalcon500", "falcon500FOC": "getFalcon500Foc",
+        "romiBuiltIn": "getRomiBuiltIn", "krakenX60": "getKrakenX60",
+        "krakenX60FOC": "getKrakenX60Foc", "krakenX44": "getKrakenX44",
+        "krakenX44FOC": "getKrakenX44Foc", "minion": "getMinion",
+        "neoVortex": "getNeoVortex",
+    },
 }
 
 

@@ -66,6 +66,7 @@ from drivekin import (
     TwoDeadWheelOdometry,
     Units,
 )
+from drivekin import DCMotor
 
 N = 4  # modules of the registry's swerve drive
 
@@ -136,6 +137,7 @@ ALT = {  # a second valid instance, different from VALID's
     DWA: lambda: DWA(-1.0, 3.0),
     DSMV: lambda: DSMV(-3.0, 0.5),
     DSModV: lambda: DSModV(-2.0, 1.0),
+    DCMotor: lambda: DCMotor.getKrakenX60(1),
 }
 _ALT = threading.local()  # per thread: the thread cases build both kinds at once
 
@@ -168,7 +170,9 @@ IMMUTABLE = {T, R, Pose2d, Transform2d}
 KINEMATICS = {e.cls for e in catalog.entries("kinematics")}
 ODOMETRY = {e.cls for e in catalog.entries("odometry")}
 ESTIMATORS = {e.cls for e in catalog.entries("estimator")}
-INIT_ONCE = IMMUTABLE | KINEMATICS | ODOMETRY | ESTIMATORS | {TIB}
+# DCMotor is immutable too, but has no default value for __new__ to match: a __new__'d
+# one refuses to compute, as the kinematics do.
+INIT_ONCE = IMMUTABLE | KINEMATICS | ODOMETRY | ESTIMATORS | {TIB, DCMotor}
 STATEFUL = ODOMETRY | ESTIMATORS | {TIB}   # no value semantics: not copyable, no str of values
 NAMESPACES = {MathSharedStore, Units}      # static methods only; the clock is not deterministic
 
@@ -842,3 +846,21 @@ def public_classes():
     catalog holds every public class) but the warning categories, plain Python classes
     with no code of drivekin's."""
     return [e.cls for e in catalog.ENTRIES if e.kind != "warning"]
+
+
+# DCMotor: WPILib's motor model (immutable; the factories are static methods).
+_MOTORS = ("getCIM", "getVex775Pro", "getNEO", "getMiniCIM", "getBag", "getAndymarkRs775_125",
+           "getBanebotsRs775", "getAndymark9015", "getBanebotsRs550", "getNeo550",
+           "getFalcon500", "getFalcon500Foc", "getRomiBuiltIn", "getKrakenX60",
+           "getKrakenX60Foc", "getKrakenX44", "getKrakenX44Foc", "getMinion", "getNeoVortex")
+API[DCMotor] = {
+    "__init__": [S(Num(12.0), Num(2.6), Num(105.0), Num(1.8), Num(594.0)),
+                 S(Num(12.0), Num(2.6), Num(105.0), Num(1.8), Num(594.0), Int(2))],
+    "__reduce__": S(), "__eq__": S(Obj(DCMotor)),
+    **{f: Prop() for f in ("nominalVoltage", "stallTorque", "stallCurrent", "freeCurrent",
+                           "freeSpeed", "R", "Kv", "Kt")},
+    "getCurrent": [S(NUM, NUM), S(NUM)],
+    "getTorque": S(NUM), "getVoltage": S(NUM, NUM), "getVelocity": S(NUM, NUM),
+    "withReduction": S(Num(3.0)),
+    **{name: [S(), S(Int(2))] for name in _MOTORS},
+}
