@@ -7,6 +7,8 @@
   variable ``HYPOTHESIS_PROFILE``.
 * ``DRIVEKIN_TEST_INSTALLED=1`` (scripts/wheel_tests.sh): the tests must run against an
   installed drivekin, not the source tree; the session fails at once otherwise.
+* ``DRIVEKIN_EMULATED=1`` (scripts/wheel_tests.sh, under qemu-user): wall-clock budgets
+  meant for real hardware are not checked (tests/safety/test_wpilog_hostile.py).
 * The shared helper modules live in the package ``tests._support`` (``strategies``,
   ``alloc``, ``wpilib_port``, ``wpilog_logs``, ``wpilog_bytes``, ``real_logs``) and are imported from it by full name;
   ``tests`` is a package, so nothing edits ``sys.path`` (see ``tests/README.md``).
