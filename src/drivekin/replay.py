@@ -241,12 +241,12 @@ def _named_signal(log: LogData, cands: list[Signal], name: str, option: str) -> 
         under = None
     except DataLogError:
         want = set()
-        under = layouts.fold(layouts._bare(name)).rstrip("/") + "/"
-        if not any(all(layouts.fold(layouts._bare(n)).startswith(under) for n in s.entries)
+        under = layouts.fold(layouts.bare(name)).rstrip("/") + "/"
+        if not any(all(layouts.fold(layouts.bare(n)).startswith(under) for n in s.entries)
                    for s in cands):
             raise
     hits = [s for s in cands if (want & set(s.entries)) or (
-        under is not None and all(layouts.fold(layouts._bare(n)).startswith(under)
+        under is not None and all(layouts.fold(layouts.bare(n)).startswith(under)
                                   for n in s.entries))]
     high = [s for s in hits if s.highRate]
     return (high or hits or [None])[0]
@@ -428,12 +428,6 @@ def _drift(t_rep: np.ndarray, rep: np.ndarray, t_ref: np.ndarray, ref: np.ndarra
                       int(in_gap.sum()))
 
 
-def _rate(t: np.ndarray) -> float:
-    d = np.diff(t)
-    d = d[d > 0]
-    return float(1e6 / np.median(d)) if len(d) else 0.0
-
-
 # ---------------------------------------------------------------------------------------
 # Replay
 
@@ -533,8 +527,8 @@ def replayLog(log: LogData | str | os.PathLike[str],
         else:
             P *= cfg.wheelScale
     if cycle is not None:
-        notes.append(f"replaying the odometry thread's {layouts._rate(tw):.0f} Hz samples, "
-                     f"not the {layouts._rate(cycle.t):.0f} Hz cycle values")
+        notes.append(f"replaying the odometry thread's {layouts.rate(tw):.0f} Hz samples, "
+                     f"not the {layouts.rate(cycle.t):.0f} Hz cycle values")
     elif cfg.odometryRate == "cycle" and any(
             s.highRate for s in layouts.candidates(log, "positions", opts)):
         notes.append("the log holds high-rate odometry samples; replaying the cycle values "
@@ -591,15 +585,15 @@ def replayLog(log: LogData | str | os.PathLike[str],
         start = Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th)))
     poses = _run(kind, kin, gyro, P, start)
 
-    rates = {"positions": _rate(tw)}
+    rates = {"positions": layouts.rate(tw)}
     if entries["gyro"] != "(wheels)":
-        rates["gyro"] = _rate(tg)
+        rates["gyro"] = layouts.rate(tg)
     result = ReplayResult(log.source, kind, _ODOMETRY[kind], entries, geometry, tw, poses,
                           skipped, max_gap, max_age, rates, alignment, logged, truth,
                           truncated=log.truncated, log=log, why=why, notes=notes)
     # 5. compare
     if logged is not None:
-        rates["pose"] = _rate(logged[0])
+        rates["pose"] = layouts.rate(logged[0])
         result.vsLogged = _drift(tw, poses, logged[0], logged[1], cfg.compare)
     if truth is not None and len(truth[0]):
         result.vsTruth = _drift(tw, poses, truth[0], truth[1], cfg.compare)
@@ -761,7 +755,7 @@ def listing(log: LogData, config: ReplayConfig | None = None) -> str:
             f"  {'entry':<{width}}  {'type':<30} {'records':>8} {'rate':>8}  replay uses it as"]
     for e in infos:
         t = log._entries[e.name].ts
-        rate = _rate(np.sort(t)) if len(t) > 1 else 0.0
+        rate = layouts.rate(np.sort(t)) if len(t) > 1 else 0.0
         role = chosen.get(e.name)
         text = (f"{role} (chosen)" if role else "; ".join(dict.fromkeys(use.get(e.name, []))))
         rows.append(f"  {e.name:<{width}}  {e.type[:30]:<30} {e.records:>8} "

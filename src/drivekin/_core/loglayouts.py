@@ -46,7 +46,8 @@ def is_schema(name: str) -> bool:
     return name.startswith(("/.schema/", "NT:/.schema/"))
 
 
-def _bare(name: str) -> str:
+def bare(name: str) -> str:
+    """A name without the ``NT:`` prefix NetworkTables mirroring adds."""
     return name[3:] if name.startswith("NT:") else name
 
 
@@ -57,15 +58,15 @@ def resolve(log: LogData, name: str, option: str) -> EntryInfo:
     entries = log.entries
     if name in entries:
         return entries[name]
-    want = fold(_bare(name))
-    hits = [e for n, e in entries.items() if fold(_bare(n)) == want]
+    want = fold(bare(name))
+    hits = [e for n, e in entries.items() if fold(bare(n)) == want]
     if len(hits) == 1:
         return hits[0]
     if len(hits) > 1:
         raise DataLogError(f"{option} {name!r} matches several entries: "
                            f"{', '.join(e.name for e in hits)}; give one exactly")
     names = [n for n in entries if not is_schema(n)]
-    folded = {fold(_bare(n)): n for n in names}
+    folded = {fold(bare(n)): n for n in names}
     close = difflib.get_close_matches(want, list(folded), n=3, cutoff=0.6)
     hint = f"; did you mean {' or '.join(repr(folded[c]) for c in close)}?" if close else ""
     raise DataLogError(f"{option} {name!r}: no such entry{hint} "
@@ -125,7 +126,6 @@ class Signal:
     units: str = ""                     # the units assumed, and from where
     why: str = ""                       # why this one was chosen
     highRate: bool = False              # AdvantageKit odometry-thread samples
-    notes: list[str] = field(default_factory=list)
 
     @property
     def source(self) -> str:
@@ -295,12 +295,8 @@ def _module_positions(log: LogData, prefix: str, mods: dict[int, _Module], units
         names = tuple(n for i in order for n in (mods[i].entries["hdrive"][0].name,
                                                   mods[i].entries["hturn"][0].name,
                                                   mods[i].entries["htime"][0].name))
-        rate = _rate(t)
         return Signal("positions", t, P, names, "AdvantageKit high-rate odometry",
-                      "swerve", f"{dunits}; {tunits}; timestamps s",
-                      highRate=True,
-                      notes=[f"odometry-thread samples at {rate:.0f} Hz "
-                             f"(OdometryTimestamps of module {order[0]})"])
+                      "swerve", f"{dunits}; {tunits}; timestamps s", highRate=True)
     if not all("drive" in mods[i].entries and "turn" in mods[i].entries for i in order):
         return None
     names_d = [mods[i].entries["drive"][0].name for i in order]
@@ -375,7 +371,8 @@ def _held(log: LogData, clock: str, name: str, where: str) -> np.ndarray:
     return vx[idx]
 
 
-def _rate(t: np.ndarray) -> float:
+def rate(t: np.ndarray) -> float:
+    """Median sample rate (Hz) of sorted timestamps in µs (0 for fewer than two)."""
     d = np.diff(t)
     d = d[d > 0]
     return float(1e6 / np.median(d)) if len(d) else 0.0

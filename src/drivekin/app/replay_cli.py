@@ -34,6 +34,7 @@ def _point(option: str, n: int):
 
 
 def build_parser() -> argparse.ArgumentParser:
+    from drivekin._core.loglayouts import DRIVE_UNITS, GYRO_UNITS, TURN_UNITS
     from drivekin.replay import DRIVETRAINS
 
     p = argparse.ArgumentParser(
@@ -65,12 +66,12 @@ def build_parser() -> argparse.ArgumentParser:
                         "right]")
     p.add_argument("--gyro", metavar="NAME",
                    help="gyro entry: struct:Rotation2d, or double with --gyro-units")
-    p.add_argument("--gyro-units", choices=("rad", "deg", "rot"),
+    p.add_argument("--gyro-units", choices=GYRO_UNITS,
                    help="units of a double gyro entry (default: from its name or metadata)")
-    p.add_argument("--drive-units", choices=("m", "rad", "rot"),
+    p.add_argument("--drive-units", choices=DRIVE_UNITS,
                    help="units of drive positions that the log does not name: metres, or "
                         "radians or rotations of the wheel (with --wheel-radius)")
-    p.add_argument("--turn-units", choices=("rad", "deg", "rot"),
+    p.add_argument("--turn-units", choices=TURN_UNITS,
                    help="units of module angles logged as plain numbers")
     p.add_argument("--wheel-radius", type=number_option(0.0, 1.0, "m", False), metavar="M",
                    help="wheel radius in m, for drive positions in radians or rotations "
