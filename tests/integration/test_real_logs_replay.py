@@ -216,3 +216,14 @@ def test_the_robots_own_pose_is_chosen_over_targets(tmp_path, names, chosen):
     assert r.entries["pose"] == chosen
     other = next(n for n in names if n != chosen)
     assert other in r.why["pose"]
+
+
+def test_positions_can_name_the_folder_of_per_module_entries(logs, capsys):
+    rl = logs["pykit_swerve"]
+    d = _run(rl.path, COMMANDS["pykit_swerve"], capsys, "--positions", "/drive")
+    assert d["entries"]["positions"] == "/Drive/... (12 entries)"       # the 250 Hz arrays
+    assert d["why"]["positions"] == "named with --positions"
+    d = _run(rl.path, COMMANDS["pykit_swerve"], capsys, "--positions", "/Drive",
+             "--odometry-rate", "cycle")
+    assert d["entries"]["positions"] == "/Drive/... (8 entries)"        # the cycle values
+    assert round(d["rates_hz"]["positions"]) == 50
