@@ -23,7 +23,8 @@ from libc.math cimport atan2, isfinite
 
 from drivekin._core.types cimport rot2_t
 from drivekin._core.wheels cimport _WheelValues, install_bare_new
-from drivekin._core.args cimport as_fast, check_type, float64_data, is_array
+from drivekin._core.args cimport (as_fast, check_type, float64_data, is_array,
+                                   positive_finite)
 from drivekin._core.kernels cimport (clamp01, dswerve_desaturate, dswerve_drive_factor,
                                      dswerve_module, dswerve_motors, rot_rad)
 from drivekin.geometry cimport Rotation2d, new_rotation
@@ -172,12 +173,6 @@ cdef class DifferentialSwerveModuleVelocities(_WheelValues):
 
 # ---------------------------------------------------------------------------------------
 # Argument helpers
-
-cdef int positive_finite(double x, str name, str unit) except -1:
-    if not (isfinite(x) and x > 0.0):
-        raise ValueError(f"{name} must be a positive finite {unit}, got {x!r}")
-    return 0
-
 
 cdef int check_limit(double limit) except -1:
     if not limit >= 0.0:       # NaN fails too

@@ -13,6 +13,7 @@ cimport cython
 from cpython.long cimport PyLong_CheckExact
 from libc.math cimport M_PI, isfinite
 
+from drivekin._core.args cimport positive_finite
 from drivekin._core.errors import refuse_delete, type_name
 
 __all__ = ["DCMotor"]
@@ -21,12 +22,6 @@ __all__ = ["DCMotor"]
 cdef long long MAX_MOTORS = 2147483647
 
 cdef object MISSING = object()
-
-
-cdef int positive_finite(double x, str name, str unit) except -1:
-    if not (isfinite(x) and x > 0.0):
-        raise ValueError(f"{name} must be a positive finite {unit}, got {x!r}")
-    return 0
 
 
 cdef double motor_count(object numMotors) except -1.0:
@@ -176,13 +171,15 @@ cdef class DCMotor:
         cdef Py_ssize_t n = len(args)
         if not self.frozen:
             uninitialised()
-        if n == 2 and velocity is MISSING and voltageInput is MISSING and torque is MISSING:
+        if n and (velocity is not MISSING or voltageInput is not MISSING
+                  or torque is not MISSING):
+            n = 3                               # a mixture of positional and keywords
+        if n == 2:
             velocity, voltageInput = args
-        elif n == 1 and velocity is MISSING and voltageInput is MISSING and torque is MISSING:
+        elif n == 1:
             torque = args[0]
-        elif n != 0:
-            torque = velocity = MISSING          # a mixture: refused below
-            voltageInput = None
+        elif n:
+            raise TypeError("getCurrent() takes (velocity, voltageInput) or (torque)")
         if torque is MISSING and voltageInput is not MISSING and velocity is not MISSING:
             w = velocity
             u = voltageInput

@@ -76,9 +76,7 @@ GAP_PERIODS = 3.0       # a wheel-sample interval this many median periods long 
 POSE_ENTRY = "/drivekin/ReplayPose"
 ERROR_ENTRY = "/drivekin/ReplayError"
 
-# The log types that identify a drivetrain, and each drivetrain's odometry: the catalog's.
-_POSITION_TYPES = {e.positions: e.drivetrain for e in catalog.entries("odometry")
-                   if e.positions is not None}
+# Each drivetrain's odometry: the catalog's.
 _ODOMETRY = {e.drivetrain: e.cls.__name__ for e in catalog.entries("odometry")
              if e.drivetrain in DRIVETRAINS}
 
@@ -298,7 +296,7 @@ def _named_array(log: LogData, name: str, want: str, ragged: str) -> Signal:
     info = layouts.resolve(log, name, "--positions")
     if info.type != "double[]":
         raise DataLogError(f"--positions {info.name!r} has type {info.type}; expected one "
-                           f"of {', '.join(_POSITION_TYPES)}, double[], or a folder of "
+                           f"of {', '.join(layouts.POSITION_STRUCTS)}, double[], or a folder of "
                            f"per-module entries")
     kind = "deadwheel" if want == "auto" else want
     if kind not in ("deadwheel", "differential", "mecanum"):

@@ -163,6 +163,8 @@ def exercise(data: bytes, allowTruncated: bool = False) -> list[str]:
             log.records(name)
             if info.type.startswith("struct:") or info.type.rstrip("[]") in _NUMERIC:
                 log.values(name, ragged="drop")
+                if info.type.endswith("[]"):
+                    log.concatenated(name)
         except datalog.DataLogError as e:
             errors.append(str(e))
     return errors

@@ -14,6 +14,7 @@ from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport Py_DECREF, Py_INCREF, PyObject
 from cpython.sequence cimport PySequence_Fast, PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
+from libc.math cimport isfinite
 
 
 cdef extern from *:
@@ -92,6 +93,12 @@ cdef extern from *:
     # ``name`` is the parameter's name. For a parameter of a shared base that must be of
     # the receiver's class (ChassisVelocities.plus), ``expected`` is type(self).
     int check_type "drivekin_check_type"(object obj, type expected, str name) except -1
+
+
+cdef inline int positive_finite(double x, str name, str unit) except -1:
+    if not (isfinite(x) and x > 0.0):
+        raise ValueError(f"{name} must be a positive finite {unit}, got {x!r}")
+    return 0
 
 
 cdef inline bint is_number(object x) noexcept:

@@ -28,6 +28,7 @@ from typing import Callable
 
 import numpy as np
 
+from drivekin._core import catalog
 from drivekin.datalog import DataLogError, EntryInfo, LogData
 
 REPLAY_PREFIX = "/drivekin/"
@@ -393,11 +394,9 @@ class Layout:
     find: Callable[[LogData, Options], list[Signal]]
 
 
-_POSITION_STRUCTS = {
-    "struct:SwerveModulePosition[]": "swerve",
-    "struct:MecanumDriveWheelPositions": "mecanum",
-    "struct:DifferentialDriveWheelPositions": "differential",
-}
+# The log types that identify a drivetrain: the catalog's.
+POSITION_STRUCTS = {e.positions: e.drivetrain for e in catalog.entries("odometry")
+                    if e.positions is not None}
 
 
 def _live(log: LogData) -> list[EntryInfo]:
@@ -409,7 +408,7 @@ def _live(log: LogData) -> list[EntryInfo]:
 def _find_struct_positions(log: LogData, units: Options) -> list[Signal]:
     out = []
     for e in _live(log):
-        kind = _POSITION_STRUCTS.get(e.type)
+        kind = POSITION_STRUCTS.get(e.type)
         if kind is not None:
             t, v = log.values(e.name, ragged=units.ragged)
             out.append(Signal("positions", t, np.array(v, dtype=np.float64), (e.name,),
@@ -571,7 +570,7 @@ def _find_high_gyro(log: LogData, units: Options) -> list[Signal]:
     out = []
     by_name = {fold(e.name): e for e in _live(log)}
     for f, e in by_name.items():
-        if not f.endswith("odometryyawpositions") and "odometryyawpositions" not in f:
+        if "odometryyawpositions" not in f:
             continue
         head = f[:f.rfind("odometryyawpositions")]
         suffix = f[len(head) + len("odometryyawpositions"):]
@@ -648,7 +647,7 @@ def _find_struct_pose(log: LogData, units: Options) -> list[Signal]:
     for e in _live(log):
         if e.type == "struct:Pose2d":
             t, v = log.values(e.name)
-            score, why = pose_score(e.name)
+            why = pose_score(e.name)[1]
             out.append(Signal("pose", t, v, (e.name,), "Pose2d", units="m; rad", why=why))
     return out
 
@@ -667,7 +666,7 @@ def _find_field2d_pose(log: LogData, units: Options) -> list[Signal]:
             continue
         if v.ndim != 2 or v.shape[1] != 3:
             continue
-        score, why = pose_score(e.name)
+        why = pose_score(e.name)[1]
         P = v.copy()
         P[:, 2] = np.radians(P[:, 2])
         out.append(Signal("pose", t, P, (e.name,), "Field2d double[3]",
