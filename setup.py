@@ -59,7 +59,7 @@ compile_args = (["-O3", "-fno-math-errno", "-fno-trapping-math", "-ffp-contract=
 
 modules = ["geometry", "chassis", "swerve", "_core.wheels", "_core.drivetrain", "differential",
            "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "batch",
-           "_core.alloccount", "_core.wpilog", "motor"]
+           "_core.alloccount", "_core.wpilog", "motor", "setpoint"]
 
 
 def simd_options(name):

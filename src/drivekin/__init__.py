@@ -30,6 +30,14 @@ from drivekin.estimator import (
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.interpolation import TimeInterpolatableBuffer
 from drivekin.motor import DCMotor
+from drivekin.setpoint import (
+    DriveFeedforwards,
+    ModuleConfig,
+    PathConstraints,
+    RobotConfig,
+    SwerveSetpoint,
+    SwerveSetpointGenerator,
+)
 from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.swerve import (
     SwerveDriveKinematics,
@@ -98,6 +106,15 @@ __all__ += [
     "DifferentialSwerveModuleKinematics",
     "DifferentialSwerveModuleVelocities",
     "DifferentialSwerveMotorVelocities",
+]
+# PathPlannerLib's swerve setpoint generator (drivekin.setpoint).
+__all__ += [
+    "DriveFeedforwards",
+    "ModuleConfig",
+    "PathConstraints",
+    "RobotConfig",
+    "SwerveSetpoint",
+    "SwerveSetpointGenerator",
 ]
 # WPILib's Units helper class (drivekin.units).
 from drivekin.units import Units

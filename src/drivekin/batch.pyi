@@ -58,6 +58,7 @@ from drivekin.odometry import (
     TwoDeadWheelOdometry,
 )
 from drivekin.swerve import SwerveDriveKinematics
+from drivekin.setpoint import PathConstraints, SwerveSetpoint, SwerveSetpointGenerator
 
 _Array = npt.NDArray[np.float64]
 
@@ -66,7 +67,7 @@ SIMD: bool
 renormalisation: results within the module's documented bound instead of bit-identical to
 the per-call API)."""
 
-__all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize", "exp", "log", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
+__all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize", "exp", "generateSetpoints", "log", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
 
 
 def toSwerveModuleVelocities(
@@ -176,6 +177,25 @@ def desaturatedDiscretize(
     """:meth:`SwerveDriveKinematics.desaturatedDiscretize` for ``(3,)`` / ``(N, 3)``
     velocities; ``dt`` (s) is a float or an ``(N,)`` stack. Every sample is checked
     before any is written."""
+
+def generateSetpoints(
+    generator: SwerveSetpointGenerator,
+    prevSetpoint: SwerveSetpoint,
+    desiredVelocities: _Array,
+    dt: _Array | float,
+    inputVoltage: _Array | float = ...,
+    constraints: PathConstraints | None = None,
+) -> tuple[_Array, _Array, _Array]:
+    """:meth:`SwerveSetpointGenerator.generateSetpoint` over a log of commands: from
+    ``prevSetpoint``, each row of ``desiredVelocities`` (``(T, 3)`` float64, robot-relative
+    vx, vy, ω) is fed the previous row's setpoint. ``dt`` (s) and ``inputVoltage`` (V, NaN
+    for 12 V) are floats or ``(T,)`` stacks; ``constraints`` applies to every row.
+
+    Returns ``(velocities, modules, feedforwards)``: ``(T, 3)`` chassis velocities,
+    ``(T, N, 2)`` module ``[velocity m/s, angle rad]`` and ``(T, 5, N)`` feedforwards in
+    :class:`DriveFeedforwards`' order. The same numbers as T calls, the generator's
+    heading memory included (it is left as the last call leaves it). Every row is checked
+    before any is computed; the GIL is held (the generator's scratch is shared)."""
 
 def toRobotRelative(
     chassisVectors: _Array,

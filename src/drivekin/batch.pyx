@@ -45,7 +45,7 @@ wheel-drive functions, which call no transcendental function) is the same in bot
 """
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from libc.math cimport atan2, fabs
-from libc.string cimport memset
+from libc.string cimport memcpy, memset
 cimport numpy as cnp
 
 import numpy as np
@@ -62,6 +62,7 @@ from drivekin.geometry cimport Translation2d
 from drivekin._core.drivetrain cimport Drivetrain
 from drivekin.odometry cimport _Odometry
 from drivekin.swerve cimport SwerveDriveKinematics, check_desaturated_discretize
+from drivekin.setpoint cimport (SwerveSetpointGenerator, check_step, generate, limits_t)
 from drivekin._core.errors import type_name
 
 cnp.import_array()
@@ -90,7 +91,7 @@ cdef enum:
     CHUNK = 32
 
 __all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize",
-           "exp", "log", "replay", "toChassisAccelerations", "toChassisVelocities",
+           "exp", "generateSetpoints", "log", "replay", "toChassisAccelerations", "toChassisVelocities",
            "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations",
            "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
 
@@ -534,6 +535,51 @@ def desaturatedDiscretize(kinematics, chassisVelocities, dt, double attainableMa
             o.data[3 * i + 1] = d.y
             o.data[3 * i + 2] = d.z
     return o.array
+
+
+def generateSetpoints(generator, prevSetpoint, desiredVelocities, dt,
+                      inputVoltage=float("nan"), constraints=None):
+    """:meth:`SwerveSetpointGenerator.generateSetpoint` over a log of commands: from
+    ``prevSetpoint``, each row of ``desiredVelocities`` (``(T, 3)`` float64, robot-relative
+    vx, vy, ω) is fed the previous row's setpoint. ``dt`` (s) and ``inputVoltage`` (V, NaN
+    for 12 V) are floats or ``(T,)`` stacks; ``constraints`` applies to every row.
+
+    Returns ``(velocities, modules, feedforwards)``: ``(T, 3)`` chassis velocities,
+    ``(T, N, 2)`` module ``[velocity m/s, angle rad]`` and ``(T, 5, N)`` feedforwards in
+    :class:`DriveFeedforwards`' order. The same numbers as T calls, the generator's
+    heading memory included (it is left as the last call leaves it). Every row is checked
+    before any is computed; the GIL is held (the generator's scratch is shared)."""
+    if type(generator) is not SwerveSetpointGenerator:
+        raise TypeError(f"generateSetpoints takes a SwerveSetpointGenerator as its first "
+                        f"argument, got {type_name(generator)}")
+    cdef SwerveSetpointGenerator g = <SwerveSetpointGenerator>generator
+    cdef _Stack v = _stack(desiredVelocities, (3,), "desiredVelocities", False)
+    cdef _Stack t = _per_sample(dt, v.n, False, "dt")
+    cdef _Stack u = _per_sample(inputVoltage, v.n, False, "inputVoltage")
+    cdef Py_ssize_t i, m, count = v.n, n = g.g.n
+    cdef vec3_t want
+    cdef limits_t lim
+    for i in range(count):
+        want.x, want.y, want.z = v.data[3 * i], v.data[3 * i + 1], v.data[3 * i + 2]
+        check_step(want, t.data[i], u.data[i], f"sample {i}: ")
+    chassis = np.empty((count, 3))
+    modules = np.empty((count, n, 2))
+    feedforwards = np.empty((count, 5, n))
+    cdef double* oc = <double*>cnp.PyArray_DATA(chassis)
+    cdef double* om = <double*>cnp.PyArray_DATA(modules)
+    cdef double* of = <double*>cnp.PyArray_DATA(feedforwards)
+    cdef int has = g._load(prevSetpoint, constraints, &lim)
+    cdef double* out = g.out
+    for i in range(count):
+        want.x, want.y, want.z = v.data[3 * i], v.data[3 * i + 1], v.data[3 * i + 2]
+        generate(&g.g, g.prev, want, t.data[i], u.data[i], &lim if has else NULL, out)
+        memcpy(g.prev, out, sizeof(double) * (3 + 3 * n))
+        memcpy(oc + 3 * i, out, sizeof(double) * 3)
+        memcpy(of + 5 * n * i, out + 3 + 3 * n, sizeof(double) * 5 * n)
+        for m in range(n):
+            om[2 * (n * i + m)] = out[3 + m]
+            om[2 * (n * i + m) + 1] = atan2(out[3 + 2 * n + m], out[3 + n + m])
+    return chassis, modules, feedforwards
 
 
 cdef object _rotate(object vectors, object robotAngles, object out, bint to_robot):

@@ -23,7 +23,13 @@ from drivekin import (
     Pose2d,
     Rotation2d,
     SwerveDriveKinematics,
+    ChassisVelocities,
+    DCMotor,
+    DriveFeedforwards,
+    ModuleConfig,
+    RobotConfig,
     SwerveModulePosition,
+    SwerveModuleVelocity,
     Translation2d,
 )
 
@@ -67,6 +73,16 @@ SAMPLES = {
     "_StdDevs": lambda: (0.1, 0.2, 0.3),
     "Sequence[SwerveModulePosition] | npt.NDArray[np.float64]":
         lambda: [SwerveModulePosition(0.1, Rotation2d(0.2)) for _ in range(4)],
+    "DCMotor": lambda: DCMotor.getNEO(1),
+    "ModuleConfig": lambda: ModuleConfig(0.05, 4.0, 1.0, DCMotor.getNEO(1), 40.0),
+    "RobotConfig": lambda: RobotConfig(50.0, 5.0, SAMPLES["ModuleConfig"](),
+                                       SAMPLES["Sequence[Translation2d]"]()),
+    "Literal['pathplanner'] | None": lambda: "pathplanner",
+    "Sequence[float]": lambda: [0.1, 0.2],
+    "Sequence[SwerveModuleVelocity]": lambda: [SwerveModuleVelocity(0.1, Rotation2d(0.2))
+                                               for _ in range(2)],
+    "ChassisVelocities": lambda: ChassisVelocities(0.1, 0.2, 0.3),
+    "DriveFeedforwards": lambda: DriveFeedforwards.zeros(2),
 }
 ARRAYS = {"vector": np.array([1.0, 2.0]), "matrix": None}
 # Floats that must differ (a DCMotor's free current is below its stall current).

@@ -423,29 +423,10 @@ def test_stub_classes_mirror_the_runtime_hierarchy(module):
 
 
 def _sample_instances() -> dict[str, object]:
-    """One instance per public class, for the writability check."""
-    from drivekin import (
-        DifferentialDriveKinematics, DifferentialDriveOdometry, DifferentialDriveWheelPositions,
-        MecanumDriveKinematics, MecanumDriveOdometry, MecanumDriveWheelPositions, Rotation2d,
-        SwerveDriveKinematics, SwerveDriveOdometry, SwerveModulePosition, Translation2d,
-    )
-    fl, fr, rl, rr = (Translation2d(x, y) for x, y in ((1, 1), (1, -1), (-1, 1), (-1, -1)))
-    swerve = SwerveDriveKinematics(fl, fr, rl, rr)
-    mecanum = MecanumDriveKinematics(fl, fr, rl, rr)
-    return {
-        "SwerveDriveKinematics": swerve,
-        "MecanumDriveKinematics": mecanum,
-        "DifferentialDriveKinematics": DifferentialDriveKinematics(0.6),
-        "DifferentialDriveWheelPositions": DifferentialDriveWheelPositions(0.0, 0.0),
-        "SwerveDriveOdometry": SwerveDriveOdometry(
-            swerve, Rotation2d(), [SwerveModulePosition() for _ in range(4)]),
-        "MecanumDriveOdometry": MecanumDriveOdometry(
-            mecanum, Rotation2d(), MecanumDriveWheelPositions()),
-        "DifferentialDriveOdometry": DifferentialDriveOdometry(Rotation2d(), 0.0, 0.0),
-        "DifferentialSwerveModuleKinematics": drivekin.DifferentialSwerveModuleKinematics(
-            3.0, 5.0, 0.05),
-        "DCMotor": drivekin.DCMotor.getNEO(2),
-    }
+    """One instance per public class with an example in the catalog, for the writability
+    check."""
+    from drivekin._core import catalog
+    return {e.cls.__name__: e.example() for e in catalog.ENTRIES if e.example is not None}
 
 
 @pytest.mark.parametrize("module", MODULES)

@@ -318,7 +318,22 @@ def _motor_from(m: Any) -> DCMotor:
                    m.freeSpeed)
 
 
+def _robot_config() -> Any:
+    module = _dk.ModuleConfig(0.0508, 4.5, 1.2, DCMotor.getKrakenX60(1).withReduction(6.75),
+                              60.0, 1)
+    return _dk.RobotConfig(60.0, 6.0, module, [_T(0.27, 0.27), _T(0.27, -0.27),
+                                               _T(-0.27, 0.27), _T(-0.27, -0.27)])
+
+
+def _setpoint() -> Any:
+    return _dk.SwerveSetpoint(ChassisVelocities(1.0, 0.5, 0.25),
+                              [SwerveModuleVelocity(1.0, _R(0.5 * i)) for i in range(4)],
+                              _dk.DriveFeedforwards(*([0.5 * i + k for i in range(4)]
+                                                      for k in range(5))))
+
+
 _NEW_2027 = "robotpy-wpimath 2026 has no {} (it is new in WPILib 2027)"
+_PATHPLANNER = "robotpy-wpimath 2026 has no {} (it is PathPlannerLib's)"
 _DRIVEKIN_ONLY = "robotpy-wpimath 2026 has no counterpart of {}"
 
 # ---------------------------------------------------------------------------------------
@@ -521,6 +536,17 @@ ENTRIES: tuple[Entry, ...] = (
     Entry(DCMotor, "value",
           peer=Peer("system.plant", ("DCMotor",), _motor_to, _motor_from),
           example=lambda: DCMotor.getNEO(2)),
+    # PathPlannerLib's setpoint generator and what it takes and gives (drivekin.setpoint)
+    Entry(_dk.ModuleConfig, "value", no_peer=_PATHPLANNER,
+          example=lambda: _robot_config().moduleConfig),
+    Entry(_dk.RobotConfig, "value", no_peer=_PATHPLANNER, example=_robot_config),
+    Entry(_dk.PathConstraints, "value", no_peer=_PATHPLANNER,
+          example=lambda: _dk.PathConstraints(3.0, 4.0, 5.0, 6.0)),
+    Entry(_dk.DriveFeedforwards, "value", no_peer=_PATHPLANNER,
+          example=lambda: _setpoint().feedforwards),
+    Entry(_dk.SwerveSetpoint, "value", no_peer=_PATHPLANNER, example=_setpoint),
+    Entry(_dk.SwerveSetpointGenerator, "helper",
+          example=lambda: _dk.SwerveSetpointGenerator(_robot_config(), 10.0)),
     # Helpers (Units has static methods only and refuses instances: no example)
     Entry(_dk.MathSharedStore, "helper", example=_dk.MathSharedStore),
     Entry(_dk.TimeInterpolatableBuffer, "helper", example=_double_buffer),
