@@ -25,12 +25,11 @@ cimport cython
 from cpython.long cimport PyLong_CheckExact
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport Py_INCREF, PyObject
-from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.tuple cimport PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, atan2, cos, fabs, hypot, isfinite, isnan, sin, sqrt
 from libc.string cimport memcpy
 
-from drivekin._core.args cimport (as_fast, check_type, exact_type, positive_finite,
+from drivekin._core.args cimport (check_type, is_array, positive_finite, read_floats,
                                   read_number, snapshot)
 from drivekin._core.kernels cimport (chassis_discretize, desaturated_discretize_scale,
                                      forward_solve, jmax, jmin, rot_minus, rot_neg,
@@ -43,6 +42,9 @@ from drivekin.motor cimport DCMotor
 from drivekin.swerve cimport (SwerveDriveKinematics, SwerveModuleVelocity, _ModuleVector,
                               new_module_velocity)
 from drivekin._core.errors import refuse_delete, type_name
+cimport numpy as cnp
+
+cnp.import_array()
 
 __all__ = ["DriveFeedforwards", "ModuleConfig", "PathConstraints", "RobotConfig",
            "SwerveSetpoint", "SwerveSetpointGenerator"]
@@ -451,16 +453,11 @@ cdef class PathConstraints:
 # ---------------------------------------------------------------------------------------
 # The setpoint
 
-cdef int read_floats(object seq, str name, Py_ssize_t n, double* out) except -1:
-    """Read ``seq`` (a list or tuple of n numbers; n < 0: any length) into out."""
-    cdef object fast = as_fast(seq, name, "a sequence of floats", "", True)
-    cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fast)
-    cdef PyObject** items = PySequence_Fast_ITEMS(fast)
-    if k != n:
-        raise ValueError(f"{name} must hold {n} values (one per module), got {k}")
-    for i in range(k):
-        if read_number(items[i], &out[i]) != 0:
-            raise TypeError(f"{name}[{i}] must be a float, got {type_name(<object>items[i])}")
+cdef int read_row(object seq, str name, Py_ssize_t n, double* out) except -1:
+    # n finite numbers from a list, tuple or 1-D float64 array.
+    cdef Py_ssize_t i
+    read_floats(seq, n, out, name, "values (one per module)")
+    for i in range(n):
         if not isfinite(out[i]):
             raise ValueError(f"{name}[{i}] must be finite, got {out[i]!r}")
     return 0
@@ -495,9 +492,11 @@ cdef class DriveFeedforwards:
                             "an existing instance")
         rows = (accelerationsMPSSq, linearForcesNewtons, torqueCurrentsAmps,
                 robotRelativeForcesXNewtons, robotRelativeForcesYNewtons)
-        cdef Py_ssize_t n = PySequence_Fast_GET_SIZE(
-            as_fast(accelerationsMPSSq, "accelerationsMPSSq", "a sequence of floats", "",
-                    True))
+        cdef Py_ssize_t n = 0
+        if is_array(accelerationsMPSSq) or type(accelerationsMPSSq) in (list, tuple):
+            n = len(accelerationsMPSSq)
+        else:
+            read_row(accelerationsMPSSq, FEEDFORWARD_NAMES[0], 0, NULL)    # the TypeError
         if n < 1:
             raise ValueError("accelerationsMPSSq must hold one value per module, got none")
         cdef double* d = <double*>PyMem_Malloc(sizeof(double) * 5 * n)
@@ -506,7 +505,7 @@ cdef class DriveFeedforwards:
         cdef int k
         try:
             for k in range(5):
-                read_floats(rows[k], FEEDFORWARD_NAMES[k], n, d + k * n)
+                read_row(rows[k], FEEDFORWARD_NAMES[k], n, d + k * n)
         except BaseException:
             PyMem_Free(d)
             raise
@@ -568,6 +567,8 @@ cdef class DriveFeedforwards:
         return self._row(4)
 
     def __len__(self):
+        if self.d == NULL:
+            raise RuntimeError("DriveFeedforwards.__init__ has not completed")
         return self.n
 
     def __eq__(self, other):

@@ -66,7 +66,8 @@ from drivekin import (
     TwoDeadWheelOdometry,
     Units,
 )
-from drivekin import DCMotor
+from drivekin import (DCMotor, DriveFeedforwards, ModuleConfig, PathConstraints, RobotConfig,
+                      SwerveSetpoint, SwerveSetpointGenerator)
 
 N = 4  # modules of the registry's swerve drive
 
@@ -114,9 +115,14 @@ SPECIAL = {
     **{e.cls: "one odometry sample at t = 0, so sampleAt and vision measurements have "
               "history" for e in catalog.entries("estimator")},
     Units: "no instances: the receiver of its static methods is the class itself",
+    SwerveSetpointGenerator: "compatibility='pathplanner', whose compatibility property "
+                             "reads a value (the default mode's is None, which reads as a "
+                             "failed property here)",
 }
 VALID[SwerveDriveKinematics] = _swerve
 VALID[DSK] = _diffswerve
+VALID[SwerveSetpointGenerator] = lambda: SwerveSetpointGenerator(
+    example(RobotConfig), 10.0, compatibility="pathplanner")
 
 ALT = {  # a second valid instance, different from VALID's
     T: lambda: T(-2.0, 0.5),
@@ -138,6 +144,15 @@ ALT = {  # a second valid instance, different from VALID's
     DSMV: lambda: DSMV(-3.0, 0.5),
     DSModV: lambda: DSModV(-2.0, 1.0),
     DCMotor: lambda: DCMotor.getKrakenX60(1),
+    ModuleConfig: lambda: ModuleConfig(0.05, 4.0, 1.0, DCMotor.getNEO(1), 40.0, 2),
+    RobotConfig: lambda: RobotConfig(45.0, 4.0, example(ModuleConfig),
+                                     [T(0.2, 0.3), T(0.2, -0.3), T(-0.2, 0.3), T(-0.2, -0.3)]),
+    PathConstraints: lambda: PathConstraints(1.0, 2.0, 3.0, 4.0, 11.0),
+    DriveFeedforwards: lambda: DriveFeedforwards(*([-0.25 * i - k for i in range(N)]
+                                                   for k in range(5))),
+    SwerveSetpoint: lambda: SwerveSetpoint(CV(-1.0, 0.5, -0.5),
+                                           [SMV(-1.0, R(0.3 * i)) for i in range(N)],
+                                           DriveFeedforwards.zeros(N)),
 }
 _ALT = threading.local()  # per thread: the thread cases build both kinds at once
 
@@ -173,6 +188,9 @@ ESTIMATORS = {e.cls for e in catalog.entries("estimator")}
 # DCMotor is immutable too, but has no default value for __new__ to match: a __new__'d
 # one refuses to compute, as the kinematics do.
 INIT_ONCE = IMMUTABLE | KINEMATICS | ODOMETRY | ESTIMATORS | {TIB, DCMotor}
+# The setpoint generator's values are immutable and refuse a second __init__ the same way.
+INIT_ONCE |= {ModuleConfig, RobotConfig, PathConstraints, DriveFeedforwards, SwerveSetpoint,
+              SwerveSetpointGenerator}
 STATEFUL = ODOMETRY | ESTIMATORS | {TIB}   # no value semantics: not copyable, no str of values
 NAMESPACES = {MathSharedStore, Units}      # static methods only; the clock is not deterministic
 
@@ -807,6 +825,77 @@ PROTOBUF = {  # function name -> Sig (receiver-less)
 PROTOBUF_NONCALLABLE = {"PROTOBUF_TYPES", "ProtobufValue", "PACKAGE", "GEOMETRY2D_FILE",
                         "KINEMATICS_FILE", "SCHEMA_TYPE"}
 
+class SettingsFile(Kind):
+    """The path of a valid PathPlanner settings.json (written once per process)."""
+
+    path = None
+
+    def valid(self):
+        if SettingsFile.path is None:
+            import json
+            import tempfile
+            f = tempfile.NamedTemporaryFile("w", suffix=".json", delete=False)
+            json.dump({"holonomicMode": True, "robotMass": 60.0, "robotMOI": 6.0,
+                       "driveWheelRadius": 0.0508, "driveGearing": 6.75,
+                       "maxDriveSpeed": 4.5, "wheelCOF": 1.2, "driveMotorType": "krakenX60",
+                       "driveCurrentLimit": 60.0, "flModuleX": 0.27, "flModuleY": 0.27,
+                       "frModuleX": 0.27, "frModuleY": -0.27, "blModuleX": -0.27,
+                       "blModuleY": 0.27, "brModuleX": -0.27, "brModuleY": -0.27}, f)
+            f.close()
+            SettingsFile.path = f.name
+        return SettingsFile.path
+
+
+# The setpoint generator (drivekin.setpoint): PathPlannerLib's names.
+API[ModuleConfig] = {
+    "__init__": [S(Num(0.05), Num(4.5), Num(1.2), Obj(DCMotor), Num(60.0)),
+                 S(Num(0.05), Num(4.5), Num(1.2), Obj(DCMotor), Num(60.0), Int(2))],
+    "__reduce__": S(), "__eq__": S(Obj(ModuleConfig)),
+    **{f: Prop() for f in ("wheelRadiusMeters", "maxDriveVelocityMPS",
+                           "maxDriveVelocityRadPerSec", "wheelCOF", "driveMotor",
+                           "driveCurrentLimit", "numMotors", "torqueLoss")},
+}
+API[RobotConfig] = {
+    "__init__": S(Num(60.0), Num(6.0), Obj(ModuleConfig), Seq(T, n=None, least=2)),
+    "__reduce__": S(), "__eq__": S(Obj(RobotConfig)),
+    "fromGUISettings": S(SettingsFile()),
+    **{f: Prop() for f in ("massKG", "MOI", "moduleConfig", "moduleLocations", "numModules",
+                           "modulePivotDistance", "wheelFrictionForce", "maxTorqueFriction")},
+}
+API[PathConstraints] = {
+    "__init__": [S(Num(1.0), Num(2.0), Num(3.0), Num(4.0)),
+                 S(Num(1.0), Num(2.0), Num(3.0), Num(4.0), Num(12.0))],
+    "__reduce__": S(), "__eq__": S(Obj(PathConstraints)),
+    "unlimitedConstraints": [S(), S(Num(12.0))],
+    **{f: Prop() for f in ("maxVelocityMps", "maxAccelerationMpsSq", "maxAngularVelocityRps",
+                           "maxAngularAccelerationRpsSq", "nominalVoltage", "unlimited")},
+}
+API[DriveFeedforwards] = {
+    "__init__": S(*(Floats(N) for _ in range(5))),
+    "__reduce__": S(), "__eq__": S(Obj(DriveFeedforwards)), "__len__": S(),
+    "zeros": S(Int(N)),
+    **{f: Prop() for f in ("accelerationsMPSSq", "linearForcesNewtons", "torqueCurrentsAmps",
+                           "robotRelativeForcesXNewtons", "robotRelativeForcesYNewtons")},
+}
+API[SwerveSetpoint] = {
+    "__init__": S(Obj(CV), Seq(SMV), Obj(DriveFeedforwards)),
+    "__reduce__": S(), "__eq__": S(Obj(SwerveSetpoint)),
+    **{f: Prop() for f in ("robotRelativeVelocities", "moduleVelocities", "feedforwards")},
+}
+_CONSTRAINTS = Obj(PathConstraints, none_ok=True)
+API[SwerveSetpointGenerator] = {
+    "__init__": [S(Obj(RobotConfig), Num(10.0)), S(Obj(RobotConfig), Num(10.0), Num(6.75))],
+    "__reduce__": S(),
+    **{f: Prop() for f in ("config", "maxSteerVelocityRadPerSec", "brownoutVoltage",
+                           "compatibility")},
+    "generateSetpoint": [S(Obj(SwerveSetpoint), Obj(CV), Num(0.02)),
+                         S(Obj(SwerveSetpoint), Obj(CV), Num(0.02), Num(11.0), _CONSTRAINTS)],
+    "generateSetpointInto": [
+        S(Obj(SwerveSetpoint), Obj(CV), Num(0.02), Out(SwerveSetpoint)),
+        S(Obj(SwerveSetpoint), Obj(CV), Num(0.02), Out(SwerveSetpoint), Num(11.0),
+          _CONSTRAINTS)],
+}
+
 _CHASSIS_STACK = Arr((6, 3), rows_free=True)
 BATCH = {  # drivekin.batch: stacks of 6 samples
     "toSwerveModuleVelocities": S(Obj(SwerveDriveKinematics), _CHASSIS_STACK),
@@ -828,6 +917,11 @@ BATCH = {  # drivekin.batch: stacks of 6 samples
     "toRobotRelative": S(_CHASSIS_STACK, NUM), "toFieldRelative": S(_CHASSIS_STACK, NUM),
     "exp": S(_CHASSIS_STACK), "log": S(_CHASSIS_STACK),
     "replay": S(Obj(DifferentialDriveOdometry), Arr((6,)), Arr((6, 2))),
+    "generateSetpoints": [
+        S(Obj(SwerveSetpointGenerator), Obj(SwerveSetpoint), _CHASSIS_STACK, Num(0.02),
+          Num(12.0)),
+        S(Obj(SwerveSetpointGenerator), Obj(SwerveSetpoint), _CHASSIS_STACK, Arr((6,)),
+          Arr((6,), fill=[12.0, 11.0, 10.0, 9.0, 8.0, 7.0]), _CONSTRAINTS)],
 }
 
 # Module-level functions (the receiver-less members): module -> its registry.
