@@ -202,7 +202,10 @@ def test_descriptors_match_table(case):
 # version, so drivekin does not invent one).
 NO_UPSTREAM_STRUCT = {"DeadWheelKinematics", "DifferentialSwerveModuleKinematics",
                       "DifferentialSwerveModuleVelocities",
-                      "DifferentialSwerveMotorVelocities"}
+                      "DifferentialSwerveMotorVelocities",
+                      # PathPlannerLib's setpoint generator and its values (not WPILib's)
+                      "DriveFeedforwards", "ModuleConfig", "PathConstraints", "RobotConfig",
+                      "SwerveSetpoint", "SwerveSetpointGenerator"}
 
 
 # Public classes that are not values: stateful trackers, static-method namespaces and
