@@ -418,6 +418,37 @@ ERRORS += [
         DifferentialSwerveModuleKinematics).toModulePosition(0.0, 0.0), RuntimeError),
 ]
 
+# --- the setpoint generator (drivekin.setpoint) ----------------------------------------
+import drivekin.batch as _batch  # noqa: E402
+from drivekin import (  # noqa: E402
+    ChassisVelocities, DriveFeedforwards, PathConstraints, SwerveSetpoint,
+    SwerveSetpointGenerator,
+)
+
+sp_gen = SwerveSetpointGenerator(catalog.BY_CLASS[SwerveSetpointGenerator].example().config,
+                                 10.0)
+sp_prev = catalog.BY_CLASS[SwerveSetpoint].example()
+sp_out = catalog.BY_CLASS[SwerveSetpoint].example()
+sp_cmd = ChassisVelocities(3.0, 1.0, 2.0)
+sp_limits = PathConstraints(2.0, 3.0, 4.0, 5.0)
+sp_rows = np.tile([3.0, 1.0, 2.0], (8, 1))
+OPERATIONS += [
+    ("generateSetpoint", lambda: sp_gen.generateSetpoint(sp_prev, sp_cmd, 0.02, 11.0, sp_limits)),
+    ("generateSetpointInto", lambda: sp_gen.generateSetpointInto(sp_prev, sp_cmd, 0.02, sp_out)),
+    ("batch.generateSetpoints", lambda: _batch.generateSetpoints(sp_gen, sp_prev, sp_rows, 0.02),
+     10),
+]
+ERRORS += [
+    ("generateSetpoint dt=0", lambda: sp_gen.generateSetpoint(sp_prev, sp_cmd, 0.0), ValueError),
+    ("generateSetpointInto 3-module out", lambda: sp_gen.generateSetpointInto(
+        sp_prev, sp_cmd, 0.02, SwerveSetpoint(sp_cmd, sp_prev.moduleVelocities[:3],
+                                              DriveFeedforwards.zeros(3))), ValueError),
+    ("DriveFeedforwards bad last row", lambda: DriveFeedforwards(
+        [1.0, 2.0], [1.0, 2.0], [1.0, 2.0], [1.0, 2.0], [1.0, "x"]), TypeError),
+    ("batch.generateSetpoints NaN row", lambda: _batch.generateSetpoints(
+        sp_gen, sp_prev, np.full((4, 3), np.nan), 0.02), ValueError),
+]
+
 # --- every catalogued class, from its entry --------------------------------------------
 # Examples that build kinematics solve a pseudo-inverse (up to ~0.1 ms a call): those
 # kinds run a hundredth of the count; the helpers (a buffer filled in Python, ~4 µs) and
