@@ -15,9 +15,10 @@ curve, current limit, battery voltage, wheel friction) and the optional
   that space; the drive limit's root is scaled by the steering limit's, as in Team 254's
   original;
 - ``compatibility="pathplanner"`` reproduces PathPlannerLib Java/C++ 2026: it drops
-  254's factor (so the drive limit is under-enforced whenever steering limits the step)
-  and discretizes after limiting (so consecutive outputs can differ by more than the
-  limits allow while the robot turns).
+  254's factor (so a module's drive limit is under-enforced once the step has been
+  shortened, by steering or by another module's drive limit) and discretizes after
+  limiting (so consecutive outputs can differ by more than the limits allow while the
+  robot turns).
 
 docs/setpoints.md gives the rules, the PathPlanner → drivekin names and the measured
 differences."""

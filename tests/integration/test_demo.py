@@ -147,6 +147,53 @@ def test_vision_mode_reports_odometry_and_estimator_against_the_truth():
     assert refused.returncode == 2 and "--vision" in refused.stderr
 
 
+def test_setpoint_generator_mode_limits_steps_without_allocating():
+    argv = ("--setpoint-generator", "--seconds", "5", "--json")
+    first, second = run_demo(*argv), run_demo(*argv)
+    plain = run_demo("--seconds", "5", "--json")
+    for r in (first, second, plain):
+        assert r.returncode == 0, r.stderr
+    a, b, p = json.loads(first.stdout), json.loads(second.stdout), json.loads(plain.stdout)
+    assert (a["drivetrain"], a["odometry"], a["steps"]) == ("swerve", "SwerveDriveOdometry", 250)
+    # generateSetpointInto keeps the loop allocation-free.
+    allocations = dict(a["allocations"])
+    assert allocations.pop("net_blocks") <= 0       # see test_text_output_reports_zero_allocations
+    assert allocations == {"allocator_calls": 0, "traced_peak_bytes": 0, "traced_net_bytes": 0}
+    assert a["passes_agree"]
+    sg = a["setpoint_generator"]
+    assert sg["mode"] == "default" and sg["steps"] == 250
+    # The script's first step asks for 2.25 m/s from rest, far beyond one 20 ms step of
+    # a 60 kg robot's drive torque: the generator must limit some steps, and not all (the
+    # commands hold still for seconds at a time).
+    assert 0 < sg["limited_steps"] < 250
+    assert sg["limited_fraction"] == pytest.approx(sg["limited_steps"] / 250, rel=1e-12)
+    lat = a["setpoint_generator_latency_us"]
+    assert 0.0 < lat["p50"] <= lat["p99"] <= lat["max"] and lat["mean"] > 0.0
+    # Deterministic, and a different run from the one without the generator.
+    assert a["final_pose"] == b["final_pose"] and sg == b["setpoint_generator"]
+    assert a["final_pose"] != p["final_pose"]
+    assert "setpoint_generator" not in p and "setpoint_generator_latency_us" not in p
+
+
+def test_setpoint_generator_text_report_and_where_it_applies():
+    out = run_demo("--setpoint-generator", "--seconds", "1").stdout
+    assert "SwerveSetpointGenerator.generateSetpointInto (default mode)" in out   # step chain
+    assert "setpoint generator: 60 kg" in out                                     # robot
+    assert re.match(r"\d+ of 50\s+\d+\.\d %", _row(out, "steps limited")), out
+    assert re.match(r"\d+\.\d+ µs\s+p50; p99", _row(out, "generateSetpointInto")), out
+    assert _row(out, "allocator calls").split()[0] == "0"
+    vision = run_demo("--setpoint-generator", "--vision", "--seconds", "1", "--json")
+    assert vision.returncode == 0, vision.stderr
+    v = json.loads(vision.stdout)
+    assert v["vision"] is True and v["setpoint_generator"]["steps"] == 50
+    assert v["allocations"]["allocator_calls"] == 0
+    assert "estimator_latency_us" in v and "setpoint_generator_latency_us" in v
+    for drivetrain in ("mecanum", "differential", "deadwheel", "diffswerve"):
+        refused = run_demo("--setpoint-generator", "--drivetrain", drivetrain, "--seconds", "1")
+        assert refused.returncode == 2 and "--setpoint-generator" in refused.stderr
+        assert refused.stdout == ""
+
+
 def test_default_drivetrain_is_swerve():
     result = run_demo("--seconds", "0.1", "--json")
     assert result.returncode == 0, result.stderr
@@ -158,7 +205,7 @@ def test_help_documents_every_option():
     result = run_demo("--help")
     assert result.returncode == 0
     for option in ("--seconds", "--max-speed", "--max-omega", "--drivetrain", "--quiet",
-                   "--json"):
+                   "--json", "--vision", "--setpoint-generator"):
         assert option in result.stdout
     for drivetrain in DRIVETRAINS:
         assert drivetrain in result.stdout

@@ -13,7 +13,8 @@ import math
 import sys
 
 from drivekin.app import replay_cli
-from drivekin.app.demo import DRIVETRAINS, DT, VISION_DRIVETRAINS, header, run, table
+from drivekin.app.demo import (DRIVETRAINS, DT, SETPOINT_DRIVETRAINS, VISION_DRIVETRAINS,
+                                header, run, table)
 from drivekin.app.options import docs_url, need_extras, new_file, number_option
 
 
@@ -72,6 +73,14 @@ def parse_args(argv=None):
                              "camera (AprilTag poses every 40 ms, 60 ms latency, noise) fed to "
                              "SwerveDrivePoseEstimator; reports odometry-only and estimator "
                              "error against the simulated truth")
+    parser.add_argument("--setpoint-generator", action="store_true",
+                        help="swerve only (with or without --vision): pass the robot-relative "
+                             "command through a SwerveSetpointGenerator (default mode: "
+                             "steering-rate, drive-torque and wheel-friction limits of a 60 kg "
+                             "robot with Kraken X60 drives) with generateSetpointInto, and "
+                             "drive the modules with its module velocities instead of "
+                             "discretize, inverse kinematics and desaturation; reports the "
+                             "generator's time per call and how many steps it limited")
     parser.add_argument("--log", type=new_file("--log"), metavar="FILE.wpilog",
                         help="also write the simulated run (true pose, odometry, gyro, module "
                              "or wheel positions, commanded and measured module states) as a "
@@ -99,6 +108,11 @@ def main(argv=None) -> int:
     if args.vision and args.drivetrain not in VISION_DRIVETRAINS:
         print(f"python -m drivekin: error: --vision is simulated for "
               f"{', '.join(VISION_DRIVETRAINS)} only, not {args.drivetrain}", file=sys.stderr)
+        return 2
+    if args.setpoint_generator and args.drivetrain not in SETPOINT_DRIVETRAINS:
+        print(f"python -m drivekin: error: --setpoint-generator is simulated for "
+              f"{', '.join(SETPOINT_DRIVETRAINS)} only, not {args.drivetrain}",
+              file=sys.stderr)
         return 2
     steps = round(args.seconds / DT)
     result = run(args)
@@ -132,7 +146,8 @@ def _record(args, steps: int, result: dict):
             result["log"] = {"path": args.log, "entries": n}
         if args.plot:
             title = f"python -m drivekin: {args.drivetrain}" + (
-                " --vision" if args.vision else "") + f", {steps * DT:g} s"
+                " --vision" if args.vision else "") + (
+                " --setpoint-generator" if args.setpoint_generator else "") + f", {steps * DT:g} s"
             record.plot_run(args.plot, rec, title)
             lines.append(f"wrote {args.plot}")
             result["plot"] = {"path": args.plot}

@@ -59,13 +59,21 @@ ticks and noise), reporting both odometries' errors against the simulated truth 
 camera whose delayed, noisy AprilTag poses go to a SwerveDrivePoseEstimator; both
 estimates are compared with the truth (see :class:`VisionSwerveDrive`).
 
+``--setpoint-generator`` (swerve, also with ``--vision``) replaces discretize, inverse
+kinematics and desaturation with a :class:`~drivekin.SwerveSetpointGenerator` in its default
+mode: ``generateSetpointInto(setpoint, command, 0.02, setpoint, 12.0)`` updates one setpoint in
+place each step, and its module velocities are copied into the module targets. The report
+adds the generator's time per call (pass 1) and the steps it limited (see
+:class:`SwerveDrive`).
+
 Only the standard library and drivekin are used. Drivetrains plug in through
 :data:`DRIVETRAINS`: a :class:`Drivetrain` subclass with ``pose``, ``distance``,
 ``describe()``, ``step(command)`` and optionally ``results()``.
 """
-from drivekin.app.demo.drivetrains import DRIVETRAINS, VISION_DRIVETRAINS
+from drivekin.app.demo.drivetrains import DRIVETRAINS, SETPOINT_DRIVETRAINS, VISION_DRIVETRAINS
 from drivekin.app.demo.measure import run
 from drivekin.app.demo.report import header, table
 from drivekin.app.demo.script import DT
 
-__all__ = ["DRIVETRAINS", "DT", "VISION_DRIVETRAINS", "header", "run", "table"]
+__all__ = ["DRIVETRAINS", "DT", "SETPOINT_DRIVETRAINS", "VISION_DRIVETRAINS", "header", "run",
+           "table"]

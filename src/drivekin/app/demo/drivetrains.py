@@ -10,6 +10,7 @@ from typing import Any
 
 from drivekin import (
     ChassisVelocities,
+    DCMotor,
     DeadWheelKinematics,
     DeadWheelOdometry,
     DifferentialDriveKinematics,
@@ -18,17 +19,22 @@ from drivekin import (
     DifferentialSwerveMotorVelocities,
     DifferentialDriveOdometry,
     DifferentialDriveWheelVelocities,
+    DriveFeedforwards,
     MecanumDriveKinematics,
     MecanumDriveOdometry,
     MecanumDriveWheelPositions,
     MecanumDriveWheelVelocities,
+    ModuleConfig,
     Pose2d,
+    RobotConfig,
     Rotation2d,
     SwerveDriveKinematics,
     SwerveDriveOdometry,
     SwerveDrivePoseEstimator,
     SwerveModulePosition,
     SwerveModuleVelocity,
+    SwerveSetpoint,
+    SwerveSetpointGenerator,
     Translation2d,
     Twist2d,
 )
@@ -92,6 +98,9 @@ class Drivetrain:
     CHAIN: tuple[str, ...] = ()
     GYRO: tuple[str, str] = ("true heading integrated from the simulated",
                              "wheels (toChassisVelocitiesInto of the measured wheel velocities)")
+    #: whether ``--setpoint-generator`` applies (the constructor then takes
+    #: ``setpoint_generator=True``)
+    SETPOINT_GENERATOR = False
 
     __slots__ = ("max_speed", "measured", "gyro", "odometry", "pose", "distance",
                  "_gyro_rad", "_x", "_y")
@@ -110,6 +119,10 @@ class Drivetrain:
     def describe(self) -> str:
         """One line (or a few) on the simulated robot, for the report's header."""
         raise NotImplementedError
+
+    def chain(self) -> tuple[str, ...]:
+        """The header's lines on what one step runs (``CHAIN`` unless an option changes it)."""
+        return self.CHAIN
 
     def step(self, command: ChassisVelocities) -> None:
         """Run one 20 ms control period for the driver's ``command``."""
@@ -203,7 +216,19 @@ class SwerveModuleSim:
 
 class SwerveDrive(Drivetrain):
     """Four-module swerve robot: inverse kinematics with desaturation, the module model,
-    the simulated gyro and SwerveDriveOdometry, all writing into preallocated objects."""
+    the simulated gyro and SwerveDriveOdometry, all writing into preallocated objects.
+
+    With ``setpoint_generator=True`` (``--setpoint-generator``) the robot-relative command
+    goes through a :class:`~drivekin.SwerveSetpointGenerator` (default mode) instead of
+    discretize, inverse kinematics and desaturation: ``generateSetpointInto`` updates one
+    SwerveSetpoint in place every step, and its module velocities become the module
+    targets. The generator's robot is :data:`SETPOINT_ROBOT` (the module model has no
+    mass, so the generator's torque limits are its own), with ``max_speed`` as its top
+    speed, reached at 95 % of the Kraken X60's free speed, and the module model's
+    steering rate. The step also counts the steps the generator limited: those whose
+    setpoint differs (by more than 1e-9 m/s or rad/s) from the desaturated, discretized
+    command, which is the generator's own target
+    (``SwerveDriveKinematics.desaturatedDiscretizeInto``)."""
 
     name = "swerve"
     ODOMETRY: type = SwerveDriveOdometry
@@ -211,13 +236,26 @@ class SwerveDrive(Drivetrain):
     CHAIN: tuple[str, ...] = ("toRobotRelativeInto → discretizeInto → toSwerveModuleVelocitiesInto →",
              "desaturateWheelVelocitiesInPlace → module model: optimizeInPlace, steering limit,",
              "cosineScaleInPlace, wheel lag → SwerveDriveOdometry.update(gyro, positions)")
+    #: what replaces CHAIN[:2] with --setpoint-generator
+    SETPOINT_CHAIN: tuple[str, ...] = (
+        "toRobotRelativeInto → SwerveSetpointGenerator.generateSetpointInto (default mode) →",
+        "setpoint.moduleVelocities → module model: optimizeInPlace, steering limit,")
     HALF_TRACK = 0.3        # m, module offset from the robot centre in x and y
     WHEEL_TAU = 0.05        # s, wheel-speed time constant
     STEER_RATE = 4.0 * math.pi   # rad/s, steering rate limit
+    SETPOINT_GENERATOR = True
+    #: the generator's robot: mass kg, MOI kg·m², wheel radius m, wheel COF, drive current
+    #: limit A (one Kraken X60 per module)
+    SETPOINT_ROBOT = {"mass_kg": 60.0, "moi_kgm2": 6.0, "wheel_radius_m": 0.0508,
+                      "wheel_cof": 1.2, "current_limit_a": 60.0}
+    SETPOINT_VOLTS = 12.0   # V, the simulated battery (steady)
+    LIMITED_TOL = 1e-9      # m/s, rad/s: a setpoint this close to its target was not limited
 
-    __slots__ = ("kinematics", "targets", "states", "positions", "_m0", "_m1", "_m2", "_m3")
+    __slots__ = ("kinematics", "targets", "states", "positions", "_m0", "_m1", "_m2", "_m3",
+                 "generator", "setpoint", "wanted", "generated", "limited", "gearing",
+                 "_sg_ns", "_sg_count")
 
-    def __init__(self, max_speed: float) -> None:
+    def __init__(self, max_speed: float, setpoint_generator: bool = False) -> None:
         super().__init__(max_speed)
         h = self.HALF_TRACK
         self.kinematics = SwerveDriveKinematics(
@@ -229,20 +267,58 @@ class SwerveDrive(Drivetrain):
         self.positions = [m.position for m in modules]
         self.odometry = SwerveDriveOdometry(self.kinematics, self.gyro, self.positions)
         self.pose = self.odometry.getPose()
+        self.generator: SwerveSetpointGenerator | None = None
+        self._sg_ns: array | None = None        # generator time per step (timing pass)
+        self._sg_count = 0
+        # Steps through the generator, and those it limited (floats: no int allocation).
+        self.generated = 0.0
+        self.limited = 0.0
+        if setpoint_generator:
+            self._new_generator()
+
+    def _new_generator(self) -> None:
+        r = self.SETPOINT_ROBOT
+        motor = DCMotor.getKrakenX60(1)
+        # The reduction at which max_speed is 95 % of the motor's free speed (PathPlanner
+        # counts the torque the motor still makes there as the module's friction).
+        self.gearing = motor.freeSpeed * r["wheel_radius_m"] / (self.max_speed / 0.95)
+        module = ModuleConfig(r["wheel_radius_m"], self.max_speed, r["wheel_cof"],
+                              motor.withReduction(self.gearing), r["current_limit_a"], 1)
+        config = RobotConfig(r["mass_kg"], r["moi_kgm2"], module,
+                             self.kinematics.getModules())
+        self.generator = SwerveSetpointGenerator(config, self.STEER_RATE)
+        self.setpoint = SwerveSetpoint(ChassisVelocities(), [SwerveModuleVelocity()] * 4,
+                                       DriveFeedforwards.zeros(4))
+        self.wanted = ChassisVelocities()
 
     def describe(self) -> str:
         h = self.HALF_TRACK
-        return (f"swerve, 4 modules at (±{h:.2f}, ±{h:.2f}) m; wheel lag τ = "
+        text = (f"swerve, 4 modules at (±{h:.2f}, ±{h:.2f}) m; wheel lag τ = "
                 f"{self.WHEEL_TAU * 1000:.0f} ms, steering ≤ {self.STEER_RATE:.1f} rad/s")
+        if self.generator is not None:
+            r = self.SETPOINT_ROBOT
+            text += (f";\n           setpoint generator: {r['mass_kg']:g} kg, "
+                     f"{r['moi_kgm2']:g} kg·m², Kraken X60 {self.gearing:.2f}:1 per module, "
+                     f"{r['current_limit_a']:g} A, wheel COF {r['wheel_cof']:g}, "
+                     f"{self.SETPOINT_VOLTS:g} V")
+        return text
+
+    def chain(self) -> tuple[str, ...]:
+        if self.generator is None:
+            return self.CHAIN
+        return self.SETPOINT_CHAIN + self.CHAIN[2:]
 
     def step(self, command: ChassisVelocities) -> None:
         """Run one control period for a field-relative ``command`` (overwritten: it is the
         scratch object the chain works in)."""
         command.toRobotRelativeInto(self.gyro, command)
-        command.discretizeInto(DT, command)
         kinematics = self.kinematics
-        kinematics.toSwerveModuleVelocitiesInto(command, self.targets)
-        _desaturate_in_place(self.targets, self.max_speed)
+        if self.generator is None:
+            command.discretizeInto(DT, command)
+            kinematics.toSwerveModuleVelocitiesInto(command, self.targets)
+            _desaturate_in_place(self.targets, self.max_speed)
+        else:
+            self._setpoint_step(command)
         # Unrolled on purpose: a ``for`` over the modules would allocate an iterator.
         self._m0.update()
         self._m1.update()
@@ -250,6 +326,82 @@ class SwerveDrive(Drivetrain):
         self._m3.update()
         kinematics.toChassisVelocitiesInto(self.states, self.measured)
         self._record(self.odometry.update(self._gyro_step(), self.positions))
+
+    def _setpoint_step(self, command: ChassisVelocities) -> None:
+        """The robot-relative ``command`` → the next setpoint (in place) → module targets."""
+        setpoint = self.setpoint
+        ns = self._sg_ns
+        if ns is not None:
+            t0 = _clock_ns()
+        self.generator.generateSetpointInto(setpoint, command, DT, setpoint,
+                                            self.SETPOINT_VOLTS)
+        if ns is not None:
+            # Only in the timing pass, where the ints this makes are not counted.
+            ns[self._sg_count] = _clock_ns() - t0
+            self._sg_count += 1
+        self.generated = self.generated + 1.0
+        # Limited? The generator's target is the desaturated, discretized command.
+        wanted = self.wanted
+        self.kinematics.desaturatedDiscretizeInto(command, DT, self.max_speed, wanted)
+        got = setpoint.robotRelativeVelocities
+        tol = self.LIMITED_TOL
+        if (abs(got.vx - wanted.vx) > tol or abs(got.vy - wanted.vy) > tol
+                or abs(got.omega - wanted.omega) > tol):
+            self.limited = self.limited + 1.0
+        # The module targets: copies, since the module model optimizes and scales them.
+        modules = setpoint.moduleVelocities
+        targets = self.targets
+        _copy_module(modules[0], targets[0])
+        _copy_module(modules[1], targets[1])
+        _copy_module(modules[2], targets[2])
+        _copy_module(modules[3], targets[3])
+
+    def results(self) -> dict:
+        if self.generator is None:
+            return {}
+        steps = self.generated
+        return {"setpoint_generator": {
+            "mode": "default", "steps": int(steps), "limited_steps": int(self.limited),
+            "limited_fraction": self.limited / steps if steps else 0.0}}
+
+    def start_timing(self, steps: int) -> None:
+        if self.generator is not None:
+            self._sg_ns = array("q", bytes(8 * steps))
+            self._sg_count = 0
+
+    def timing_results(self) -> dict:
+        if self._sg_ns is None or self._sg_count == 0:
+            return {}
+        return {"setpoint_generator_latency_us": _latency_us(self._sg_ns[:self._sg_count])}
+
+    @classmethod
+    def report_rows(cls, r: dict) -> list:
+        sg = r.get("setpoint_generator")
+        if not sg:
+            return []
+        rows = [("setpoint generator", "", ""),
+                ("  steps limited", f"{sg['limited_steps']} of {sg['steps']}",
+                 f"{100 * sg['limited_fraction']:.1f} %: setpoint ≠ desaturated, discretized "
+                 "command")]
+        lat = r.get("setpoint_generator_latency_us")
+        if lat:
+            rows.append(("  generateSetpointInto", f"{lat['p50']:.2f} µs",
+                         f"p50; p99 {lat['p99']:.2f} µs, max {lat['max']:.2f} µs, mean "
+                         f"{lat['mean']:.2f} µs (pass 1)"))
+        return rows
+
+
+def _copy_module(source: SwerveModuleVelocity, target: SwerveModuleVelocity) -> None:
+    target.velocity = source.velocity
+    target.angle = source.angle                   # the setter copies the value
+
+
+def _latency_us(samples) -> dict:
+    """p50, p99, max and mean of ns samples, in µs."""
+    ordered = sorted(samples)
+    n = len(ordered)
+    return {"p50": ordered[(n - 1) // 2] / 1e3, "p99": ordered[min(n - 1, (99 * n) // 100)] / 1e3,
+            "max": ordered[-1] / 1e3, "mean": sum(ordered) / n / 1e3}
 
 
 class MecanumDrive(Drivetrain):
@@ -743,8 +895,8 @@ class VisionSwerveDrive(SwerveDrive):
     __slots__ = ("estimator", "truth", "_past", "_uniform", "_step_index", "_t", "_errors",
                  "_est_ns", "_est_count")
 
-    def __init__(self, max_speed: float) -> None:
-        super().__init__(max_speed)
+    def __init__(self, max_speed: float, setpoint_generator: bool = False) -> None:
+        super().__init__(max_speed, setpoint_generator)
         self.estimator = SwerveDrivePoseEstimator(
             self.kinematics, self.gyro, self.positions, Pose2d(),
             (0.1, 0.1, 0.1), (0.5, 0.5, 0.5))
@@ -810,23 +962,22 @@ class VisionSwerveDrive(SwerveDrive):
     def results(self) -> dict:
         e = self._errors
         n = max(1, round(self._t / DT))
-        return {"vision": True, "true_pose": _pose_dict(self.truth),
+        return {**super().results(),
+                "vision": True, "true_pose": _pose_dict(self.truth),
                 "estimated_pose": _pose_dict(self.estimator.getEstimatedPosition()),
                 "odometry_error_m": {"final": e[0], "max": e[1], "mean": e[4] / n},
                 "estimator_error_m": {"final": e[2], "max": e[3], "mean": e[5] / n}}
 
     def start_timing(self, steps: int) -> None:
+        super().start_timing(steps)
         self._est_ns = array("q", bytes(8 * steps))
         self._est_count = 0
 
     def timing_results(self) -> dict:
+        out = super().timing_results()
         if self._est_ns is None or self._est_count == 0:
-            return {}
-        ordered = sorted(self._est_ns[:self._est_count])
-        n = len(ordered)
-        return {"estimator_latency_us": {
-            "p50": ordered[(n - 1) // 2] / 1e3, "p99": ordered[min(n - 1, (99 * n) // 100)] / 1e3,
-            "max": ordered[-1] / 1e3, "mean": sum(ordered) / n / 1e3}}
+            return out
+        return {**out, "estimator_latency_us": _latency_us(self._est_ns[:self._est_count])}
 
     @classmethod
     def report_rows(cls, r: dict) -> list:
@@ -838,7 +989,7 @@ class VisionSwerveDrive(SwerveDrive):
             rows.append(("  estimator per step", f"{lat['p50']:.2f} µs",
                          f"p50; p99 {lat['p99']:.2f} µs, max {lat['max']:.2f} µs "
                          "(updateWithTime + addVisionMeasurement, pass 1)"))
-        return rows
+        return rows + super().report_rows(r)
 
 
 DRIVETRAINS = {cls.name: cls for cls in (SwerveDrive, MecanumDrive, DifferentialDrive,
@@ -846,6 +997,9 @@ DRIVETRAINS = {cls.name: cls for cls in (SwerveDrive, MecanumDrive, Differential
 
 
 VISION_DRIVETRAINS = {"swerve": VisionSwerveDrive}
+
+
+SETPOINT_DRIVETRAINS = tuple(name for name, cls in DRIVETRAINS.items() if cls.SETPOINT_GENERATOR)
 
 
 def drivetrain_class(name: str, vision: bool = False) -> type[Drivetrain]:
@@ -857,3 +1011,14 @@ def drivetrain_class(name: str, vision: bool = False) -> type[Drivetrain]:
     return DRIVETRAINS[name]
 
 
+def make_drivetrain(name: str, max_speed: float, vision: bool = False,
+                    setpoint_generator: bool = False) -> Drivetrain:
+    """A new simulated drivetrain for ``--drivetrain name`` (with ``--vision``,
+    ``--setpoint-generator``)."""
+    cls = drivetrain_class(name, vision)
+    if not setpoint_generator:
+        return cls(max_speed)
+    if not cls.SETPOINT_GENERATOR:
+        raise ValueError(f"--setpoint-generator is simulated for "
+                         f"{', '.join(SETPOINT_DRIVETRAINS)} only")
+    return cls(max_speed, setpoint_generator=True)

@@ -12,7 +12,7 @@ from array import array
 
 from drivekin import ChassisVelocities
 from drivekin._core.alloccount import AllocationCounter
-from drivekin.app.demo.drivetrains import _pose_dict, drivetrain_class
+from drivekin.app.demo.drivetrains import _pose_dict, drivetrain_class, make_drivetrain
 from drivekin.app.demo.script import BUDGET_NS, DT, JoystickScript
 
 
@@ -22,10 +22,16 @@ class Simulation:
     __slots__ = ("script", "drive", "command")
 
     def __init__(self, drivetrain: str, max_speed: float, max_omega: float,
-                 vision: bool = False) -> None:
+                 vision: bool = False, setpoint_generator: bool = False) -> None:
         self.script = JoystickScript(max_speed, max_omega)
-        self.drive = drivetrain_class(drivetrain, vision)(max_speed)
+        self.drive = make_drivetrain(drivetrain, max_speed, vision, setpoint_generator)
         self.command = ChassisVelocities()
+
+    @classmethod
+    def from_args(cls, args) -> "Simulation":
+        """The simulation the command line's ``args`` describe."""
+        return cls(args.drivetrain, args.max_speed, args.max_omega, args.vision,
+                   getattr(args, "setpoint_generator", False))
 
     def step(self) -> None:
         self.script.write(self.command)
@@ -42,8 +48,8 @@ def prepared_simulation(args) -> Simulation:
     (caches, specialised bytecode) and is freed by reference counting, which refills the
     freelists the measured loop draws from."""
     gc.collect()
-    sim = Simulation(args.drivetrain, args.max_speed, args.max_omega, args.vision)
-    warm = Simulation(args.drivetrain, args.max_speed, args.max_omega, args.vision)
+    sim = Simulation.from_args(args)
+    warm = Simulation.from_args(args)
     step = warm.step
     for _ in itertools.repeat(None, round(JoystickScript.CYCLE / DT)):
         step()
@@ -122,7 +128,8 @@ def run(args) -> dict:
     """Run both passes and return the results as a JSON-ready dict.
 
     ``args`` needs ``drivetrain`` (a key of :data:`DRIVETRAINS`), ``vision``, ``seconds``,
-    ``max_speed`` and ``max_omega``; the command line validates them."""
+    ``max_speed`` and ``max_omega``, and may have ``setpoint_generator``; the command line
+    validates them."""
     steps = round(args.seconds / DT)
     sim1, samples, wall, gc_growth, collections = timing_pass(args, steps)
     alloc = allocation_pass(args, steps)

@@ -56,7 +56,7 @@ def record(args: Any, steps: int) -> dict[str, Any]:
     """Step a fresh simulation ``steps`` times and return its recorded arrays (entry name
     → (type string, values)), the timestamps ``t`` (µs), the kinematics value and the
     final odometry pose."""
-    sim = Simulation(args.drivetrain, args.max_speed, args.max_omega, args.vision)
+    sim = Simulation.from_args(args)
     drive: Any = sim.drive
     swerve = isinstance(getattr(drive, "kinematics", None), SwerveDriveKinematics)
     diff = args.drivetrain == "differential"

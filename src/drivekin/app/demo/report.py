@@ -2,13 +2,14 @@
 from __future__ import annotations
 
 import drivekin
-from drivekin.app.demo.drivetrains import drivetrain_class
+from drivekin.app.demo.drivetrains import drivetrain_class, make_drivetrain
 from drivekin.app.demo.script import BUDGET_NS, DT, JoystickScript
 
 
 def header(args, steps: int) -> str:
     """The text report's header: robot, script, step chain and run length."""
-    drive = drivetrain_class(args.drivetrain, args.vision)(args.max_speed)
+    drive = make_drivetrain(args.drivetrain, args.max_speed, args.vision,
+                            getattr(args, "setpoint_generator", False))
     segments = " · ".join(f"{name} {d:g} s" for name, d in JoystickScript.SEGMENTS)
     return "\n".join([
         f"drivekin {drivekin.__version__} — simulated 50 Hz {drive.name} drive control loop, "
@@ -20,7 +21,7 @@ def header(args, steps: int) -> str:
         f"{args.max_omega:.2f} rad/s",
         f"  script   {drive.INPUT}, repeats every {JoystickScript.CYCLE:g} s:",
         f"           {segments}",
-        *(f"  {'step' if i == 0 else '':<8} {line}" for i, line in enumerate(drive.CHAIN)),
+        *(f"  {'step' if i == 0 else '':<8} {line}" for i, line in enumerate(drive.chain())),
         f"  run      {steps * DT:g} s robot time = {steps} steps, flat out (no sleeping);",
         "           pass 1 times each step (tracemalloc off), pass 2 counts allocations",
         "           (tracemalloc on); one warm-up script cycle before each pass",
