@@ -787,6 +787,40 @@ cdef inline double drive_max_s(double x0, double y0, double x1, double y1,
     return 1.0
 
 
+cdef inline double band_exit(double x0, double y0, double x1, double y1,
+                             double step) noexcept nogil:
+    # The first s in [0, 1] at which |p0 + s (p1 − p0)| leaves [|p0| − step, |p0| + step]
+    # (1 if it never does). PathPlannerLib's root (drive_max_s) only looks for the bound on
+    # the side of |p1|, so a speed that dips through |p0| − step on the way to a faster
+    # end goes unseen, and another module's limit can stop the step inside the dip; and
+    # its l0 + l1 − 2p cancels for a short step at speed (a 1e-8 m/s step near 4.3 m/s
+    # came out 0: no limit). Here a = |Δ|² and b = 2 p0·Δ come from the difference, the
+    # constant terms from |p0| and the step, and the roots from the cancellation-free
+    # form of the quadratic formula.
+    cdef double dx = x1 - x0, dy = y1 - y0
+    cdef double a = dx * dx + dy * dy, b = 2.0 * (x0 * dx + y0 * dy)
+    cdef double r0 = sqrt(x0 * x0 + y0 * y0), s = 1.0, c, disc, q, lo, hi
+    if not a > 0.0:
+        return 1.0
+    # Leaving above: a s² + b s − step (2|p0| + step) = 0 has one positive root.
+    c = -step * (2.0 * r0 + step)
+    disc = b * b - 4.0 * a * c
+    q = -0.5 * (b + (sqrt(disc) if b >= 0.0 else -sqrt(disc)))
+    hi = jmax(q / a, c / q) if q != 0.0 else sqrt(-c / a)
+    if hi < s:
+        s = hi
+    # Leaving below (only where |p0| > step): c > 0, real roots only when heading inwards.
+    if r0 > step:
+        c = step * (2.0 * r0 - step)
+        disc = b * b - 4.0 * a * c
+        if disc >= 0.0 and b < 0.0:
+            q = -0.5 * (b - sqrt(disc))
+            lo = jmin(q / a, c / q)
+            if 0.0 <= lo < s:
+                s = lo
+    return jmax(s, 0.0)
+
+
 cdef inline vec3_t wpilib_discretize(double vx, double vy, double omega,
                                     double dt) noexcept nogil:
     # ChassisSpeeds.discretize in WPILib 2026's own arithmetic (Pose2d.log's cos θ − 1,
@@ -1015,9 +1049,10 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
     # A velocity conversion, as in PathPlannerLib: it updates the heading memory.
     swerve_ik(n, g.mx, g.my, ax, ay, alpha, g.hc, g.hs, acc, tc, ts)
 
-    # Drive: search the segment the steering limit left, [prev, prev + min_s·Δ]. Its root
-    # is relative to that segment, so the step is min_s·s (Team 254);
-    # PathPlannerLib takes s itself.
+    # Drive: search the segment the limits so far left, [prev, prev + min_s·Δ]. Its root
+    # is relative to that segment, so the step is min_s·s (Team 254); PathPlannerLib takes
+    # s itself. The default mode also takes the first point where the module's speed leaves
+    # the band of one step around its previous speed on either side (band_exit).
     for m in range(n):
         if min_s == 0.0:
             break
@@ -1028,8 +1063,10 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         else:
             x1 = (dvx[m] - pvx[m]) * min_s + pvx[m]
             y1 = (dvy[m] - pvy[m]) * min_s + pvy[m]
-        s = drive_max_s(pvx[m], pvy[m], x1, y1, step)
-        min_s = jmin(min_s, s if g.compat else min_s * s)
+        if g.compat:
+            min_s = jmin(min_s, drive_max_s(pvx[m], pvy[m], x1, y1, step))
+        else:
+            min_s = jmin(min_s, min_s * band_exit(pvx[m], pvy[m], x1, y1, step))
 
     ret.x = prev[0] + min_s * dx
     ret.y = prev[1] + min_s * dy
