@@ -101,7 +101,9 @@ class ReplayConfig:
                                                   # with wheelbase, a rectangle of modules
     odometryRate: str = "auto"                    # or "cycle": ignore high-rate samples
     heading: str = "gyro"                         # or "wheels" (differential only)
-    wheelScale: float = 1.0
+    wheelScale: float | list[float] = 1.0         # or one per module / wheel / side
+    gyroScale: float = 1.0                        # true heading change / the gyro's
+    steerOffsets: list[float] | None = None       # rad added to each swerve module angle
     gyroAlign: str = "latest"                     # or "interpolate"
     start: str = "logged"                         # or "origin"
     compare: str = "hold"                         # or "interpolate"
@@ -159,6 +161,11 @@ class ReplayResult:
     why: dict[str, str] = field(default_factory=dict)      # role -> why that entry
     notes: list[str] = field(default_factory=list)         # what the replay decided
     warnings: list[str] = field(default_factory=list)      # what looks wrong
+    # What the replay ran on (drivekin.calibrate replays it again with other parameters):
+    positions: np.ndarray | None = field(default=None, repr=False)   # aligned wheel samples
+    gyroAngles: np.ndarray | None = field(default=None, repr=False)  # rad, unwrapped, aligned
+    kinematics: Any = field(default=None, repr=False)
+    start: Pose2d | None = field(default=None, repr=False)
 
     @property
     def pathLength(self) -> float:
@@ -518,12 +525,7 @@ def replayLog(log: LogData | str | os.PathLike[str],
         raise DataLogError(f"{pos.source!r} has {width} module(s) per sample; a swerve "
                            f"drive has at least 2")
     _check_positions(pos, kind)
-    P = P.copy()
-    if cfg.wheelScale != 1.0:
-        if kind == "swerve":
-            P[:, :, 0] *= cfg.wheelScale
-        else:
-            P *= cfg.wheelScale
+    P = _corrected(P.copy(), kind, cfg)
     if cycle is not None:
         notes.append(f"replaying the odometry thread's {layouts.rate(tw):.0f} Hz samples, "
                      f"not the {layouts.rate(cycle.t):.0f} Hz cycle values")
@@ -555,7 +557,7 @@ def replayLog(log: LogData | str | os.PathLike[str],
             order = np.argsort(tg, kind="stable")
             tg, G = tg[order], G[order]
         _check_gyro(gyro_sig.source, tg, G, gyro_sig.units)
-        G = _unwrap(G)
+        G = _unwrap(G) * cfg.gyroScale
 
     # 3. alignment
     tw, P, gyro, skipped, max_age, alignment = _align(tw, P, tg, G, cfg, pos.source)
@@ -575,8 +577,7 @@ def replayLog(log: LogData | str | os.PathLike[str],
 
     # 4. replay
     kin, geometry = _geometry(log, kind, width, cfg)
-    if cfg.wheelScale != 1.0:
-        geometry += f"; wheel distances × {cfg.wheelScale:g}"
+    geometry += corrections_text(cfg)
     start = Pose2d()
     if cfg.start == "logged" and logged is not None:
         x, y, th = _interp_poses(logged[0], logged[1], tw[:1])[0]
@@ -588,7 +589,8 @@ def replayLog(log: LogData | str | os.PathLike[str],
         rates["gyro"] = layouts.rate(tg)
     result = ReplayResult(log.source, kind, _ODOMETRY[kind], entries, geometry, tw, poses,
                           skipped, max_gap, max_age, rates, alignment, logged, truth,
-                          truncated=log.truncated, log=log, why=why, notes=notes)
+                          truncated=log.truncated, log=log, why=why, notes=notes,
+                          positions=P, gyroAngles=gyro, kinematics=kin, start=start)
     # 5. compare
     if logged is not None:
         rates["pose"] = layouts.rate(logged[0])
@@ -598,6 +600,44 @@ def replayLog(log: LogData | str | os.PathLike[str],
     if cycle is not None and result.vsLogged is not None:
         result.warnings += _rate_check(log, cfg, result)
     return result
+
+
+def _corrected(P: np.ndarray, kind: str, cfg: ReplayConfig) -> np.ndarray:
+    """Apply wheelScale (one number, or one per module, wheel or side) and steerOffsets
+    (rad, swerve) to the positions, in place."""
+    width = P.shape[1] if P.ndim >= 2 else 1
+    scale = np.asarray(cfg.wheelScale, dtype=np.float64)
+    if scale.ndim == 1 and scale.shape[0] != width:
+        raise DataLogError(f"{scale.shape[0]} wheel scales given, the positions have {width} "
+                           f"{'modules' if kind == 'swerve' else 'wheels'} per sample")
+    if not (np.isfinite(scale).all() and (scale > 0).all()):
+        raise DataLogError("wheel scales must be positive and finite")
+    if kind == "swerve":
+        P[:, :, 0] *= scale
+        if cfg.steerOffsets is not None:
+            if len(cfg.steerOffsets) != width:
+                raise DataLogError(f"{len(cfg.steerOffsets)} steer offsets given, the "
+                                   f"positions have {width} modules per sample")
+            P[:, :, 1] += np.asarray(cfg.steerOffsets, dtype=np.float64)
+    else:
+        if cfg.steerOffsets is not None:
+            raise DataLogError("steer offsets apply to swerve modules only")
+        P *= scale
+    return P
+
+
+def corrections_text(cfg: ReplayConfig) -> str:
+    """The geometry description's note of the corrections applied ('' for none)."""
+    text = ""
+    scale = np.atleast_1d(np.asarray(cfg.wheelScale, dtype=np.float64))
+    if (scale != 1.0).any():
+        text += "; wheel distances × " + ", ".join(f"{k:g}" for k in scale)
+    if cfg.gyroScale != 1.0:
+        text += f"; gyro × {cfg.gyroScale:g}"
+    if cfg.steerOffsets is not None:
+        text += "; steer offsets " + ", ".join(f"{math.degrees(a):+.2f}°"
+                                               for a in cfg.steerOffsets)
+    return text
 
 
 def _align(tw: np.ndarray, P: np.ndarray, tg: np.ndarray, G: np.ndarray, cfg: ReplayConfig,

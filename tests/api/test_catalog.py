@@ -35,9 +35,10 @@ from drivekin.odometry import _Odometry
 KINDS = {"value", "kinematics", "odometry", "estimator", "helper", "warning"}
 
 # Public submodules whose classes are not the catalog's kinds: the .wpilog reader/writer
-# and its records (drivekin.datalog), replay's configuration and results (drivekin.replay).
-# Their re-exports of catalogued classes are still checked.
-LOG_TOOLS = {"drivekin.datalog", "drivekin.replay"}
+# and its records (drivekin.datalog), replay's configuration and results (drivekin.replay),
+# the calibration's results (drivekin.calibrate). Their re-exports of catalogued classes
+# are still checked.
+LOG_TOOLS = {"drivekin.datalog", "drivekin.replay", "drivekin.calibrate"}
 # The modules the issue names: discovery must find every one of them.
 EXPECTED_MODULES = {"chassis", "swerve", "geometry", "mecanum", "differential", "deadwheel",
                     "diffswerve", "odometry", "estimator", "interpolation", "units",

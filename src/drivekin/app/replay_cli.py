@@ -13,6 +13,8 @@ import os
 import sys
 import time
 
+import numpy as np
+
 from drivekin.app.options import docs_url, need_extras, number_option
 
 
@@ -33,31 +35,30 @@ def _point(option: str, n: int):
     return parse
 
 
-def build_parser() -> argparse.ArgumentParser:
+def _numbers(option: str, low: float, high: float):
+    """An argparse ``type`` for one number, or several comma-separated ones, in (low,
+    high] (a list unless there is exactly one)."""
+    def parse(text: str):
+        try:
+            values = [float(p) for p in text.split(",")]
+        except ValueError:
+            values = []
+        if not values or not all(low < v <= high for v in values):
+            shown = text if len(text) <= 32 else text[:29] + "..."
+            raise argparse.ArgumentTypeError(f"expected a number greater than {low:g} and "
+                                             f"at most {high:g} (or several, "
+                                             f"comma-separated), got {shown!r}")
+        return values[0] if len(values) == 1 else values
+    return parse
+
+
+def add_log_options(p: argparse.ArgumentParser, verb: str) -> None:
+    """The options of replay that say what a log holds (entries, units, geometry), shared
+    with ``python -m drivekin calibrate``."""
     from drivekin._core.loglayouts import DRIVE_UNITS, GYRO_UNITS, TURN_UNITS
     from drivekin.replay import DRIVETRAINS
 
-    p = argparse.ArgumentParser(
-        prog="python -m drivekin replay",
-        description=(
-            "Recompute a robot's odometry from WPILib DataLogs (.wpilog): the gyro and "
-            "wheel or module positions the robot logged go through drivekin's odometry, "
-            "optionally with corrected geometry, and the result is compared with the pose "
-            "the robot logged. Entries are found through a table of log layouts "
-            "(WPILib structs, AdvantageKit and robotpy-pykit inputs with their high-rate "
-            "odometry arrays, CTRE's DriveState, per-module and left/right doubles, "
-            "double[] wheel arrays, Field2d poses; --list shows what each entry would be "
-            "used for) unless named. The odometry is updated at every wheel-position "
-            "sample with the latest gyro sample at or before it (or the gyro "
-            "interpolated, --gyro-align interpolate). For each log it prints the drift "
-            "statistics and writes LOG-replay.wpilog (the original entries plus "
-            "/drivekin/ReplayPose and /drivekin/ReplayError; an existing one only with "
-            "--force); --plot also "
-            "draws LOG-replay.png. Progress goes to stderr. Exit status: 0 if every log "
-            "was replayed, 1 if any failed, 2 for bad options."),
-        epilog="Example: python -m drivekin replay match.wpilog --wheel-scale 1.02 --plot. "
-               f"Documentation: {docs_url()}")
-    p.add_argument("logs", nargs="+", metavar="LOG.wpilog", help="DataLog files to replay")
+    p.add_argument("logs", nargs="+", metavar="LOG.wpilog", help=f"DataLog files to {verb}")
     p.add_argument("--drivetrain", choices=("auto",) + DRIVETRAINS, default="auto",
                    help="drivetrain (default: from the type of the positions entry)")
     p.add_argument("--positions", metavar="NAME",
@@ -98,12 +99,62 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--trackwidth", type=number_option(0.0, 100.0, "m", False),
                    metavar="W", help="trackwidth in m: a differential drive's, for --heading "
                                      "wheels; with --wheelbase, a rectangular swerve's")
+
+
+def log_config(args: argparse.Namespace, **more):
+    """The ReplayConfig of :func:`add_log_options`' options (plus ``more``)."""
+    from drivekin import replay
+    return replay.ReplayConfig(
+        drivetrain=args.drivetrain, positions=args.positions, gyro=args.gyro,
+        pose=args.pose, truth=args.truth, gyroUnits=args.gyro_units,
+        driveUnits=args.drive_units, turnUnits=args.turn_units, wheelRadius=args.wheel_radius,
+        modules=args.module, wheelbase=args.wheelbase, odometryRate=args.odometry_rate,
+        deadWheels=args.dead_wheel, trackwidth=args.trackwidth, **more)
+
+
+def check_log_options(parser: argparse.ArgumentParser, args: argparse.Namespace) -> None:
+    if (args.wheelbase is None) != (args.trackwidth is None) and args.wheelbase is not None:
+        parser.error("--wheelbase needs --trackwidth (modules at (±L/2, ±W/2))")
+    if args.wheelbase is not None and args.module:
+        parser.error("give either --module or --trackwidth with --wheelbase, not both")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="python -m drivekin replay",
+        description=(
+            "Recompute a robot's odometry from WPILib DataLogs (.wpilog): the gyro and "
+            "wheel or module positions the robot logged go through drivekin's odometry, "
+            "optionally with corrected geometry, and the result is compared with the pose "
+            "the robot logged. Entries are found through a table of log layouts "
+            "(WPILib structs, AdvantageKit and robotpy-pykit inputs with their high-rate "
+            "odometry arrays, CTRE's DriveState, per-module and left/right doubles, "
+            "double[] wheel arrays, Field2d poses; --list shows what each entry would be "
+            "used for) unless named. The odometry is updated at every wheel-position "
+            "sample with the latest gyro sample at or before it (or the gyro "
+            "interpolated, --gyro-align interpolate). For each log it prints the drift "
+            "statistics and writes LOG-replay.wpilog (the original entries plus "
+            "/drivekin/ReplayPose and /drivekin/ReplayError; an existing one only with "
+            "--force); --plot also "
+            "draws LOG-replay.png. Progress goes to stderr. Exit status: 0 if every log "
+            "was replayed, 1 if any failed, 2 for bad options."),
+        epilog="Example: python -m drivekin replay match.wpilog --wheel-scale 1.02 --plot. "
+               f"Documentation: {docs_url()}")
+    add_log_options(p, "replay")
     p.add_argument("--heading", choices=("gyro", "wheels"), default="gyro",
                    help="heading source; 'wheels' (differential only) ignores the gyro")
-    p.add_argument("--wheel-scale", type=number_option(0.0, 10.0, "", False), default=1.0,
-                   metavar="K",
+    p.add_argument("--wheel-scale", type=_numbers("--wheel-scale", 0.0, 10.0), default=1.0,
+                   metavar="K[,K...]",
                    help="multiply every wheel distance by K (true wheel radius / the radius "
-                        "the robot used; default 1)")
+                        "the robot used; default 1), or each module's, wheel's or side's "
+                        "by its own K (comma-separated, in the log's order)")
+    p.add_argument("--gyro-scale", type=number_option(0.0, 10.0, "", False), default=1.0,
+                   metavar="G", help="multiply the gyro's heading changes by G (true / "
+                                     "measured; default 1)")
+    p.add_argument("--steer-offsets", type=_numbers("--steer-offsets", -360.0, 360.0),
+                   metavar="DEG,DEG,...",
+                   help="add these angles (degrees, one per swerve module) to the logged "
+                        "module angles")
     p.add_argument("--gyro-align", choices=("latest", "interpolate"), default="latest",
                    help="gyro sample used at each wheel sample (default: latest)")
     p.add_argument("--start", choices=("logged", "origin"), default="logged",
@@ -161,23 +212,17 @@ def main(argv) -> int:
         parser.error(f"argument --out-dir: {args.out_dir!r} is not a folder")
     if args.heading == "wheels" and args.trackwidth is None:
         parser.error("--heading wheels needs --trackwidth")
-    if (args.wheelbase is None) != (args.trackwidth is None) and args.wheelbase is not None:
-        parser.error("--wheelbase needs --trackwidth (modules at (±L/2, ±W/2))")
-    if args.wheelbase is not None and args.module:
-        parser.error("give either --module or --trackwidth with --wheelbase, not both")
+    check_log_options(parser, args)
     writes = not (args.no_write or args.list)
     need_extras(parser, writes, args.plot and not args.list, "writing LOG-replay.wpilog "
                 "(--no-write skips it)", "--plot")
     from drivekin import datalog, replay
 
-    config = replay.ReplayConfig(
-        drivetrain=args.drivetrain, positions=args.positions, gyro=args.gyro,
-        pose=args.pose, truth=args.truth, gyroUnits=args.gyro_units,
-        driveUnits=args.drive_units, turnUnits=args.turn_units, wheelRadius=args.wheel_radius,
-        modules=args.module, wheelbase=args.wheelbase, odometryRate=args.odometry_rate,
-        deadWheels=args.dead_wheel, trackwidth=args.trackwidth, heading=args.heading,
-        wheelScale=args.wheel_scale, gyroAlign=args.gyro_align, start=args.start,
-        compare=args.compare,
+    config = log_config(
+        args, heading=args.heading, wheelScale=args.wheel_scale, gyroScale=args.gyro_scale,
+        steerOffsets=(None if args.steer_offsets is None else
+                      [math.radians(a) for a in np.atleast_1d(args.steer_offsets)]),
+        gyroAlign=args.gyro_align, start=args.start, compare=args.compare,
         ragged=args.ragged, allowTruncated=args.allow_truncated)
     failed = 0
     results = []

@@ -1,0 +1,908 @@
+"""Find a robot's true geometry from its logs (``python -m drivekin calibrate``; command
+line in ``app/calibrate_cli.py``).
+
+Each log is replayed first (:func:`drivekin.replay.replayLog`: the same entry detection,
+units and geometry options), with no corrections. Then:
+
+1. **Windows.** The replayed motion is cut into manoeuvres, from the gyro's rate and the
+   replayed translation speed (both averaged over ``SMOOTH`` s): *spin* (turning at least
+   ``SPIN_RATE`` rad/s while moving less than ``STILL_SPEED`` m/s), *straight* (turning
+   less than ``STRAIGHT_RATE`` rad/s while moving at least ``MOVING_SPEED`` m/s) and
+   *turn* (turning and moving). ``TRIM`` s is cut from both ends of each (the modules
+   are still turning there); a window shorter than ``MIN_WINDOW`` s, or a spin or turn
+   that turns less than ``MIN_TURN`` rad, is rejected, and the result says why.
+2. **Estimates**, each from the windows where it is observable, by least squares with an
+   intercept per window (scipy.linalg), and a 95 % interval from the fit's residuals
+   (Student's t):
+
+   - ``wheelRadiusScale`` (swerve, mecanum; true radius / the radius the robot used, per
+     module): spinning in place, module i rolls k_i·ψ, k_i its distance per radian of
+     robot rotation in the configured geometry (|r_i| for a swerve module), so its logged
+     distance is k_i·ψ / scale_i (Team 6328's wheel-radius characterization, per module).
+     It assumes the gyro and the module positions are right.
+   - ``trackwidth`` (differential, effective, m): (right − left) = W·ψ over every window
+     that turns (WPILib SysId's trackwidth analysis, as a regression). It assumes the
+     logged wheel distances are right: from the gyro alone, a differential drive's wheel
+     scale and trackwidth are not separable, so its ``wheelRadiusScale`` needs a
+     reference pose.
+   - ``deadWheelPoses``: spinning in place, wheel i reads m_i·ψ with m_i = x sin φ −
+     y cos φ (Road Runner's angular regression: a parallel wheel's y, a perpendicular
+     wheel's x); the wheel moves perpendicular to its rolling direction to match, the
+     other coordinate and the direction stay as configured. With a reference pose, each
+     wheel's readings are regressed on the robot's motion (x, y and heading increments,
+     robot frame) instead: direction, distance scale and lever arm of every wheel (a joint
+     least-squares fit for any number of wheels).
+   - ``steerOffsets`` (swerve, rad, added to the logged angles): driving straight, every
+     module points the same way, so each module's offset from the modules' mean direction
+     is the circular mean of its deviation (angles mod π: a module may drive backwards).
+     Their common part needs a reference pose, which gives the direction of travel.
+   - ``gyroScale`` (true / the gyro's heading change): the reference pose's heading
+     against the gyro's; needs a reference pose.
+
+3. **With a reference pose** (``truth=``, e.g. vision or a simulation's true pose), a joint
+   fit of every parameter minimises the drift against it (scipy.optimize.least_squares):
+   the replayed motion over each reference interval (the relative pose between two
+   reference samples, robot frame) against the reference's, every other interval so
+   that no two share a sample (their noise is then independent); the interval from its
+   covariance (the Jacobian at the solution). The estimates above are its start.
+4. **Drift before and after**: the replay with the fitted values against the reference
+   (or, without one, against the logged pose), and the ``replay`` command line that
+   applies them.
+
+A parameter the logs cannot determine is reported ``determined=False`` with the
+manoeuvre or reference that would determine it. scipy is an optional extra
+(``pip install "drivekin[calibrate]"``), imported only here.
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from drivekin import datalog, replay
+from drivekin._core.plotting import pyplot
+from drivekin.datalog import DataLogError, LogData
+from drivekin.geometry import Pose2d
+from drivekin.replay import DriftStats, ReplayConfig, ReplayResult
+
+__all__ = ["CalibrationError", "CalibrationResult", "Parameter", "Window", "calibrate",
+           "plotCalibration", "report"]
+
+SMOOTH = 0.25          # s, moving average of the rates that classify the motion
+SPIN_RATE = 0.5        # rad/s
+STRAIGHT_RATE = 0.05   # rad/s
+STILL_SPEED = 0.15     # m/s
+MOVING_SPEED = 0.3     # m/s
+TURN_RATE = 0.3        # rad/s, a turning window's least rate
+TRIM = 0.25            # s cut from both ends of a window
+MIN_WINDOW = 1.0       # s
+MIN_TURN = 1.0         # rad a spin or turn window must turn
+TANGENT_TOLERANCE = math.radians(15.0)   # a spinning swerve module this far off tangent
+CONFIDENCE = 0.95
+
+_KINDS = ("spin", "straight", "turn")
+
+
+class CalibrationError(DataLogError):
+    """A log that cannot be calibrated (too short, never turns, a gyro that never moves,
+    entries that contradict the geometry); the message names what is missing."""
+
+
+@dataclass
+class Window:
+    """One manoeuvre found in a log: ``kind`` (spin, straight, turn), its time span (µs),
+    whether it was used, and why (not)."""
+
+    log: str
+    kind: str
+    start: int
+    end: int
+    used: bool
+    why: str
+
+    @property
+    def duration(self) -> float:
+        return (self.end - self.start) / 1e6
+
+
+@dataclass
+class Parameter:
+    """One estimate: ``value`` (a number or a list), ``uncertainty`` (the half-width of
+    its 95 % interval, same shape; None when not determined), whether the logs determine
+    it, and why (what it came from, or what would determine it)."""
+
+    name: str
+    value: Any
+    uncertainty: Any
+    determined: bool
+    why: str
+    unit: str = ""
+
+    def asdict(self) -> dict[str, Any]:
+        return {"value": _plain(self.value), "uncertainty": _plain(self.uncertainty),
+                "determined": self.determined, "why": self.why, "unit": self.unit}
+
+
+@dataclass
+class CalibrationResult:
+    """Everything :func:`calibrate` found: the parameters by name, the windows, the drift
+    before and after (against ``against``: the reference pose, or the logged pose), and
+    the ``replay`` options that apply the fitted values."""
+
+    sources: list[str]
+    drivetrain: str
+    parameters: dict[str, Parameter]
+    windows: list[Window]
+    against: str | None
+    before: list[DriftStats | None]
+    after: list[DriftStats | None]
+    replayOptions: dict[str, Any]
+    replays: list[ReplayResult] = field(default_factory=list, repr=False)
+    fitted: list[ReplayResult] = field(default_factory=list, repr=False)
+
+    def replayCommand(self, logs: list[str] | None = None) -> str:
+        """The ``python -m drivekin replay`` command line with the fitted options."""
+        return "python -m drivekin replay " + " ".join(
+            [_quote(p) for p in (logs or self.sources)] + _options_text(self.replayOptions))
+
+    def asdict(self) -> dict[str, Any]:
+        return {"sources": list(self.sources), "drivetrain": self.drivetrain,
+                "parameters": {k: p.asdict() for k, p in self.parameters.items()},
+                "windows": [{"log": w.log, "kind": w.kind, "start_s": w.start / 1e6,
+                             "end_s": w.end / 1e6, "used": w.used, "why": w.why}
+                            for w in self.windows],
+                "drift_against": self.against,
+                "drift_before": [d.asdict() if d else None for d in self.before],
+                "drift_after": [d.asdict() if d else None for d in self.after],
+                "replay_command": self.replayCommand()}
+
+
+def _plain(v: Any) -> Any:
+    if isinstance(v, np.ndarray):
+        return [_plain(x) for x in v.tolist()]
+    if isinstance(v, (list, tuple)):
+        return [_plain(x) for x in v]
+    if isinstance(v, (np.floating, np.integer)):
+        return v.item()
+    return v
+
+
+def _quote(text: str) -> str:
+    return text if text and all(c.isalnum() or c in "/._-+:=," for c in text) else repr(text)
+
+
+def _options_text(opts: dict[str, Any]) -> list[str]:
+    out = []
+    for k, v in opts.items():
+        if k == "dead-wheel":                       # repeated: X,Y,DEG per wheel
+            for w in v:
+                out += [f"--{k}={','.join(f'{x:.6g}' for x in w)}"]
+        elif isinstance(v, (list, tuple)):
+            out += [f"--{k}", ",".join(f"{x:.6g}" for x in v)]
+        else:
+            out += [f"--{k}", f"{v:.6g}"]
+    return out
+
+
+# ---------------------------------------------------------------------------------------
+# Least squares
+
+def _scipy() -> Any:
+    try:
+        import scipy.linalg
+        import scipy.optimize
+        import scipy.stats
+    except ImportError:
+        raise ImportError('calibration needs scipy: pip install "drivekin[calibrate]"') \
+            from None
+    return scipy
+
+
+def _slope(x: list[np.ndarray], y: list[np.ndarray]) -> tuple[float, float, int]:
+    """One slope shared by several windows, each with its own intercept: (slope, its
+    standard error, degrees of freedom)."""
+    sp = _scipy()
+    n = sum(len(a) for a in x)
+    k = len(x)
+    A = np.zeros((n, 1 + k))
+    b = np.empty(n)
+    row = 0
+    for j, (xs, ys) in enumerate(zip(x, y)):
+        A[row:row + len(xs), 0] = xs - xs.mean()
+        A[row:row + len(xs), 1 + j] = 1.0
+        b[row:row + len(xs)] = ys
+        row += len(xs)
+    coef, _, rank, _ = sp.linalg.lstsq(A, b)
+    dof = n - (1 + k)
+    if rank < 1 + k or dof < 1:
+        return float("nan"), float("inf"), max(dof, 0)
+    res = b - A @ coef
+    sigma2 = float(res @ res) / dof
+    sxx = float(A[:, 0] @ A[:, 0])
+    return float(coef[0]), math.sqrt(sigma2 / sxx) if sxx > 0 else float("inf"), dof
+
+
+def _t95(dof: int) -> float:
+    return float(_scipy().stats.t.ppf(0.5 + CONFIDENCE / 2, max(dof, 1)))
+
+
+# ---------------------------------------------------------------------------------------
+# Windows
+
+def _moving_average(x: np.ndarray, n: int) -> np.ndarray:
+    if n <= 1 or len(x) < n:
+        return x
+    c = np.cumsum(np.concatenate([[0.0], x]))
+    out = (c[n:] - c[:-n]) / n
+    pad = n // 2
+    return np.concatenate([np.full(pad, out[0]), out, np.full(len(x) - len(out) - pad, out[-1])])
+
+
+def _windows(r: ReplayResult, name: str) -> list[tuple[str, slice, Window]]:
+    t = r.t.astype(np.float64) / 1e6
+    if len(t) < 3 or t[-1] - t[0] < MIN_WINDOW:
+        raise CalibrationError(f"{name}: the log is too short to calibrate from "
+                               f"({t[-1] - t[0] if len(t) else 0:.2f} s of wheel samples; "
+                               f"at least {MIN_WINDOW:g} s of each manoeuvre is needed)")
+    psi = r.gyroAngles
+    dt = np.gradient(t)
+    dt[dt <= 0] = np.median(dt[dt > 0]) if (dt > 0).any() else 1.0
+    rate = 1.0 / float(np.median(dt))
+    n = max(1, int(round(SMOOTH * rate)))
+    w = _moving_average(np.gradient(psi) / dt, n)
+    v = _moving_average(np.hypot(np.gradient(r.poses[:, 0]), np.gradient(r.poses[:, 1])) / dt,
+                        n)
+    label = np.full(len(t), "", dtype=object)
+    label[(np.abs(w) >= SPIN_RATE) & (v < STILL_SPEED)] = "spin"
+    label[(np.abs(w) <= STRAIGHT_RATE) & (v >= MOVING_SPEED)] = "straight"
+    label[(np.abs(w) >= TURN_RATE) & (v >= MOVING_SPEED)] = "turn"
+    out = []
+    i = 0
+    while i < len(t):
+        j = i
+        while j + 1 < len(t) and label[j + 1] == label[i]:
+            j += 1
+        kind = label[i]
+        if kind:
+            lo = int(np.searchsorted(t, t[i] + TRIM))
+            hi = int(np.searchsorted(t, t[j] - TRIM, side="right"))
+            win = Window(name, kind, int(r.t[i]), int(r.t[j]), False, "")
+            if hi - lo < 3 or t[hi - 1] - t[lo] < MIN_WINDOW:
+                win.why = (f"{t[j] - t[i]:.2f} s long; at least {MIN_WINDOW + 2 * TRIM:g} s "
+                           f"are needed ({TRIM:g} s is trimmed at each end)")
+            elif kind != "straight" and abs(psi[hi - 1] - psi[lo]) < MIN_TURN:
+                win.why = (f"turned {abs(psi[hi - 1] - psi[lo]):.2f} rad; at least "
+                           f"{MIN_TURN:g} rad are needed")
+            else:
+                win.used = True
+                win.why = (f"{t[hi - 1] - t[lo]:.1f} s" + (
+                    f", {abs(psi[hi - 1] - psi[lo]):.1f} rad" if kind != "straight" else
+                    f", {float(np.mean(v[lo:hi])):.2f} m/s"))
+            out.append((kind, slice(lo, hi), win))
+        i = j + 1
+    return out
+
+
+# ---------------------------------------------------------------------------------------
+# The estimators. Each takes the replays and their windows and returns Parameters.
+
+@dataclass
+class _Log:
+    name: str
+    r: ReplayResult
+    windows: list[tuple[str, slice, Window]]
+    ref: tuple[np.ndarray, np.ndarray] | None     # reference (t µs, poses) in the replay span
+
+    def used(self, *kinds: str) -> list[slice]:
+        return [s for k, s, w in self.windows if w.used and k in kinds]
+
+
+def _per_rad(kind: str, kin: Any) -> np.ndarray:
+    """Each wheel's distance per radian of robot rotation in the configured geometry
+    (swerve: the module's distance from the centre; mecanum: inverse kinematics of ω = 1)."""
+    if kind == "swerve":
+        return np.array([m.getNorm() for m in kin.getModules()])
+    from drivekin.chassis import ChassisVelocities
+    w = kin.toWheelVelocities(ChassisVelocities(0.0, 0.0, 1.0))
+    return np.array([w.frontLeft, w.frontRight, w.rearLeft, w.rearRight])
+
+
+def _gyro_scale(logs: list[_Log]) -> Parameter:
+    if not any(lg.ref is not None for lg in logs):
+        return Parameter("gyroScale", None, None, False,
+                         "needs a reference pose (--truth ENTRY, e.g. vision or a "
+                         "simulation's true pose): the wheels alone cannot tell a wrong "
+                         "gyro scale from wrong wheel geometry")
+    xs, ys = [], []
+    for lg in logs:
+        if lg.ref is None:
+            continue
+        tr, P = lg.ref
+        g = np.interp(tr.astype(np.float64), lg.r.t.astype(np.float64), lg.r.gyroAngles)
+        xs.append(g)
+        ys.append(np.unwrap(P[:, 2]))
+    turned = max(float(np.ptp(x)) for x in xs)
+    if turned < MIN_TURN:
+        return Parameter("gyroScale", None, None, False,
+                         f"the robot turned {turned:.2f} rad while the reference was logged: "
+                         f"turn it (spin in place for 3 turns)")
+    b, se, dof = _slope(xs, ys)
+    return Parameter("gyroScale", b, _t95(dof) * se, True,
+                     f"reference heading against the gyro over {turned:.1f} rad")
+
+
+def _spin_scales(logs: list[_Log], kind: str, gyro: float) -> Parameter:
+    """wheelRadiusScale of swerve modules or mecanum wheels from the spin windows."""
+    r0 = logs[0].r
+    width = r0.positions.shape[1]
+    k = _per_rad(kind, r0.kinematics)
+    values, errs, notes = [], [], []
+    spins = sum(len(lg.used("spin")) for lg in logs)
+    if spins == 0:
+        return Parameter("wheelRadiusScale", None, None, False,
+                         "no usable spin-in-place window: spin in place for 3 turns")
+    for i in range(width):
+        xs, ys = [], []
+        skipped = 0
+        for lg in logs:
+            for s in lg.used("spin"):
+                P = lg.r.positions[s]
+                if kind == "swerve":
+                    d, a = P[:, i, 0], P[:, i, 1]
+                    x, y = (m := lg.r.kinematics.getModules()[i]).getX(), m.getY()
+                    tangent = math.atan2(x, -y)
+                    dev = np.angle(np.exp(2j * (a - tangent))) / 2   # mod π
+                    if abs(float(np.mean(dev))) > TANGENT_TOLERANCE:
+                        skipped += 1
+                        continue
+                else:
+                    d = P[:, i]
+                xs.append(lg.r.gyroAngles[s] * gyro)
+                ys.append(d)
+        if not xs:
+            values.append(float("nan"))
+            errs.append(float("nan"))
+            notes.append(f"module {i}: never tangent while spinning")
+            continue
+        b, se, dof = _slope(xs, ys)
+        if not (abs(b) > 0 and math.isfinite(b)):
+            values.append(float("nan"))
+            errs.append(float("nan"))
+            notes.append(f"wheel {i} did not roll while spinning")
+            continue
+        values.append(abs(k[i] / b))
+        errs.append(abs(k[i]) * _t95(dof) * se / b ** 2)
+        if skipped:
+            notes.append(f"module {i}: {skipped} window(s) skipped (not tangent)")
+    ok = all(math.isfinite(v) for v in values)
+    why = (f"spinning in place ({spins} window(s)): each {'module' if kind == 'swerve' else 'wheel'}"
+           f"'s distance against the gyro's heading"
+           + (", the gyro corrected by gyroScale" if gyro != 1.0 else
+              ", assuming the gyro and the geometry are right"))
+    if notes:
+        why += "; " + "; ".join(notes)
+    return Parameter("wheelRadiusScale", values if ok else None, errs if ok else None, ok, why)
+
+
+def _trackwidth(logs: list[_Log], gyro: float, scales: Any) -> Parameter:
+    xs, ys = [], []
+    sl, sr = (scales if scales is not None else (1.0, 1.0))
+    for lg in logs:
+        for s in lg.used("spin", "turn"):
+            P = lg.r.positions[s]
+            xs.append(lg.r.gyroAngles[s] * gyro)
+            ys.append(P[:, 1] * sr - P[:, 0] * sl)
+    if not xs:
+        return Parameter("trackwidth", None, None, False,
+                         "no usable window that turns: spin in place for 3 turns")
+    b, se, dof = _slope(xs, ys)
+    return Parameter("trackwidth", b, _t95(dof) * se, math.isfinite(b) and b > 0,
+                     f"(right − left) against the gyro's heading over {len(xs)} turning "
+                     f"window(s)" + ("" if scales is not None else
+                                     ", assuming the logged wheel distances are right"),
+                     "m")
+
+
+def _steer_offsets(logs: list[_Log]) -> Parameter:
+    diffs: list[np.ndarray] = []
+    for lg in logs:
+        for s in lg.used("straight"):
+            a = lg.r.positions[s][:, :, 1]
+            z = np.exp(2j * a)                       # mod π: a module may drive backwards
+            common = np.angle(z.mean(axis=1))
+            diffs.append(np.angle(z * np.exp(-1j * common)[:, None]) / 2)
+    if not diffs:
+        return Parameter("steerOffsets", None, None, False,
+                         "no usable straight-driving window: drive straight for a few "
+                         "seconds", "rad")
+    d = np.concatenate(diffs)
+    n = d.shape[0]
+    mean = np.angle(np.exp(1j * d).mean(axis=0))
+    sd = d.std(axis=0, ddof=1)
+    off = -mean
+    off -= off.mean()
+    return Parameter("steerOffsets", off.tolist(), (_t95(n - 1) * sd / math.sqrt(n)).tolist(),
+                     True, f"driving straight ({len(diffs)} window(s), {n} samples): each "
+                           f"module's angle against the modules' mean; their common offset "
+                           f"needs a reference pose", "rad")
+
+
+def _dead_wheel_levers(logs: list[_Log], gyro: float) -> Parameter:
+    r0 = logs[0].r
+    poses = list(r0.kinematics.getWheelPoses())
+    spins = sum(len(lg.used("spin")) for lg in logs)
+    if spins == 0:
+        return Parameter("deadWheelPoses", None, None, False,
+                         "no usable spin-in-place window: spin in place for 3 turns")
+    out, err = [], []
+    for i, p in enumerate(poses):
+        xs, ys = [], []
+        for lg in logs:
+            for s in lg.used("spin"):
+                xs.append(lg.r.gyroAngles[s] * gyro)
+                ys.append(lg.r.positions[s][:, i])
+        m, se, dof = _slope(xs, ys)
+        phi = p.getRotation().getRadians()
+        m0 = p.getX() * math.sin(phi) - p.getY() * math.cos(phi)
+        x = p.getX() + (m - m0) * math.sin(phi)
+        y = p.getY() - (m - m0) * math.cos(phi)
+        h = _t95(dof) * se
+        out.append([x, y, math.degrees(phi)])
+        err.append([h * abs(math.sin(phi)), h * abs(math.cos(phi)), 0.0])
+    return Parameter("deadWheelPoses", out, err, True,
+                     f"spinning in place ({spins} window(s)): each wheel's reading against "
+                     f"the gyro gives its lever arm (Road Runner's angular regression); the "
+                     f"rolling directions and the coordinate along them are as configured",
+                     "m, m, deg")
+
+
+# ---------------------------------------------------------------------------------------
+# The joint fit against a reference pose
+
+INTERVAL = 1.0          # s, the least span of one reference interval of the joint fit
+
+
+def _pairs(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Indices (a, b) of reference intervals at least INTERVAL long that share no sample
+    (so their noise is independent): the motion over each is the fit's residual, and a
+    longer interval carries more of the drift than it adds of the reference's noise."""
+    if len(t) < 2:
+        return np.zeros(0, dtype=np.intp), np.zeros(0, dtype=np.intp)
+    period = float(np.median(np.diff(t))) / 1e6
+    k = max(1, int(math.ceil(INTERVAL / max(period, 1e-9))))
+    a = np.arange(0, len(t) - k, k + 1)
+    return a, a + k
+
+
+def _relative(P: np.ndarray, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Relative poses from row a to row b (robot frame at a): (k, 3)."""
+    pa, pb = P[a], P[b]
+    c, s = np.cos(pa[:, 2]), np.sin(pa[:, 2])
+    dx, dy = pb[:, 0] - pa[:, 0], pb[:, 1] - pa[:, 1]
+    dth = np.angle(np.exp(1j * (pb[:, 2] - pa[:, 2])))
+    return np.column_stack([c * dx + s * dy, -s * dx + c * dy, dth])
+
+
+def _twist(rel: np.ndarray) -> np.ndarray:
+    """The twists (dx, dy, dθ, robot frame) whose exponentials are the relative poses: the
+    integral of the robot-frame velocity over an interval of constant curvature, which is
+    what a dead wheel integrates."""
+    th = rel[:, 2]
+    h = th / 2.0
+    small = np.abs(th) < 1e-9
+    k = np.where(small, 1.0 - th * th / 12.0, h / np.tan(np.where(small, 1.0, h)))
+    return np.column_stack([k * rel[:, 0] + h * rel[:, 1], -h * rel[:, 0] + k * rel[:, 1], th])
+
+
+def _at(t_src: np.ndarray, poses: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """The replayed path interpolated at the reference timestamps (x, y linear, heading
+    unwrapped)."""
+    ts, tt = t_src.astype(np.float64), t.astype(np.float64)
+    return np.column_stack([np.interp(tt, ts, poses[:, 0]), np.interp(tt, ts, poses[:, 1]),
+                            np.interp(tt, ts, np.unwrap(poses[:, 2]))])
+
+
+class _Model:
+    """The parameters a drivetrain's joint fit varies, as one vector, and the replay they
+    give. A swerve drive's drift barely tells one module's wheel scale or steer offset
+    from another's (forward kinematics averages the modules), so where the windows gave
+    them (``base``) the fit varies only their common factor and common offset, keeping
+    the windows' differences between modules; everything else is fitted per wheel."""
+
+    def __init__(self, kind: str, width: int, start: dict[str, Any],
+                 base: dict[str, tuple[list[float], list[float]]]) -> None:
+        self.kind, self.width, self.base = kind, width, base
+        self.names: list[tuple[str, int | None]] = []
+        if kind in ("swerve", "mecanum", "differential"):
+            self.names += ([("wheelRadiusScale", None)] if "wheelRadiusScale" in base else
+                           [("wheelRadiusScale", i) for i in range(width)])
+        if kind == "swerve":
+            self.names += ([("steerOffsets", None)] if "steerOffsets" in base else
+                           [("steerOffsets", i) for i in range(width)])
+        self.names.append(("gyroScale", None))
+        x = []
+        for name, i in self.names:
+            v = start.get(name)
+            if name in base:
+                x.append(0.0 if name == "steerOffsets" else 1.0)
+            else:
+                x.append((v[i] if i is not None else v) if v is not None else
+                         (0.0 if name == "steerOffsets" else 1.0))
+        self.x0 = np.array(x, dtype=np.float64)
+
+    def config(self, x: np.ndarray, half: np.ndarray | None = None) -> dict[str, Any]:
+        """The parameters of ``x`` by name; with ``half`` (the 95 % half-widths of x), the
+        half-widths of those parameters instead (a common factor's combined in quadrature
+        with the windows' own)."""
+        out: dict[str, Any] = {}
+        for j, ((name, i), v) in enumerate(zip(self.names, x)):
+            h = None if half is None else float(half[j])
+            if name in self.base:
+                values, halves = self.base[name]
+                if name == "steerOffsets":
+                    out[name] = ([float(b + v) for b in values] if h is None else
+                                 [math.hypot(h, hb) for hb in halves])
+                else:
+                    out[name] = ([float(b * v) for b in values] if h is None else
+                                 [math.hypot(b * h, v * hb) for b, hb in zip(values, halves)])
+            elif i is None:
+                out[name] = float(v) if h is None else h
+            else:
+                out.setdefault(name, [0.0] * self.width)[i] = float(v) if h is None else h
+        return out
+
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        lo = [-math.pi / 2 if n == "steerOffsets" else 0.5 for n, _ in self.names]
+        hi = [math.pi / 2 if n == "steerOffsets" else 2.0 for n, _ in self.names]
+        return np.array(lo), np.array(hi)
+
+    def replay(self, lg: _Log, x: np.ndarray) -> np.ndarray:
+        c = self.config(x)
+        P = lg.r.positions.copy()
+        scale = np.asarray(c.get("wheelRadiusScale", 1.0))
+        if self.kind == "swerve":
+            P[:, :, 0] *= scale
+            P[:, :, 1] += np.asarray(c["steerOffsets"])
+        else:
+            P *= scale
+        g = lg.r.gyroAngles[0] + (lg.r.gyroAngles - lg.r.gyroAngles[0]) * c["gyroScale"]
+        return replay._run(self.kind, lg.r.kinematics, g, P, lg.r.start or Pose2d())
+
+
+def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],
+               base: dict[str, tuple[list[float], list[float]]]
+               ) -> tuple[dict[str, Any], dict[str, Any], int] | None:
+    sp = _scipy()
+    refs = [lg for lg in logs if lg.ref is not None and len(_pairs(lg.ref[0])[0]) >= 4]
+    if not refs:
+        return None
+    width = refs[0].r.positions.shape[1]
+    model = _Model(kind, width, start, base)
+
+    def raw(x: np.ndarray) -> np.ndarray:
+        # The drift itself: the replayed pose minus the reference at every reference
+        # sample. At the true parameters it is the reference's own noise (the wheels'
+        # and gyro's noise on positions does not accumulate), so the residuals are
+        # independent and the fit's covariance is honest.
+        out = []
+        for lg in refs:
+            rep = _at(lg.r.t, model.replay(lg, x), lg.ref[0])
+            d = rep - lg.ref[1]
+            d[:, 2] = np.angle(np.exp(1j * d[:, 2]))
+            out.append(d)
+        return np.concatenate(out)
+
+    # Metres and radians are weighed by their spread (a residual in units of its own
+    # noise), so that neither dominates.
+    w = 1.0 / np.maximum(raw(model.x0).std(axis=0, ddof=1), 1e-9)
+
+    def residuals(x: np.ndarray) -> np.ndarray:
+        return (raw(x) * w).ravel()
+
+    lo, hi = model.bounds()
+    fit = sp.optimize.least_squares(residuals, np.clip(model.x0, lo, hi), bounds=(lo, hi),
+                                    x_scale="jac")
+    # Once more with the weights of the fitted residuals.
+    w = 1.0 / np.maximum(raw(fit.x).std(axis=0, ddof=1), 1e-9)
+    fit = sp.optimize.least_squares(residuals, fit.x, bounds=(lo, hi), x_scale="jac")
+    m, p = len(fit.fun), len(fit.x)
+    dof = m - p
+    if dof < 1 or not fit.success:
+        return None
+    J = fit.jac
+    sigma2 = float(fit.fun @ fit.fun) / dof
+    try:
+        cov = np.linalg.inv(J.T @ J) * sigma2
+    except np.linalg.LinAlgError:
+        return None
+    values = model.config(fit.x)
+    half = model.config(fit.x, _t95(dof) * np.sqrt(np.maximum(np.diag(cov), 0.0)))
+    return values, half, m // 3
+
+
+# ---------------------------------------------------------------------------------------
+# calibrate()
+
+def calibrate(logs: Any, config: ReplayConfig | None = None,
+              truth: str | None = None) -> CalibrationResult:
+    """Estimate a robot's geometry from one log or several (paths or LogData) of the same
+    robot; see the module docstring. ``config`` carries replay's options (entry names,
+    units, geometry: the geometry the robot used); its corrections (wheelScale,
+    gyroScale, steerOffsets) must be left at their defaults. ``truth`` names a reference
+    pose entry (struct:Pose2d) present in every log. CalibrationError (a DataLogError)
+    for logs that cannot be calibrated."""
+    if isinstance(logs, (str, os.PathLike, LogData)):
+        logs = [logs]
+    logs = list(logs)
+    if not logs:
+        raise CalibrationError("no log to calibrate from")
+    cfg = config or ReplayConfig()
+    if (np.atleast_1d(np.asarray(cfg.wheelScale)) != 1.0).any() or cfg.gyroScale != 1.0 \
+            or cfg.steerOffsets is not None:
+        raise ValueError("calibrate finds wheelScale, gyroScale and steerOffsets itself: "
+                         "leave them out of the configuration")
+    if truth is not None:
+        cfg = dataclasses.replace(cfg, truth=truth)
+    _scipy()
+    runs: list[_Log] = []
+    windows: list[Window] = []
+    for item in logs:
+        log = item if isinstance(item, LogData) else datalog.read(
+            item, allowTruncated=cfg.allowTruncated)
+        r = replay.replayLog(log, cfg)
+        name = str(log.source)
+        if runs and r.drivetrain != runs[0].r.drivetrain:
+            raise CalibrationError(f"{name} is a {r.drivetrain} drive's log, "
+                                   f"{runs[0].name} a {runs[0].r.drivetrain}'s: calibrate "
+                                   f"one robot at a time")
+        if runs and r.positions.shape[1:] != runs[0].r.positions.shape[1:]:
+            raise CalibrationError(f"{name} has {r.positions.shape[1]} wheels per sample, "
+                                   f"{runs[0].name} {runs[0].r.positions.shape[1]}")
+        if float(np.ptp(r.gyroAngles)) < 1e-6:
+            raise CalibrationError(f"{name}: the gyro ({r.entries.get('gyro')}) never moves: "
+                                   f"a calibration needs the robot to turn (spin in place "
+                                   f"for 3 turns), and a gyro that reads it")
+        if r.drivetrain == "deadwheel" and r.entries.get("gyro") in (None, "(wheels)"):
+            raise CalibrationError(f"{name}: calibrating dead wheels needs a gyro")
+        ref = None
+        if r.truth is not None:
+            tr, P = r.truth
+            keep = (tr >= r.t[0]) & (tr <= r.t[-1])
+            ref = (tr[keep], P[keep])
+        wins = _windows(r, name)
+        runs.append(_Log(name, r, wins, ref))
+        windows += [w for _, _, w in wins]
+    kind = runs[0].r.drivetrain
+    if not any(w.used and w.kind != "straight" for w in windows):
+        raise CalibrationError(
+            "no usable window that turns in " + ", ".join(lg.name for lg in runs) +
+            f": spin in place (at least {SPIN_RATE:g} rad/s for {MIN_WINDOW + 2 * TRIM:g} s "
+            f"and {MIN_TURN:g} rad) or drive while turning")
+
+    params: dict[str, Parameter] = {}
+    gyro_p = _gyro_scale(runs)
+    g = gyro_p.value if gyro_p.determined else 1.0
+    if kind in ("swerve", "mecanum"):
+        params["wheelRadiusScale"] = _spin_scales(runs, kind, g)
+        if kind == "swerve":
+            params["steerOffsets"] = _steer_offsets(runs)
+    elif kind == "differential":
+        params["wheelRadiusScale"] = Parameter(
+            "wheelRadiusScale", None, None, False,
+            "needs a reference pose (--truth ENTRY): from the gyro alone a differential "
+            "drive's wheel scale and trackwidth are not separable")
+        params["trackwidth"] = _trackwidth(runs, g, None)
+    elif kind == "deadwheel":
+        params["deadWheelPoses"] = _dead_wheel_levers(runs, g)
+    params["gyroScale"] = gyro_p
+
+    # The joint fit against the reference.
+    if kind != "deadwheel":
+        start = {k: p.value for k, p in params.items() if p.determined}
+        base = {k: (p.value, p.uncertainty) for k, p in params.items()
+                if kind == "swerve" and p.determined and k in ("wheelRadiusScale",
+                                                               "steerOffsets")}
+        joint = _joint_fit(runs, kind, start, base)
+        if joint is not None:
+            values, half, count = joint
+            for name, v in values.items():
+                unit = "rad" if name == "steerOffsets" else ""
+                params[name] = Parameter(
+                    name, v, half[name], True,
+                    f"joint fit of {', '.join(values)} minimising the drift against the "
+                    f"reference pose ({count} reference samples)",
+                    unit)
+            if kind == "differential":
+                params["trackwidth"] = _trackwidth(runs, values["gyroScale"],
+                                                   values["wheelRadiusScale"])
+    else:
+        joint_dw = _dead_wheel_joint(runs)
+        if joint_dw is not None:
+            params["deadWheelPoses"] = joint_dw
+
+    options = _replay_options(kind, params)
+    before: list[DriftStats | None] = []
+    after: list[DriftStats | None] = []
+    fitted = []
+    for lg in runs:
+        # Only a reference measures drift: the logged pose is the robot's own odometry,
+        # made with the very geometry being corrected.
+        fcfg = dataclasses.replace(cfg, **_config_fields(kind, params))
+        fr = replay.replayLog(lg.r.log if lg.r.log is not None else lg.name, fcfg)
+        fitted.append(fr)
+        before.append(lg.r.vsTruth)
+        after.append(fr.vsTruth)
+    against = "reference" if any(b is not None for b in before) else None
+    return CalibrationResult([lg.name for lg in runs], kind, params, windows, against,
+                             before, after, options, [lg.r for lg in runs], fitted)
+
+
+def _dead_wheel_joint(logs: list[_Log]) -> Parameter | None:
+    """Each dead wheel's readings against the reference motion: (cos φ, sin φ, m) / k."""
+    sp = _scipy()
+    refs = [lg for lg in logs if lg.ref is not None and len(_pairs(lg.ref[0])[0]) >= 4]
+    if not refs:
+        return None
+    width = refs[0].r.positions.shape[1]
+    A, B = [], []
+    for lg in refs:
+        tr, ref = lg.ref
+        a, b = _pairs(tr)
+        W = np.column_stack([np.interp(tr.astype(np.float64), lg.r.t.astype(np.float64),
+                                       lg.r.positions[:, j]) for j in range(width)])
+        B.append(W[b] - W[a])
+        A.append(_twist(_relative(ref, a, b)))
+    A, B = np.concatenate(A), np.concatenate(B)
+    if len(A) < 8:
+        return None
+    out, err = [], []
+    dof = len(A) - 3
+    t = _t95(dof)
+    for i in range(width):
+        coef, _, rank, _ = sp.linalg.lstsq(A, B[:, i])
+        if rank < 3:
+            return None
+        res = B[:, i] - A @ coef
+        cov = np.linalg.inv(A.T @ A) * float(res @ res) / dof
+        c, s, m = coef
+        k = math.hypot(c, s)
+        phi = math.atan2(s, c)
+        # The contact point on the line x sin φ − y cos φ = m/k nearest the configured one.
+        p = refs[0].r.kinematics.getWheelPoses()[i]
+        lever = m / k
+        m0 = p.getX() * math.sin(phi) - p.getY() * math.cos(phi)
+        x = p.getX() + (lever - m0) * math.sin(phi)
+        y = p.getY() - (lever - m0) * math.cos(phi)
+        hm = t * math.sqrt(cov[2, 2]) / k
+        hphi = t * math.sqrt(max(0.0, (s * s * cov[0, 0] + c * c * cov[1, 1]
+                                       - 2 * s * c * cov[0, 1]))) / k ** 2
+        out.append([x, y, math.degrees(phi)])
+        err.append([hm * abs(math.sin(phi)), hm * abs(math.cos(phi)), math.degrees(hphi)])
+    return Parameter("deadWheelPoses", out, err, True,
+                     "each wheel's readings regressed on the reference pose's motion "
+                     f"({len(A)} independent intervals): rolling direction and lever arm "
+                     "(a joint least-squares fit)", "m, m, deg")
+
+
+def _config_fields(kind: str, params: dict[str, Parameter]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    p = params.get("wheelRadiusScale")
+    if p is not None and p.determined:
+        out["wheelScale"] = list(p.value)
+    p = params.get("gyroScale")
+    if p is not None and p.determined:
+        out["gyroScale"] = float(p.value)
+    p = params.get("steerOffsets")
+    if p is not None and p.determined:
+        out["steerOffsets"] = list(p.value)
+    p = params.get("deadWheelPoses")
+    if p is not None and p.determined:
+        out["deadWheels"] = [tuple(w) for w in p.value]
+    p = params.get("trackwidth")
+    if p is not None and p.determined and kind == "differential":
+        out["trackwidth"] = float(p.value)
+    return out
+
+
+def _replay_options(kind: str, params: dict[str, Parameter]) -> dict[str, Any]:
+    f = _config_fields(kind, params)
+    out: dict[str, Any] = {}
+    if "wheelScale" in f:
+        out["wheel-scale"] = f["wheelScale"]
+    if "gyroScale" in f:
+        out["gyro-scale"] = f["gyroScale"]
+    if "steerOffsets" in f:
+        out["steer-offsets"] = [math.degrees(a) for a in f["steerOffsets"]]
+    if "deadWheels" in f:
+        out["dead-wheel"] = f["deadWheels"]
+    return out
+
+
+# ---------------------------------------------------------------------------------------
+# The report
+
+def _fmt(v: Any, e: Any, unit: str) -> tuple[str, str]:
+    if isinstance(v, list) and v and isinstance(v[0], list):
+        return ("; ".join("(" + ", ".join(f"{x:.4f}" for x in w) + ")" for w in v),
+                "; ".join("±(" + ", ".join(f"{x:.4f}" for x in w) + ")" for w in e))
+    if isinstance(v, list):
+        if unit == "rad":
+            return (", ".join(f"{math.degrees(x):+.2f}°" for x in v),
+                    ", ".join(f"±{math.degrees(x):.2f}°" for x in e))
+        return ", ".join(f"{x:.5f}" for x in v), ", ".join(f"±{x:.5f}" for x in e)
+    return f"{v:.5f}{' ' + unit if unit else ''}", f"±{e:.5f}"
+
+
+def report(result: CalibrationResult) -> str:
+    """The text report: each parameter with its 95 % interval (or why it is not
+    determined), the windows, the drift before and after, the replay command."""
+    lines = [f"calibration of {', '.join(result.sources)} ({result.drivetrain})", ""]
+    for p in result.parameters.values():
+        if p.determined:
+            v, e = _fmt(p.value, p.uncertainty, p.unit)
+            lines.append(f"  {p.name}: {v}  (95 %: {e})")
+            lines.append(f"      from {p.why}")
+        else:
+            lines.append(f"  {p.name}: not determined: {p.why}")
+    lines += ["", "windows:"]
+    for w in result.windows:
+        mark = "used" if w.used else "rejected"
+        lines.append(f"  {w.kind:8s} {w.start / 1e6:8.2f}–{w.end / 1e6:8.2f} s  {mark}: "
+                     f"{w.why}")
+    if not result.against:
+        lines += ["", "drift: not measured (no reference pose; --truth ENTRY names one)"]
+    else:
+        lines += ["", "drift against the reference pose (final / max / RMS position):"]
+        for src, b, a in zip(result.sources, result.before, result.after):
+            if b is None or a is None:
+                continue
+            lines.append(f"  {src}: before {b.finalPosition * 100:.1f} / "
+                         f"{b.maxPosition * 100:.1f} / {b.rmsPosition * 100:.1f} cm, after "
+                         f"{a.finalPosition * 100:.1f} / {a.maxPosition * 100:.1f} / "
+                         f"{a.rmsPosition * 100:.1f} cm")
+    lines += ["", "replay with the fitted values:", "  " + result.replayCommand()]
+    return "\n".join(lines)
+
+
+def plotCalibration(result: CalibrationResult, path: str | os.PathLike[str]) -> None:
+    """Draw each log's replayed path before and after the fit (and the reference or
+    logged pose) and the position error against it over time into a PNG (matplotlib,
+    imported only here)."""
+    plt = pyplot()
+    rows = len(result.replays)
+    fig, axes = plt.subplots(rows, 2, figsize=(11, 4.5 * rows), squeeze=False)
+    for row, (before, after) in enumerate(zip(result.replays, result.fitted)):
+        ax, ex = axes[row]
+        ref = before.truth if before.truth is not None else before.logged
+        label = "reference" if before.truth is not None else "logged pose (the robot's own)"
+        if ref is not None:
+            ax.plot(ref[1][:, 0], ref[1][:, 1], color="black", lw=1.5, label=label)
+        ax.plot(before.poses[:, 0], before.poses[:, 1], color="tab:red", lw=1,
+                label="replay, as configured")
+        ax.plot(after.poses[:, 0], after.poses[:, 1], color="tab:blue", lw=1,
+                label="replay, fitted")
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_xlabel("x (m)")
+        ax.set_ylabel("y (m)")
+        ax.set_title(os.path.basename(str(before.source)))
+        ax.legend(loc="best", fontsize=8)
+        for stats, color, name in ((result.before[row], "tab:red", "as configured"),
+                                   (result.after[row], "tab:blue", "fitted")):
+            if stats is not None:
+                ex.plot((stats.t - before.t[0]) / 1e6, stats.error * 100, color=color,
+                        label=name)
+        ex.set_xlabel("time (s)")
+        ex.set_ylabel(f"position error against the {label} (cm)")
+        for w in result.windows:
+            if w.used and w.log == result.sources[row]:
+                ex.axvspan((w.start - before.t[0]) / 1e6, (w.end - before.t[0]) / 1e6,
+                           alpha=0.08, color={"spin": "green", "straight": "orange",
+                                              "turn": "purple"}[w.kind])
+        ex.legend(loc="best", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.fspath(path), dpi=110)
+    plt.close(fig)
