@@ -388,21 +388,34 @@ def _spin_scales(logs: list[_Log], kind: str, gyro: float) -> Parameter:
     return Parameter("wheelRadiusScale", values if ok else None, errs if ok else None, ok, why)
 
 
-def _trackwidth(logs: list[_Log], gyro: float, scales: Any) -> Parameter:
-    xs, ys = [], []
+def _trackwidth(logs: list[_Log], gyro: float, scales: Any = None,
+                halves: tuple[list[float], float] | None = None) -> Parameter:
+    """(right − left) = W·ψ over the windows that turn; with fitted wheel scales and gyro
+    scale (and their 95 % half-widths), W's interval includes theirs."""
+    xs, left, right = [], [], []
     sl, sr = (scales if scales is not None else (1.0, 1.0))
     for lg in logs:
         for s in lg.used("spin", "turn"):
             P = lg.r.positions[s]
             xs.append(lg.r.gyroAngles[s] * gyro)
-            ys.append(P[:, 1] * sr - P[:, 0] * sl)
+            left.append(P[:, 0])
+            right.append(P[:, 1])
     if not xs:
         return Parameter("trackwidth", None, None, False,
-                         "no usable window that turns: spin in place for 3 turns")
-    b, se, dof = _slope(xs, ys)
-    return Parameter("trackwidth", b, _t95(dof) * se, math.isfinite(b) and b > 0,
+                         "no usable window that turns: spin in place for 3 turns", "m")
+    b, se, dof = _slope(xs, [r * sr - lft * sl for r, lft in zip(right, left)])
+    half = _t95(dof) * se
+    if halves is not None:
+        # W = sr·Wr − sl·Wl with Wr, Wl the slopes of each side alone: the scales' and
+        # the gyro's intervals add in quadrature (linearised).
+        (hl, hr), hg = halves
+        wr = _slope(xs, right)[0]
+        wl = _slope(xs, left)[0]
+        half = math.sqrt(half ** 2 + (wr * hr) ** 2 + (wl * hl) ** 2 + (b * hg / gyro) ** 2)
+    return Parameter("trackwidth", b, half, math.isfinite(b) and b > 0,
                      f"(right − left) against the gyro's heading over {len(xs)} turning "
-                     f"window(s)" + ("" if scales is not None else
+                     f"window(s)" + (", with the fitted wheel and gyro scales"
+                                     if scales is not None else
                                      ", assuming the logged wheel distances are right"),
                      "m")
 
@@ -431,14 +444,15 @@ def _steer_offsets(logs: list[_Log]) -> Parameter:
                            f"needs a reference pose", "rad")
 
 
-def _dead_wheel_levers(logs: list[_Log], gyro: float) -> Parameter:
+def _dead_wheel_levers(logs: list[_Log], gyro: float) -> list[Parameter]:
     r0 = logs[0].r
     poses = list(r0.kinematics.getWheelPoses())
     spins = sum(len(lg.used("spin")) for lg in logs)
     if spins == 0:
-        return Parameter("deadWheelPoses", None, None, False,
-                         "no usable spin-in-place window: spin in place for 3 turns")
-    out, err = [], []
+        why = "no usable spin-in-place window: spin in place for 3 turns"
+        return [Parameter("deadWheelLevers", None, None, False, why, "m"),
+                Parameter("deadWheelPoses", None, None, False, why, "m, m, deg")]
+    out, err, levers, lever_err = [], [], [], []
     for i, p in enumerate(poses):
         xs, ys = [], []
         for lg in logs:
@@ -453,17 +467,22 @@ def _dead_wheel_levers(logs: list[_Log], gyro: float) -> Parameter:
         h = _t95(dof) * se
         out.append([x, y, math.degrees(phi)])
         err.append([h * abs(math.sin(phi)), h * abs(math.cos(phi)), 0.0])
-    return Parameter("deadWheelPoses", out, err, True,
-                     f"spinning in place ({spins} window(s)): each wheel's reading against "
-                     f"the gyro gives its lever arm (Road Runner's angular regression); the "
-                     f"rolling directions and the coordinate along them are as configured",
-                     "m, m, deg")
+        levers.append(m)
+        lever_err.append(h)
+    why = (f"spinning in place ({spins} window(s)): each wheel's reading against the gyro "
+           f"gives its lever arm m = x sin φ − y cos φ (Road Runner's angular regression)")
+    return [Parameter("deadWheelLevers", levers, lever_err, True, why, "m"),
+            Parameter("deadWheelPoses", out, None, False,
+                      "the rolling directions need a reference pose (--truth ENTRY); the "
+                      "values are the configured poses moved perpendicular to their "
+                      "rolling direction to the fitted levers (deadWheelLevers)",
+                      "m, m, deg")]
 
 
 # ---------------------------------------------------------------------------------------
 # The joint fit against a reference pose
 
-INTERVAL = 1.0          # s, the least span of one reference interval of the joint fit
+INTERVAL = 1.0  # s, the least span of one reference interval of the joint fit
 
 
 def _pairs(t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -583,15 +602,19 @@ def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],
     width = refs[0].r.positions.shape[1]
     model = _Model(kind, width, start, base)
 
+    pairs = [_pairs(lg.ref[0]) for lg in refs]
+    targets = [_relative(lg.ref[1], a, b) for lg, (a, b) in zip(refs, pairs)]
+
     def raw(x: np.ndarray) -> np.ndarray:
-        # The drift itself: the replayed pose minus the reference at every reference
-        # sample. At the true parameters it is the reference's own noise (the wheels'
-        # and gyro's noise on positions does not accumulate), so the residuals are
-        # independent and the fit's covariance is honest.
+        # The drift over each reference interval: the replayed motion from one reference
+        # sample to one INTERVAL later (robot frame) minus the reference's. Its noise is
+        # the reference's and the sensors' at the two ends, independent between intervals
+        # that share no sample; the drift from one end of the log to the other (whose
+        # errors accumulate, and so correlate) would overstate what the fit knows.
         out = []
-        for lg in refs:
+        for lg, (a, b), want in zip(refs, pairs, targets):
             rep = _at(lg.r.t, model.replay(lg, x), lg.ref[0])
-            d = rep - lg.ref[1]
+            d = _relative(rep, a, b) - want
             d[:, 2] = np.angle(np.exp(1j * d[:, 2]))
             out.append(d)
         return np.concatenate(out)
@@ -613,12 +636,22 @@ def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],
     dof = m - p
     if dof < 1 or not fit.success:
         return None
-    J = fit.jac
-    sigma2 = float(fit.fun @ fit.fun) / dof
+    # The covariance from the sandwich of each interval's scores (HC1): an interval's
+    # noise grows with how far it moves (the heading's noise turns its translation), so
+    # the plain (JᵀJ)⁻¹σ² would credit the long intervals, which carry most of what the
+    # fit learns, with the short ones' noise.
+    J = fit.jac.reshape(-1, 3, p)
+    res = fit.fun.reshape(-1, 3)
+    scores = np.einsum("kcp,kc->kp", J, res)
     try:
-        cov = np.linalg.inv(J.T @ J) * sigma2
+        bread = np.linalg.inv(np.einsum("kcp,kcq->pq", J, J))
     except np.linalg.LinAlgError:
         return None
+    k = len(res)
+    if k <= p:
+        return None
+    cov = bread @ (scores.T @ scores) @ bread * (k / (k - p))
+    dof = k - p
     values = model.config(fit.x)
     half = model.config(fit.x, _t95(dof) * np.sqrt(np.maximum(np.diag(cov), 0.0)))
     return values, half, m // 3
@@ -697,7 +730,8 @@ def calibrate(logs: Any, config: ReplayConfig | None = None,
             "drive's wheel scale and trackwidth are not separable")
         params["trackwidth"] = _trackwidth(runs, g, None)
     elif kind == "deadwheel":
-        params["deadWheelPoses"] = _dead_wheel_levers(runs, g)
+        for p in _dead_wheel_levers(runs, g):
+            params[p.name] = p
     params["gyroScale"] = gyro_p
 
     # The joint fit against the reference.
@@ -714,15 +748,16 @@ def calibrate(logs: Any, config: ReplayConfig | None = None,
                 params[name] = Parameter(
                     name, v, half[name], True,
                     f"joint fit of {', '.join(values)} minimising the drift against the "
-                    f"reference pose ({count} reference samples)",
+                    f"reference pose over {count} independent {INTERVAL:g} s intervals",
                     unit)
             if kind == "differential":
-                params["trackwidth"] = _trackwidth(runs, values["gyroScale"],
-                                                   values["wheelRadiusScale"])
+                params["trackwidth"] = _trackwidth(
+                    runs, values["gyroScale"], values["wheelRadiusScale"],
+                    (half["wheelRadiusScale"], half["gyroScale"]))
     else:
         joint_dw = _dead_wheel_joint(runs)
-        if joint_dw is not None:
-            params["deadWheelPoses"] = joint_dw
+        for p in joint_dw or ():
+            params[p.name] = p
 
     options = _replay_options(kind, params)
     before: list[DriftStats | None] = []
@@ -741,7 +776,7 @@ def calibrate(logs: Any, config: ReplayConfig | None = None,
                              before, after, options, [lg.r for lg in runs], fitted)
 
 
-def _dead_wheel_joint(logs: list[_Log]) -> Parameter | None:
+def _dead_wheel_joint(logs: list[_Log]) -> list[Parameter] | None:
     """Each dead wheel's readings against the reference motion: (cos φ, sin φ, m) / k."""
     sp = _scipy()
     refs = [lg for lg in logs if lg.ref is not None and len(_pairs(lg.ref[0])[0]) >= 4]
@@ -759,7 +794,7 @@ def _dead_wheel_joint(logs: list[_Log]) -> Parameter | None:
     A, B = np.concatenate(A), np.concatenate(B)
     if len(A) < 8:
         return None
-    out, err = [], []
+    out, err, levers, lever_err = [], [], [], []
     dof = len(A) - 3
     t = _t95(dof)
     for i in range(width):
@@ -782,10 +817,15 @@ def _dead_wheel_joint(logs: list[_Log]) -> Parameter | None:
                                        - 2 * s * c * cov[0, 1]))) / k ** 2
         out.append([x, y, math.degrees(phi)])
         err.append([hm * abs(math.sin(phi)), hm * abs(math.cos(phi)), math.degrees(hphi)])
-    return Parameter("deadWheelPoses", out, err, True,
-                     "each wheel's readings regressed on the reference pose's motion "
-                     f"({len(A)} independent intervals): rolling direction and lever arm "
-                     "(a joint least-squares fit)", "m, m, deg")
+        levers.append(lever)
+        lever_err.append(hm)
+    why = ("each wheel's readings regressed on the reference pose's motion "
+           f"({len(A)} independent intervals): rolling direction and lever arm (a joint "
+           "least-squares fit)")
+    return [Parameter("deadWheelLevers", levers, lever_err, True, why, "m"),
+            Parameter("deadWheelPoses", out, err, True,
+                      why + "; the coordinate along the rolling direction as configured",
+                      "m, m, deg")]
 
 
 def _config_fields(kind: str, params: dict[str, Parameter]) -> dict[str, Any]:
@@ -800,7 +840,7 @@ def _config_fields(kind: str, params: dict[str, Parameter]) -> dict[str, Any]:
     if p is not None and p.determined:
         out["steerOffsets"] = list(p.value)
     p = params.get("deadWheelPoses")
-    if p is not None and p.determined:
+    if p is not None and p.value is not None:      # replay needs them, best known
         out["deadWheels"] = [tuple(w) for w in p.value]
     p = params.get("trackwidth")
     if p is not None and p.determined and kind == "differential":
@@ -848,6 +888,8 @@ def report(result: CalibrationResult) -> str:
             lines.append(f"      from {p.why}")
         else:
             lines.append(f"  {p.name}: not determined: {p.why}")
+            if p.value is not None:
+                lines.append(f"      best known: {_fmt(p.value, p.value, p.unit)[0]}")
     lines += ["", "windows:"]
     for w in result.windows:
         mark = "used" if w.used else "rejected"
