@@ -527,10 +527,11 @@ def _at(t_src: np.ndarray, poses: np.ndarray, t: np.ndarray) -> np.ndarray:
 
 class _Model:
     """The parameters a drivetrain's joint fit varies, as one vector, and the replay they
-    give. A swerve drive's drift barely tells one module's wheel scale or steer offset
-    from another's (forward kinematics averages the modules), so where the windows gave
-    them (``base``) the fit varies only their common factor and common offset, keeping
-    the windows' differences between modules; everything else is fitted per wheel."""
+    give. The drift of a swerve or mecanum drive barely tells one module's wheel scale or
+    steer offset from another's (forward kinematics averages the modules; a mecanum
+    drive's has a null space), so where the windows gave them (``base``) the fit varies
+    only their common factor and common offset, keeping the windows' differences between
+    modules; everything else is fitted per wheel."""
 
     def __init__(self, kind: str, width: int, start: dict[str, Any],
                  base: dict[str, tuple[list[float], list[float]]]) -> None:
@@ -603,58 +604,79 @@ def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],
     model = _Model(kind, width, start, base)
 
     pairs = [_pairs(lg.ref[0]) for lg in refs]
-    targets = [_relative(lg.ref[1], a, b) for lg, (a, b) in zip(refs, pairs)]
+    targets = [_relative(lg.ref[1], a, b)[:, :2] for lg, (a, b) in zip(refs, pairs)]
 
-    def raw(x: np.ndarray) -> np.ndarray:
-        # The drift over each reference interval: the replayed motion from one reference
-        # sample to one INTERVAL later (robot frame) minus the reference's. Its noise is
-        # the reference's and the sensors' at the two ends, independent between intervals
-        # that share no sample; the drift from one end of the log to the other (whose
-        # errors accumulate, and so correlate) would overstate what the fit knows.
+    npar = len(model.x0)
+
+    def blocks(x: np.ndarray) -> list[np.ndarray]:
+        # One row per reference interval (from one sample to one INTERVAL later, sharing
+        # no sample with the next): the drift of its translation (the replayed motion
+        # minus the reference's, robot frame at its start), and the heading error at
+        # each of its samples. Its noise is the reference's and the sensors' within the
+        # interval, independent of the other rows'; the translation drift from one end of
+        # the log to the other accumulates errors (which then correlate) and would
+        # overstate what the fit knows, while the heading (the gyro's, turned by
+        # gyroScale) accumulates none.
+        # Each log's headings carry one more unknown, a constant offset (the noise of the
+        # gyro's and the reference's first samples): the last parameters.
         out = []
-        for lg, (a, b), want in zip(refs, pairs, targets):
-            rep = _at(lg.r.t, model.replay(lg, x), lg.ref[0])
-            d = _relative(rep, a, b) - want
-            d[:, 2] = np.angle(np.exp(1j * d[:, 2]))
-            out.append(d)
-        return np.concatenate(out)
+        for j, (lg, (a, b), want) in enumerate(zip(refs, pairs, targets)):
+            rep = _at(lg.r.t, model.replay(lg, x[:npar]), lg.ref[0])
+            dh = np.angle(np.exp(1j * (rep[:, 2] + x[npar + j] - lg.ref[1][:, 2])))
+            span = a[:, None] + np.arange(b[0] - a[0] + 1)[None, :]
+            out.append(np.column_stack([_relative(rep, a, b)[:, :2] - want, dh[span]]))
+        return out
 
-    # Metres and radians are weighed by their spread (a residual in units of its own
-    # noise), so that neither dominates.
-    w = 1.0 / np.maximum(raw(model.x0).std(axis=0, ddof=1), 1e-9)
-
-    def residuals(x: np.ndarray) -> np.ndarray:
-        return (raw(x) * w).ravel()
+    def weights(x: np.ndarray) -> list[np.ndarray]:
+        # Metres and radians weighed by their spread: a residual in units of its noise.
+        bl = blocks(x)
+        trans = np.concatenate([b_[:, :2].ravel() for b_ in bl]).std(ddof=1)
+        head = np.concatenate([b_[:, 2:].ravel() for b_ in bl]).std(ddof=1)
+        return [np.concatenate([np.full(2, 1.0 / max(trans, 1e-9)),
+                                np.full(b_.shape[1] - 2, 1.0 / max(head, 1e-12))])
+                for b_ in bl]
 
     lo, hi = model.bounds()
-    fit = sp.optimize.least_squares(residuals, np.clip(model.x0, lo, hi), bounds=(lo, hi),
-                                    x_scale="jac")
-    # Once more with the weights of the fitted residuals.
-    w = 1.0 / np.maximum(raw(fit.x).std(axis=0, ddof=1), 1e-9)
+    lo = np.concatenate([lo, np.full(len(refs), -math.pi)])
+    hi = np.concatenate([hi, np.full(len(refs), math.pi)])
+    x0 = np.clip(np.concatenate([model.x0, np.zeros(len(refs))]), lo, hi)
+    w = weights(x0)
+
+    def residuals(x: np.ndarray) -> np.ndarray:
+        return np.concatenate([(b_ * wb).ravel() for b_, wb in zip(blocks(x), w)])
+
+    fit = sp.optimize.least_squares(residuals, x0, bounds=(lo, hi), x_scale="jac")
+    w = weights(fit.x)                  # once more with the fitted residuals' spread
     fit = sp.optimize.least_squares(residuals, fit.x, bounds=(lo, hi), x_scale="jac")
-    m, p = len(fit.fun), len(fit.x)
-    dof = m - p
-    if dof < 1 or not fit.success:
+    if not fit.success:
         return None
-    # The covariance from the sandwich of each interval's scores (HC1): an interval's
-    # noise grows with how far it moves (the heading's noise turns its translation), so
-    # the plain (JᵀJ)⁻¹σ² would credit the long intervals, which carry most of what the
-    # fit learns, with the short ones' noise.
-    J = fit.jac.reshape(-1, 3, p)
-    res = fit.fun.reshape(-1, 3)
-    scores = np.einsum("kcp,kc->kp", J, res)
-    try:
-        bread = np.linalg.inv(np.einsum("kcp,kcq->pq", J, J))
-    except np.linalg.LinAlgError:
-        return None
-    k = len(res)
+    # The covariance from the sandwich of each interval's scores (cluster-robust, with
+    # the small-sample factor k/(k − p)): an interval's noise grows with how far it moves
+    # (the heading's noise turns its translation), so the plain (JᵀJ)⁻¹σ² would credit the
+    # long intervals, which carry most of what the fit learns, with the short ones' noise.
+    p = len(fit.x)
+    scores, bread, row = [], np.zeros((p, p)), 0
+    for b_ in blocks(fit.x):
+        n_rows, width_b = b_.shape
+        J = fit.jac[row:row + n_rows * width_b].reshape(n_rows, width_b, p)
+        r = fit.fun[row:row + n_rows * width_b].reshape(n_rows, width_b)
+        scores.append(np.einsum("kcp,kc->kp", J, r))
+        bread += np.einsum("kcp,kcq->pq", J, J)
+        row += n_rows * width_b
+    sc = np.concatenate(scores)
+    k = len(sc)
     if k <= p:
         return None
-    cov = bread @ (scores.T @ scores) @ bread * (k / (k - p))
+    try:
+        inv = np.linalg.inv(bread)
+    except np.linalg.LinAlgError:
+        return None
+    cov = inv @ (sc.T @ sc) @ inv * (k / (k - p))
     dof = k - p
-    values = model.config(fit.x)
-    half = model.config(fit.x, _t95(dof) * np.sqrt(np.maximum(np.diag(cov), 0.0)))
-    return values, half, m // 3
+    values = model.config(fit.x[:npar])
+    half = model.config(fit.x[:npar],
+                        _t95(dof) * np.sqrt(np.maximum(np.diag(cov)[:npar], 0.0)))
+    return values, half, k
 
 
 # ---------------------------------------------------------------------------------------
@@ -695,10 +717,13 @@ def calibrate(logs: Any, config: ReplayConfig | None = None,
         if runs and r.positions.shape[1:] != runs[0].r.positions.shape[1:]:
             raise CalibrationError(f"{name} has {r.positions.shape[1]} wheels per sample, "
                                    f"{runs[0].name} {runs[0].r.positions.shape[1]}")
-        if float(np.ptp(r.gyroAngles)) < 1e-6:
-            raise CalibrationError(f"{name}: the gyro ({r.entries.get('gyro')}) never moves: "
-                                   f"a calibration needs the robot to turn (spin in place "
-                                   f"for 3 turns), and a gyro that reads it")
+        wins = _windows(r, name)            # refuses a log too short first
+        turned = float(np.ptp(r.gyroAngles))
+        if turned < MIN_TURN:
+            raise CalibrationError(
+                f"{name}: the gyro ({r.entries.get('gyro')}) turned {turned:.3f} rad in "
+                f"all: the robot never turned, or the gyro never moved; a calibration needs "
+                f"the robot to turn (spin in place for 3 turns) and a gyro that reads it")
         if r.drivetrain == "deadwheel" and r.entries.get("gyro") in (None, "(wheels)"):
             raise CalibrationError(f"{name}: calibrating dead wheels needs a gyro")
         ref = None
@@ -706,7 +731,6 @@ def calibrate(logs: Any, config: ReplayConfig | None = None,
             tr, P = r.truth
             keep = (tr >= r.t[0]) & (tr <= r.t[-1])
             ref = (tr[keep], P[keep])
-        wins = _windows(r, name)
         runs.append(_Log(name, r, wins, ref))
         windows += [w for _, _, w in wins]
     kind = runs[0].r.drivetrain
@@ -738,8 +762,8 @@ def calibrate(logs: Any, config: ReplayConfig | None = None,
     if kind != "deadwheel":
         start = {k: p.value for k, p in params.items() if p.determined}
         base = {k: (p.value, p.uncertainty) for k, p in params.items()
-                if kind == "swerve" and p.determined and k in ("wheelRadiusScale",
-                                                               "steerOffsets")}
+                if kind in ("swerve", "mecanum") and p.determined
+                and k in ("wheelRadiusScale", "steerOffsets")}
         joint = _joint_fit(runs, kind, start, base)
         if joint is not None:
             values, half, count = joint

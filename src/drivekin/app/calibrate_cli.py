@@ -69,8 +69,7 @@ def main(argv) -> int:
             parser.error(f"{out} already exists: pass --force to overwrite it")
     from drivekin import calibrate, datalog
 
-    config = log_config(args, allowTruncated=args.allow_truncated, ragged=args.ragged,
-                        gyroAlign=args.gyro_align)
+    config = log_config(args)
     t0 = time.perf_counter()
     try:
         _progress(f"calibrating from {len(args.logs)} log(s)")

@@ -99,6 +99,13 @@ def add_log_options(p: argparse.ArgumentParser, verb: str) -> None:
     p.add_argument("--trackwidth", type=number_option(0.0, 100.0, "m", False),
                    metavar="W", help="trackwidth in m: a differential drive's, for --heading "
                                      "wheels; with --wheelbase, a rectangular swerve's")
+    p.add_argument("--gyro-align", choices=("latest", "interpolate"), default="latest",
+                   help="gyro sample used at each wheel sample (default: latest)")
+    p.add_argument("--ragged", choices=("error", "drop"), default="error",
+                   help="arrays that change length between records: stop (default) or drop "
+                        "the records of other lengths")
+    p.add_argument("--allow-truncated", action="store_true",
+                   help="replay the complete records of a truncated log instead of stopping")
 
 
 def log_config(args: argparse.Namespace, **more):
@@ -109,7 +116,8 @@ def log_config(args: argparse.Namespace, **more):
         pose=args.pose, truth=args.truth, gyroUnits=args.gyro_units,
         driveUnits=args.drive_units, turnUnits=args.turn_units, wheelRadius=args.wheel_radius,
         modules=args.module, wheelbase=args.wheelbase, odometryRate=args.odometry_rate,
-        deadWheels=args.dead_wheel, trackwidth=args.trackwidth, **more)
+        deadWheels=args.dead_wheel, trackwidth=args.trackwidth, gyroAlign=args.gyro_align,
+        ragged=args.ragged, allowTruncated=args.allow_truncated, **more)
 
 
 def check_log_options(parser: argparse.ArgumentParser, args: argparse.Namespace) -> None:
@@ -155,19 +163,12 @@ def build_parser() -> argparse.ArgumentParser:
                    metavar="DEG,DEG,...",
                    help="add these angles (degrees, one per swerve module) to the logged "
                         "module angles")
-    p.add_argument("--gyro-align", choices=("latest", "interpolate"), default="latest",
-                   help="gyro sample used at each wheel sample (default: latest)")
     p.add_argument("--start", choices=("logged", "origin"), default="logged",
                    help="start pose: the logged pose at the first sample (default) or the "
                         "origin")
     p.add_argument("--compare", choices=("hold", "interpolate"), default="hold",
                    help="replayed pose at a logged pose's timestamp: the latest one at or "
                         "before it, as the robot's getPose() (default), or interpolated")
-    p.add_argument("--ragged", choices=("error", "drop"), default="error",
-                   help="arrays that change length between records: stop (default) or drop "
-                        "the records of other lengths")
-    p.add_argument("--allow-truncated", action="store_true",
-                   help="replay the complete records of a truncated log instead of stopping")
     p.add_argument("--out-dir", metavar="DIR",
                    help="folder for the outputs (default: beside each log)")
     p.add_argument("--no-write", action="store_true",
@@ -222,8 +223,7 @@ def main(argv) -> int:
         args, heading=args.heading, wheelScale=args.wheel_scale, gyroScale=args.gyro_scale,
         steerOffsets=(None if args.steer_offsets is None else
                       [math.radians(a) for a in np.atleast_1d(args.steer_offsets)]),
-        gyroAlign=args.gyro_align, start=args.start, compare=args.compare,
-        ragged=args.ragged, allowTruncated=args.allow_truncated)
+        start=args.start, compare=args.compare)
     failed = 0
     results = []
     total = len(args.logs)
