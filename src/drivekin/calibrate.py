@@ -17,7 +17,7 @@ units and geometry options), with no corrections. Then:
 
    - ``wheelRadiusScale`` (swerve, mecanum; true radius / the radius the robot used, per
      module): spinning in place, module i rolls k_i·ψ, k_i its distance per radian of
-     robot rotation in the configured geometry (|r_i| for a swerve module), so its logged
+     robot rotation in the configured geometry (the distance from the centre, for a swerve module), so its logged
      distance is k_i·ψ / scale_i (Team 6328's wheel-radius characterization, per module).
      It assumes the gyro and the module positions are right.
    - ``trackwidth`` (differential, effective, m): (right − left) = W·ψ over every window
@@ -25,13 +25,14 @@ units and geometry options), with no corrections. Then:
      logged wheel distances are right: from the gyro alone, a differential drive's wheel
      scale and trackwidth are not separable, so its ``wheelRadiusScale`` needs a
      reference pose.
-   - ``deadWheelPoses``: spinning in place, wheel i reads m_i·ψ with m_i = x sin φ −
-     y cos φ (Road Runner's angular regression: a parallel wheel's y, a perpendicular
-     wheel's x); the wheel moves perpendicular to its rolling direction to match, the
-     other coordinate and the direction stay as configured. With a reference pose, each
-     wheel's readings are regressed on the robot's motion (x, y and heading increments,
-     robot frame) instead: direction, distance scale and lever arm of every wheel (a joint
-     least-squares fit for any number of wheels).
+   - ``deadWheelLevers`` (m) and ``deadWheelPoses``: spinning in place, wheel i reads
+     m_i·ψ with m_i = x sin φ − y cos φ (Road Runner's angular regression: a parallel
+     wheel's y, a perpendicular wheel's x). The poses are then only known as the
+     configured ones moved perpendicular to their rolling direction (not determined:
+     the directions need a reference). With a reference pose, each wheel's readings are
+     regressed on the robot's motion over the reference intervals (the twist: x, y and
+     heading, robot frame): direction, distance scale and lever arm of every wheel (a
+     joint least-squares fit for any number of wheels).
    - ``steerOffsets`` (swerve, rad, added to the logged angles): driving straight, every
      module points the same way, so each module's offset from the modules' mean direction
      is the circular mean of its deviation (angles mod π: a module may drive backwards).
@@ -40,14 +41,29 @@ units and geometry options), with no corrections. Then:
      against the gyro's; needs a reference pose.
 
 3. **With a reference pose** (``truth=``, e.g. vision or a simulation's true pose), a joint
-   fit of every parameter minimises the drift against it (scipy.optimize.least_squares):
-   the replayed motion over each reference interval (the relative pose between two
-   reference samples, robot frame) against the reference's, every other interval so
-   that no two share a sample (their noise is then independent); the interval from its
-   covariance (the Jacobian at the solution). The estimates above are its start.
-4. **Drift before and after**: the replay with the fitted values against the reference
-   (or, without one, against the logged pose), and the ``replay`` command line that
-   applies them.
+   fit of the parameters minimises the drift against it (scipy.optimize.least_squares).
+   Its rows are reference intervals of ``INTERVAL`` s that share no sample: the drift of
+   the replayed translation over the interval (robot frame at its start) and the heading
+   error at each of its samples, with one heading offset per log as a nuisance
+   parameter. The drift from one end of a log to the other is not used directly: its
+   errors accumulate and so correlate, which would overstate what the fit knows; over
+   disjoint intervals they are independent, and the 95 % interval comes from the
+   cluster-robust (sandwich) covariance of the rows. A swerve or mecanum drive's drift
+   hardly tells its modules' wheel scales apart (forward kinematics averages them;
+   mecanum's has a null space), so there the fit varies the common factor of the spin's
+   per-module scales (and, for swerve, the common offset of the straight windows' steer
+   offsets) with the gyro scale; a differential drive's wheel scales are fitted per
+   side, and its trackwidth then follows from the turning windows. Dead wheels are
+   regressed on the reference's motion directly.
+4. **Drift before and after**: the replay as configured and with the fitted values
+   against the reference (without one, drift is not measured: the logged pose is the
+   robot's own odometry, made with the geometry being corrected), and the ``replay``
+   command line that applies the fitted values.
+
+Intervals: ``uncertainty`` is the half-width of the 95 % interval. The tests measure how
+often it holds the true value over 40 noisy simulated logs per case (94–96 % for the
+window estimates and the joint fits; a differential trackwidth fitted with its wheel
+scales is conservative, its terms added in quadrature).
 
 A parameter the logs cannot determine is reported ``determined=False`` with the
 manoeuvre or reference that would determine it. scipy is an optional extra
