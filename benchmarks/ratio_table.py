@@ -119,8 +119,10 @@ def pin(cpu):
     os.sched_setaffinity(0, {cpus[-1] if cpu is None else cpu})
 
 
-def measure_time(cases, args, log):
-    timed = [Timed(*c) for c in cases]
+def run_rounds(timed, args, log, every=1):
+    """Calibrate each timed case, then run ``args.rounds`` rounds of ``args.repeat``
+    samples, rotating which case goes first, with the garbage collector off; progress
+    every ``every`` rounds."""
     gc_was = gc.isenabled()
     gc.disable()
     try:
@@ -130,11 +132,16 @@ def measure_time(cases, args, log):
             k = r % len(timed)
             for t in timed[k:] + timed[:k]:
                 t.round(args.repeat)
-            log(f"  round {r + 1}/{args.rounds} done")
+            if (r + 1) % every == 0 or r + 1 == args.rounds:
+                log(f"  round {r + 1}/{args.rounds} done")
     finally:
         if gc_was:
             gc.enable()
     return timed
+
+
+def measure_time(cases, args, log):
+    return run_rounds([Timed(*c) for c in cases], args, log)
 
 
 # ---------------------------------------------------------------------------------------

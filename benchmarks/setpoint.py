@@ -52,7 +52,6 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import gc
 import itertools
 import json
 import math
@@ -63,7 +62,7 @@ from pathlib import Path
 import numpy as np
 
 from _common import INPUTS, machine_description
-from ratio_table import Timed, pin
+from ratio_table import Timed, pin, run_rounds
 
 CYCLE = 200                      # commands per cycle (4 s at 50 Hz)
 DT = 0.02                        # s
@@ -391,23 +390,6 @@ def build_cases(cmds, pp, dk_, steady):
 
 # ---------------------------------------------------------------------------------------
 
-def measure(timed, args, log):
-    gc_was = gc.isenabled()
-    gc.disable()
-    try:
-        for t in timed:
-            t.calibrate(args.sample_ms / 1000)
-        for r in range(args.rounds):
-            k = r % len(timed)
-            for t in timed[k:] + timed[:k]:
-                t.round(args.repeat)
-            if (r + 1) % 10 == 0 or r + 1 == args.rounds:
-                log(f"  round {r + 1}/{args.rounds} done")
-    finally:
-        if gc_was:
-            gc.enable()
-
-
 def table(timed, args):
     base = timed[0]
     pp_us = base.per_row_us(args.stat)
@@ -492,7 +474,7 @@ def main(argv=None):
     timed = [TimedCase(c) for c in build_cases(cmds, pp, dk_, steady)]
     log(f"timing {len(timed)} cases: {args.rounds} rounds x {args.repeat} samples x "
         f"~{args.sample_ms:g} ms")
-    measure(timed, args, log)
+    run_rounds(timed, args, log, every=10)
     lines, missed = table(timed, args)
     lines += ["", "Value checks:", ""] + [f"* {n}" for n in notes]
     if failures:

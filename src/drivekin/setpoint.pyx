@@ -33,7 +33,7 @@ from libc.string cimport memcpy
 from drivekin._core.args cimport (check_type, is_array, positive_finite, read_floats,
                                   read_number, snapshot)
 from drivekin._core.kernels cimport (chassis_discretize, desaturated_discretize_scale,
-                                     forward_solve, jmax, jmin, rot_minus, rot_neg,
+                                     forward_solve, jmax, jmin, rot_cs, rot_minus, rot_neg,
                                      rot_plus, rot_rad, rot_radians, rot_xy, swerve_ik,
                                      wheels_desaturate)
 from drivekin._core.types cimport rot2_t, vec3_t
@@ -726,13 +726,6 @@ cdef inline bint flips(rot2_t r) noexcept nogil:
     return fabs(rot_radians(r)) > M_PI / 2.0
 
 
-cdef inline rot2_t rot(double c, double s) noexcept nogil:
-    cdef rot2_t r
-    r.c = c
-    r.s = s
-    return r
-
-
 cdef inline double signum(double x) noexcept nogil:
     return 1.0 if x > 0.0 else (-1.0 if x < 0.0 else 0.0)
 
@@ -940,12 +933,12 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         for m in range(n):
             pvx[m] = pcs[m] * psp[m]
             pvy[m] = psn[m] * psp[m]
-            ph = rot(pcs[m], psn[m])
+            ph = rot_cs(pcs[m], psn[m])
             if psp[m] < 0.0:
                 ph = rot_plus(ph, HALF_TURN)
             dvx[m] = dc[m] * dsp[m]
             dvy[m] = ds[m] * dsp[m]
-            dh = rot(dc[m], ds[m])
+            dh = rot_cs(dc[m], ds[m])
             if dsp[m] < 0.0:
                 dh = rot_plus(dh, HALF_TURN)
             pht[m] = rot_radians(ph)
@@ -980,14 +973,14 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
                 oc[m] = pcs[m]
                 osn[m] = psn[m]
                 continue
-            a = rot_plus(rot_neg(rot(pcs[m], psn[m])), rot(dc[m], ds[m]))
+            a = rot_plus(rot_neg(rot_cs(pcs[m], psn[m])), rot_cs(dc[m], ds[m]))
             if flips(a):
                 a = rot_plus(a, HALF_TURN)
             if fabs(rot_radians(a)) / step <= 1.0:
                 oc[m] = dc[m]
                 osn[m] = ds[m]
             else:
-                a = rot_plus(rot(pcs[m], psn[m]), rot_rad(signum(rot_radians(a)) * step))
+                a = rot_plus(rot_cs(pcs[m], psn[m]), rot_rad(signum(rot_radians(a)) * step))
                 oc[m] = a.c
                 osn[m] = a.s
                 min_s = 0.0
@@ -1012,10 +1005,10 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         tq_r = rcur * g.kt
         # The desired speed once optimised against the previous angle (turn ≤ 90°).
         s = dsp[m]
-        if fabs(rot_radians(rot_minus(rot(dc[m], ds[m]), rot(pcs[m], psn[m])))
+        if fabs(rot_radians(rot_minus(rot_cs(dc[m], ds[m]), rot_cs(pcs[m], psn[m])))
                 * (180.0 / M_PI)) > 90.0:
             s = -s
-        fa = rot(pcs[m], psn[m])
+        fa = rot_cs(pcs[m], psn[m])
         accelerating = (eps_eq(psp[m], 0.0) or (psp[m] > 0.0 and s >= psp[m])
                         or (psp[m] < 0.0 and s <= psp[m]))
         if accelerating:
@@ -1035,7 +1028,7 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         fcx = fcx + fx
         fcy = fcy + fy
         if not eps_eq(0.0, hypot(fx, fy)):
-            torque = torque + f * g.pd[m] * rot_minus(rot_xy(fx, fy), rot(g.lc[m], g.ls[m])).s
+            torque = torque + f * g.pd[m] * rot_minus(rot_xy(fx, fy), rot_cs(g.lc[m], g.ls[m])).s
     ax = fcx / g.mass
     ay = fcy / g.mass
     alpha = torque / g.moi
@@ -1090,17 +1083,17 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         wd = hypot(wfx[m], wfy[m])
         applied = 0.0
         if wd > 1e-6:
-            applied = wd * rot_minus(rot_xy(wfx[m], wfy[m]), rot(rc[m], rs[m])).c
+            applied = wd * rot_minus(rot_xy(wfx[m], wfy[m]), rot_cs(rc[m], rs[m])).c
         cur = applied * g.radius / g.kt
         if ovr[m] != 0.0:
-            if flips(rot_plus(rot_neg(rot(rc[m], rs[m])), rot(oc[m], osn[m]))):
+            if flips(rot_plus(rot_neg(rot_cs(rc[m], rs[m])), rot_cs(oc[m], osn[m]))):
                 rsp[m] = -rsp[m]
                 applied = -applied
                 cur = -cur
             rc[m] = oc[m]
             rs[m] = osn[m]
-        if flips(rot_plus(rot_neg(rot(pcs[m], psn[m])), rot(rc[m], rs[m]))):
-            a = rot_plus(rot(rc[m], rs[m]), HALF_TURN)
+        if flips(rot_plus(rot_neg(rot_cs(pcs[m], psn[m])), rot_cs(rc[m], rs[m]))):
+            a = rot_plus(rot_cs(rc[m], rs[m]), HALF_TURN)
             rc[m] = a.c
             rs[m] = a.s
             rsp[m] = -rsp[m]
