@@ -722,10 +722,16 @@ def calibrate(logs: Any, config: ReplayConfig | None = None,
     runs: list[_Log] = []
     windows: list[Window] = []
     for item in logs:
-        log = item if isinstance(item, LogData) else datalog.read(
-            item, allowTruncated=cfg.allowTruncated)
-        r = replay.replayLog(log, cfg)
-        name = str(log.source)
+        name = str(item.source if isinstance(item, LogData) else os.fspath(item))
+        try:
+            log = item if isinstance(item, LogData) else datalog.read(
+                item, allowTruncated=cfg.allowTruncated)
+            r = replay.replayLog(log, cfg)
+        except DataLogError as e:
+            # Several logs: the message names the one it is about.
+            text = str(e)
+            raise CalibrationError(text if text.startswith(name) else f"{name}: {text}") \
+                from None
         if runs and r.drivetrain != runs[0].r.drivetrain:
             raise CalibrationError(f"{name} is a {r.drivetrain} drive's log, "
                                    f"{runs[0].name} a {runs[0].r.drivetrain}'s: calibrate "

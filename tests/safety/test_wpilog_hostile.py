@@ -286,3 +286,22 @@ def test_the_replay_command_line_reports_a_hostile_file_in_one_line(case, tmp_pa
         for line in errors:
             assert line.startswith(f"python -m drivekin replay: error: {path}: ")
             assert len(line) < 1000, line[:300]
+
+
+@pytest.mark.parametrize("case", list(W.HOSTILE))
+def test_the_calibrate_command_line_reports_a_hostile_file_in_one_line(case, tmp_path,
+                                                                         capsys):
+    # The same for `calibrate`, which never succeeds on these: exit status 1, one error
+    # line naming the file, no traceback, no JSON written.
+    pytest.importorskip("scipy")
+    from drivekin.app.cli import main
+    path = tmp_path / "hostile.wpilog"
+    path.write_bytes(W.HOSTILE[case][0]())
+    out_json = tmp_path / "fit.json"
+    code = main(["calibrate", str(path), "--json", str(out_json)])
+    out, err = capsys.readouterr()
+    errors = [line for line in err.splitlines() if "error:" in line]
+    assert code == 1 and len(errors) == 1, (code, err[-2000:])
+    assert "Traceback" not in err and out == "" and not out_json.exists()
+    assert errors[0].startswith(f"python -m drivekin calibrate: error: {path}")
+    assert len(errors[0]) < 1000, errors[0][:300]
