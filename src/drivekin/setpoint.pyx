@@ -66,12 +66,6 @@ cdef tuple FEEDFORWARD_NAMES = ("accelerationsMPSSq", "linearForcesNewtons",
                                 "robotRelativeForcesYNewtons")
 
 
-cdef int finite(double x, str name, str unit) except -1:
-    if not isfinite(x):
-        raise ValueError(f"{name} must be a finite {unit}, got {x!r}")
-    return 0
-
-
 cdef long long count_arg(object x, str name, long long low) except -1:
     if not PyLong_CheckExact(x):
         raise TypeError(f"{name} must be an int, got {type_name(x)}")
@@ -888,7 +882,7 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
     cdef double r3[3]
     cdef vec3_t d, ret
     cdef rot2_t ph, dh, a, fa
-    cdef bint steer, all_flip, stopped, accelerating
+    cdef bint steer = True, all_flip, accelerating
     cdef int attempt
 
     if isnan(voltage):
