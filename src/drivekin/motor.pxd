@@ -14,3 +14,8 @@ cdef class DCMotor:
     cdef double kv               # (rad/s)/V
     cdef double kt               # N·m/A
     cdef bint frozen             # set once constructed: __init__ may not run again
+
+
+cdef inline double motor_current(double kv, double r, double w, double u) noexcept nogil:
+    # DCMotor.getCurrent(velocity w, voltageInput u) in WPILib's order of operations.
+    return -1.0 / kv / r * w + 1.0 / r * u

@@ -183,7 +183,7 @@ cdef class DCMotor:
         if torque is MISSING and voltageInput is not MISSING and velocity is not MISSING:
             w = velocity
             u = voltageInput
-            return -1.0 / self.kv / self.r * w + 1.0 / self.r * u
+            return motor_current(self.kv, self.r, w, u)
         if torque is not MISSING and voltageInput is MISSING and velocity is MISSING:
             t = torque
             return t / self.kt

@@ -39,7 +39,7 @@ from drivekin._core.kernels cimport (chassis_discretize, desaturated_discretize_
 from drivekin._core.types cimport rot2_t, vec3_t
 from drivekin.chassis cimport ChassisVelocities, new_chassis_velocities
 from drivekin.geometry cimport Translation2d
-from drivekin.motor cimport DCMotor
+from drivekin.motor cimport DCMotor, motor_current
 from drivekin.swerve cimport (SwerveDriveKinematics, SwerveModuleVelocity, _ModuleVector,
                               new_module_velocity)
 from drivekin._core.errors import refuse_delete, type_name
@@ -113,7 +113,7 @@ cdef class ModuleConfig:
         # PathPlannerLib's torque loss: the current at top speed on 12 V, clamped to the
         # limit, as torque (never negative).
         cdef double w = maxDriveVelocityMPS / wheelRadiusMeters
-        cdef double at_top = -1.0 / m.kv / m.r * w + 1.0 / m.r * 12.0
+        cdef double at_top = motor_current(m.kv, m.r, w, 12.0)
         self.radius = wheelRadiusMeters
         self.vmax = maxDriveVelocityMPS
         self.cof = wheelCOF
@@ -841,11 +841,6 @@ cdef inline vec3_t wpilib_discretize(double vx, double vy, double omega,
     return out
 
 
-cdef inline double motor_current(const generator_t* g, double w, double u) noexcept nogil:
-    # DCMotor.getCurrent(velocity, voltageInput) in WPILib's order of operations.
-    return -1.0 / g.kv / g.r * w + 1.0 / g.r * u
-
-
 cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt,
                    double voltage, const limits_t* lim, double* out) noexcept nogil:
     """One setpoint. ``prev`` holds the previous chassis velocities then n speeds, n
@@ -993,8 +988,8 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
     torque = 0.0
     for m in range(n):
         f = fabs(psp[m] / g.radius)
-        cur = jmax(jmin(motor_current(g, f, voltage), g.current_limit), 0.0)
-        rcur = jmax(jmin(fabs(motor_current(g, f, -voltage)), g.current_limit), 0.0)
+        cur = jmax(jmin(motor_current(g.kv, g.r, f, voltage), g.current_limit), 0.0)
+        rcur = jmax(jmin(fabs(motor_current(g.kv, g.r, f, -voltage)), g.current_limit), 0.0)
         tq_f = cur * g.kt
         tq_r = rcur * g.kt
         # The desired speed once optimised against the previous angle (turn ≤ 90°).
