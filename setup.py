@@ -3,11 +3,6 @@
 Environment switches:
   DRIVEKIN_CYTHON_DEBUG=1  turn bounds/wraparound checks back on (debug CI job)
   DRIVEKIN_CYTHON_TRACE=1  add line tracing and the annotated HTML
-  DRIVEKIN_SIMD=1          drivekin.batch takes sin, cos and atan2 four at a time from glibc's
-                           libmvec (AVX2; x86_64 Linux with glibc >= 2.35 only), and its
-                           replay renormalises headings with a Newton step: faster, but
-                           no longer bit-identical to the per-call API (error bound in
-                           drivekin.batch's docstring). Other modules are unaffected.
 """
 import os
 import platform
@@ -19,7 +14,6 @@ from setuptools import Extension, setup
 
 debug = os.environ.get("DRIVEKIN_CYTHON_DEBUG") == "1"
 trace = os.environ.get("DRIVEKIN_CYTHON_TRACE") == "1"
-simd = os.environ.get("DRIVEKIN_SIMD") == "1"
 
 directives = {
     "language_level": 3,
@@ -53,26 +47,14 @@ if trace:
 # -ffp-contract=off: where the target has fused multiply-add (aarch64, and x86_64 with
 # -mfma), gcc and clang would otherwise fuse a*b + c in some loops and not in others, so
 # the batch module would no longer give the per-call kernels' bits (seen on aarch64: one
-# ulp in test_batch's bit-identity tests), nor would aarch64 give x86_64's.
+# ulp in test_batch's bit-identity tests), nor would aarch64 give x86_64's; drivekin's own
+# sin, cos and atan2 (_core/dkmath.h) rely on it for the same bits on every platform.
 compile_args = (["-O3", "-fno-math-errno", "-fno-trapping-math", "-ffp-contract=off"]
                 if os.name != "nt" else [])
 
 modules = ["geometry", "chassis", "swerve", "_core.wheels", "_core.drivetrain", "differential",
            "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "batch",
            "_core.alloccount", "_core.wpilog", "motor", "setpoint"]
-
-
-def simd_options(name):
-    """Extra Extension arguments for the DRIVEKIN_SIMD=1 build of drivekin.batch."""
-    if not simd or name != "batch":
-        return {}
-    # compile_args keeps -ffp-contract=off under -mfma, so the only differences from the
-    # default build are libmvec's (the documented bound).
-    return {
-        "define_macros": macros + [("DRIVEKIN_SIMD", "1")],
-        "extra_compile_args": compile_args + ["-mavx2", "-mfma"],
-        "libraries": ["mvec", "m"],
-    }
 
 
 def link_args(system=sys.platform, machine=platform.machine()):
@@ -94,11 +76,11 @@ def extensions(numpy_include=None, system=sys.platform, machine=platform.machine
                 f"drivekin.{name}",
                 [f"src/drivekin/{name.replace('.', '/')}.pyx"],
                 **{
-                    "include_dirs": [numpy_include or numpy.get_include()],
+                    # src/drivekin for "_core/*.h", which modules in _core include too.
+                    "include_dirs": [numpy_include or numpy.get_include(), "src/drivekin"],
                     "define_macros": macros,
                     "extra_compile_args": compile_args,
                     "extra_link_args": link_args(system, machine),
-                    **simd_options(name),
                 },
             )
             for name in modules

@@ -27,21 +27,12 @@ and :func:`replay` leaves the odometry at the last sample. The loops run without
 do not use the same kinematics or odometry object from another thread meanwhile (memory
 stays safe, but the interleaving is unspecified).
 
-SIMD build. Built with ``DRIVEKIN_SIMD=1`` (setup.py; x86_64 with AVX2 and glibc ≥ 2.35),
-this module takes its sines, cosines and atan2 four at a time from glibc's libmvec
-(``SIMD`` is then True) instead of libm, and results are no longer bit-identical. glibc
-documents at most 2 ulp for libmvec's AVX2 sin and cos and 3 ulp for atan2 (libm itself:
-1 ulp). The replay also renormalises each composed heading with one Newton step instead
-of a square root and a division (within an ulp or two; it halves the replay's sequential
-latency). The bound, which tests/behaviour/test_batch_simd.py checks against the per-call
-API: each per-sample result (kinematics, discretize, the rotations, exp, log) is within
-1e-14 · max(abs(x), 1) of the per-call value x; a replay's poses are within 1e-14 · k ·
-max(abs(x), 1) after k samples, because the heading differences compose along the path.
-Measured on 10⁶ random samples (benchmarks/simd_error.py): per-sample functions at most
-2.7e-15 (relative to max(abs(x), 1)), 3.6e-15 absolute; 10⁶-sample replays at most 2.8e-12
-relative, 1.7e-11 m absolute. NaN and infinities come out where the default build puts
-them. Everything else (argument rules, state left behind, the desaturation and
-wheel-drive functions, which call no transcendental function) is the same in both builds.
+Every sine, cosine and atan2 comes from drivekin's own functions (``_core/dkmath.h``,
+at most 1 ulp from the exact value), here vectorised by the compiler: ``SIMD`` names the
+instruction set in use, ``"AVX2"`` (x86_64 CPUs that have it; chosen at import),
+``"SSE2"`` (other x86_64), ``"NEON"`` (aarch64). The vector and scalar forms perform the
+same operations in the same order, so results are the same bits whichever is in use, on
+every supported platform (docs/DESIGN.md, "One trig").
 """
 import numpy as np
 import numpy.typing as npt
@@ -62,10 +53,9 @@ from drivekin.setpoint import PathConstraints, SwerveSetpoint, SwerveSetpointGen
 
 _Array = npt.NDArray[np.float64]
 
-SIMD: bool
-"""True in a ``DRIVEKIN_SIMD=1`` build (libmvec sin/cos/atan2 and the replay's Newton-step
-renormalisation: results within the module's documented bound instead of bit-identical to
-the per-call API)."""
+SIMD: str
+"""The instruction set the array sin/cos/atan2 run on: ``"AVX2"``, ``"SSE2"``, ``"NEON"``
+or ``"scalar"``. Results are the same bits on each."""
 
 __all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize", "exp", "generateSetpoints", "log", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
 

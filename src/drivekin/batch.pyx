@@ -27,24 +27,16 @@ and :func:`replay` leaves the odometry at the last sample. The loops run without
 do not use the same kinematics or odometry object from another thread meanwhile (memory
 stays safe, but the interleaving is unspecified).
 
-SIMD build. Built with ``DRIVEKIN_SIMD=1`` (setup.py; x86_64 with AVX2 and glibc ≥ 2.35),
-this module takes its sines, cosines and atan2 four at a time from glibc's libmvec
-(``SIMD`` is then True) instead of libm, and results are no longer bit-identical. glibc
-documents at most 2 ulp for libmvec's AVX2 sin and cos and 3 ulp for atan2 (libm itself:
-1 ulp). The replay also renormalises each composed heading with one Newton step instead
-of a square root and a division (within an ulp or two; it halves the replay's sequential
-latency). The bound, which tests/behaviour/test_batch_simd.py checks against the per-call
-API: each per-sample result (kinematics, discretize, the rotations, exp, log) is within
-1e-14 · max(abs(x), 1) of the per-call value x; a replay's poses are within 1e-14 · k ·
-max(abs(x), 1) after k samples, because the heading differences compose along the path.
-Measured on 10⁶ random samples (benchmarks/simd_error.py): per-sample functions at most
-2.7e-15 (relative to max(abs(x), 1)), 3.6e-15 absolute; 10⁶-sample replays at most 2.8e-12
-relative, 1.7e-11 m absolute. NaN and infinities come out where the default build puts
-them. Everything else (argument rules, state left behind, the desaturation and
-wheel-drive functions, which call no transcendental function) is the same in both builds.
+Every sine, cosine and atan2 comes from drivekin's own functions (``_core/dkmath.h``,
+at most 1 ulp from the exact value), here vectorised by the compiler: ``SIMD`` names the
+instruction set in use, ``"AVX2"`` (x86_64 CPUs that have it; chosen at import),
+``"SSE2"`` (other x86_64), ``"NEON"`` (aarch64). The vector and scalar forms perform the
+same operations in the same order, so results are the same bits whichever is in use, on
+every supported platform (docs/DESIGN.md, "One trig").
 """
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from libc.math cimport atan2, fabs
+from libc.math cimport fabs
+from drivekin._core.dkmath cimport atan2, sincos
 from libc.string cimport memcpy, memset
 cimport numpy as cnp
 
@@ -67,23 +59,61 @@ from drivekin._core.errors import type_name
 
 cnp.import_array()
 
-cdef extern from "_core/simd.h" nogil:
-    # Array sin/cos and atan2: libm loops by default, libmvec four at a time in the
-    # DRIVEKIN_SIMD=1 build (see _core/simd.h). Every transcendental call of this module
-    # goes through these two, so both builds run the same code path.
-    const int DK_SIMD
+cdef extern from "_core/trig_arrays.h" nogil:
+    # Array sin/cos and atan2, vectorised (see the header). Every transcendental call of
+    # this module goes through these two.
     void dk_sincos_n(Py_ssize_t n, const double* x, double* s, double* c)
     void dk_atan2_n(Py_ssize_t n, const double* y, const double* x, double* r)
-    bint dk_cpu_ok()
+    int dk_trig_init()
+    const char* dk_trig_isa()
+    int dk_trig_use(const char* name)
 
-SIMD = bool(DK_SIMD)
-if not dk_cpu_ok():
-    # Without this, the first vector instruction would kill the process (SIGILL).
-    raise ImportError("this drivekin.batch was built with DRIVEKIN_SIMD=1 and needs a CPU "
-                      "with AVX2 and FMA; rebuild without DRIVEKIN_SIMD")
+dk_trig_init()
+SIMD = dk_trig_isa().decode()
+
+
+def _use_isa(str name):
+    """Test hook: run the array trig on instruction set ``name`` ("SSE2", "AVX2", ...);
+    returns the one in use before. ValueError if this build or CPU cannot."""
+    global SIMD
+    cdef str before = SIMD
+    if dk_trig_use(name.encode()) != 0:
+        raise ValueError(f"instruction set {name!r} is not available here (in use: {before})")
+    SIMD = dk_trig_isa().decode()
+    return before
+
+
+def _trig(str fn, a, b=None, bint scalar=False):
+    """Test hook: ``fn`` ("sincos" or "atan2") of float64 arrays through the array path
+    (or, with ``scalar``, the per-call path, one element at a time); sincos returns
+    (sin, cos)."""
+    cdef _Stack x = _stack(a, (), "a", False)
+    cdef _Stack y = None if b is None else _stack(b, (), "b", False)
+    cdef Py_ssize_t i, n = x.n
+    cdef cnp.ndarray r1 = np.empty(n), r2 = np.empty(n)
+    cdef double* o1 = <double*>cnp.PyArray_DATA(r1)
+    cdef double* o2 = <double*>cnp.PyArray_DATA(r2)
+    if fn == "sincos" and y is None:
+        with nogil:
+            if scalar:
+                for i in range(n):
+                    sincos(x.data[i], &o1[i], &o2[i])
+            else:
+                dk_sincos_n(n, x.data, o1, o2)
+        return r1, r2
+    if fn == "atan2" and y is not None and y.n == n:
+        with nogil:
+            if scalar:
+                for i in range(n):
+                    o1[i] = atan2(x.data[i], y.data[i])
+            else:
+                dk_atan2_n(n, x.data, y.data, o1)
+        return r1
+    raise ValueError("_trig takes ('sincos', x) or ('atan2', y, x) with arrays of one length")
+
 
 # Samples per pass: the loops below first compute every sample's sines, cosines and
-# angles of a chunk (independent of each other, so four at a time in the SIMD build), then
+# angles of a chunk (independent of each other, so a vector at a time), then
 # run the per-sample arithmetic, and write angles out in a last pass. 32 samples keep a
 # swerve replay's scratch well inside L1; in the SIMD build that measured about 9 % faster
 # than 256 (replay and swerve IK), in the default build the same.
@@ -743,27 +773,6 @@ cdef inline void gyro_turns(Py_ssize_t k, const double* g, rot2_t* prev,   # IN/
     dk_atan2_n(k, ts, tc, dth)
 
 
-cdef inline pose2_t compose(pose2_t p, pose2_t step) noexcept nogil:
-    # The replay's sequential step: pose_transform_by(p, step). Its rotation's normalisation
-    # (a square root, then a division) is the replay's critical path, about 15 ns a
-    # sample. The SIMD build instead scales the product of the two unit rotations by one
-    # Newton step for 1/sqrt(q), 1.5 - q/2, exact to within an ulp or two while
-    # |q - 1| < 1e-6 (always, unless a rotation is NaN, which takes the general path): it
-    # halves that latency and stays within the build's documented bound.
-    cdef vec2_t d
-    cdef double c, s, q, k
-    if not DK_SIMD:
-        return pose_transform_by(p, step)
-    c = step.r.c * p.r.c - step.r.s * p.r.s
-    s = step.r.c * p.r.s + step.r.s * p.r.c
-    q = c * c + s * s
-    if not fabs(q - 1.0) < 1e-6:
-        return pose_transform_by(p, step)
-    k = 1.5 - 0.5 * q
-    d = vec_rotate(step.t, p.r)
-    return pose(vec(p.t.x + d.x, p.t.y + d.y), rot_cs(c * k, s * k))
-
-
 cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
     # The odometry step (the drivetrain's motion, the gyro turn, the pose change and its
     # composition, as in update), restaged per chunk as passes over all its samples: the
@@ -771,8 +780,7 @@ cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
     # drivetrain's module distances module-major with their directions' cos/sin); for
     # dead wheels without a gyro, the cos/sin of the solved dθ; the pose changes; then,
     # the only sequential pass, the compositions; then the headings. Each sample sees
-    # exactly the operations of update (tests/behaviour/test_batch.py compares the bits;
-    # the SIMD build differs as its docstring says).
+    # exactly the operations of update (tests/behaviour/test_batch.py compares the bits).
     cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = odo.width
     cdef const double* x
     cdef bint gyro = odo.gyro
@@ -823,7 +831,7 @@ cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
                 ps[i] = step.r.s
             cur = odo.pose                  # a local, which the stores below cannot alias
             for i in range(kk):
-                cur = compose(cur, pose(vec(px[i], py[i]), rot_cs(pc[i], ps[i])))
+                cur = pose_transform_by(cur, pose(vec(px[i], py[i]), rot_cs(pc[i], ps[i])))
                 keep_pose(i, px, py, pc, ps, cur)
             odo.pose = cur
             odo.twist.dx = mx[kk - 1]

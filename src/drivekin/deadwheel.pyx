@@ -20,7 +20,8 @@ from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport Py_INCREF
 from cpython.float cimport PyFloat_FromDouble
 from cpython.tuple cimport PyTuple_New, PyTuple_SET_ITEM
-from libc.math cimport M_PI, atan2, fabs, isfinite
+from libc.math cimport M_PI, fabs, isfinite
+from drivekin._core.dkmath cimport atan2
 
 import numpy as np
 

@@ -19,7 +19,8 @@ from cpython.float cimport PyFloat_AsDouble
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport PyObject
 from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
-from libc.math cimport atan2, isfinite
+from libc.math cimport isfinite
+from drivekin._core.dkmath cimport atan2
 
 from drivekin._core.types cimport rot2_t
 from drivekin._core.wheels cimport _WheelValues, install_bare_new

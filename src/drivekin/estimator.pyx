@@ -18,7 +18,8 @@ history needs more room, and returned poses come from the Pose2d freelist.
 """
 cimport cython
 from cpython.mem cimport PyMem_Free, PyMem_Malloc, PyMem_Realloc
-from libc.math cimport INFINITY, cos, fabs, isfinite, isinf, sin, sqrt
+from libc.math cimport INFINITY, fabs, isfinite, isinf, sqrt
+from drivekin._core.dkmath cimport sincos
 from libc.string cimport memmove
 cimport numpy as cnp
 
@@ -160,8 +161,7 @@ cdef inline pose2_t interpolate_samples(const sample_t* a, const sample_t* b,
     cdef pose2_t step
     if f <= 0.0 or f >= 1.0 or not b.joined or not fabs(b.tw.dtheta) < 3.0:
         return pose_interpolate(a.p, b.p, f)
-    c = cos(theta)
-    s = sin(theta)
+    sincos(theta, &s, &c)
     step = twist_exp_cs(b.tw.dx * f, b.tw.dy * f, theta, c, s)
     # libm's (cos, sin) is unit to an ulp and the composition below normalises its
     # rotation product anyway: a normalisation less on the sampling path.

@@ -27,7 +27,8 @@ from cpython.long cimport PyLong_CheckExact
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport Py_INCREF, PyObject
 from cpython.tuple cimport PyTuple_New, PyTuple_SET_ITEM
-from libc.math cimport M_PI, atan2, cos, fabs, hypot, isfinite, isnan, sin, sqrt
+from libc.math cimport M_PI, fabs, hypot, isfinite, isnan, sqrt
+from drivekin._core.dkmath cimport atan2, sincos
 from libc.string cimport memcpy
 
 from drivekin._core.args cimport (check_type, is_array, positive_finite, read_floats,
@@ -813,9 +814,10 @@ cdef inline vec3_t wpilib_discretize(double vx, double vy, double omega,
     # ChassisSpeeds.discretize in WPILib 2026's own arithmetic (Pose2d.log's cos θ − 1,
     # which cancels for small θ): drivekin's discretize is exact where this is not (up to
     # ~1e-10 m/s apart here), and the compatibility mode reproduces PathPlannerLib's bits.
-    cdef double c = cos(omega * dt), s = sin(omega * dt), m = hypot(c, s)
-    cdef double theta, h, k, cmo, rc, rs, x, y
+    cdef double c, s, m, theta, h, k, cmo, rc, rs, x, y
     cdef vec3_t out
+    sincos(omega * dt, &s, &c)
+    m = hypot(c, s)
     if m > 1e-6:
         c = c / m
         s = s / m

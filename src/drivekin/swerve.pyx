@@ -14,7 +14,8 @@ from cpython.ref cimport Py_INCREF, PyObject
 from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
-from libc.math cimport M_PI, atan2, cos, fabs, isfinite, signbit, sin
+from libc.math cimport M_PI, fabs, isfinite, signbit
+from drivekin._core.dkmath cimport atan2, sincos
 from libc.string cimport memcpy
 
 import numpy as np
@@ -624,8 +625,7 @@ cdef class SwerveDriveKinematics(Drivetrain):
             d = float64_data(states, n, 2, False, what)
             for i in range(n):
                 self.s0[i] = d[2 * i]
-                self.s1[i] = cos(d[2 * i + 1])
-                self.s2[i] = sin(d[2 * i + 1])
+                sincos(d[2 * i + 1], &self.s2[i], &self.s1[i])
             return 0
         fast = as_fast(states, what)
         if PySequence_Fast_GET_SIZE(fast) != n:

@@ -4,7 +4,8 @@
 # (docs/DESIGN.md says where drivekin's numbers differ); the comments say where the
 # formulas are subtle.
 
-from libc.math cimport atan2, cos, fabs, hypot, signbit, sin, sqrt
+from libc.math cimport fabs, hypot, signbit, sqrt
+from drivekin._core.dkmath cimport atan2, sincos
 from drivekin._core.types cimport desat_t, dswerve_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 
 # ---------------------------------------------------------------------------------------
@@ -73,7 +74,9 @@ cdef inline rot2_t rot_unit(double x, double y) noexcept nogil:
     return rot_scaled(x, y, sqrt(x * x + y * y))
 
 cdef inline rot2_t rot_rad(double theta) noexcept nogil:
-    return rot_cs(cos(theta), sin(theta))
+    cdef double c, s
+    sincos(theta, &s, &c)
+    return rot_cs(c, s)
 
 cdef inline rot2_t rot_cs(double c, double s) noexcept nogil:
     # A rotation from cos θ and sin θ already computed (no normalisation).
@@ -150,7 +153,9 @@ cdef inline pose2_t pose_times(pose2_t p, double k) noexcept nogil:
 # Twist2d.exp / Transform2d.log
 
 cdef inline pose2_t twist_exp(double dx, double dy, double dtheta) noexcept nogil:
-    return twist_exp_cs(dx, dy, dtheta, cos(dtheta), sin(dtheta))
+    cdef double c, s
+    sincos(dtheta, &s, &c)
+    return twist_exp_cs(dx, dy, dtheta, c, s)
 
 cdef inline pose2_t twist_exp_cs(double dx, double dy, double dtheta,
                                  double ct, double st) noexcept nogil:
@@ -208,8 +213,9 @@ cdef inline pose2_t pose_interpolate(pose2_t a, pose2_t b, double t) noexcept no
 # ChassisVelocities
 
 cdef inline vec3_t chassis_discretize(double vx, double vy, double omega, double dt) noexcept nogil:
-    cdef double theta = omega * dt
-    return chassis_discretize_cs(vx, vy, dt, theta, cos(theta), sin(theta))
+    cdef double theta = omega * dt, c, s
+    sincos(theta, &s, &c)
+    return chassis_discretize_cs(vx, vy, dt, theta, c, s)
 
 cdef inline vec3_t chassis_discretize_cs(double vx, double vy, double dt, double theta,
                                          double ct, double st) noexcept nogil:
@@ -461,7 +467,9 @@ cdef inline void odometry_move_cs(pose2_t* p,                          # IN/OUT
 cdef inline void odometry_move(pose2_t* p,                             # IN/OUT
                                twist2_t* tw,                           # OUT
                                double dx, double dy, double dtheta) noexcept nogil:
-    odometry_move_cs(p, tw, dx, dy, dtheta, cos(dtheta), sin(dtheta), False)
+    cdef double c, s
+    sincos(dtheta, &s, &c)
+    odometry_move_cs(p, tw, dx, dy, dtheta, c, s, False)
 
 cdef inline rot2_t gyro_turn(rot2_t gyro, rot2_t* prev_gyro) noexcept nogil:   # IN/OUT
     # The heading change since the last reading, as a rotation (its angle is wrapped to

@@ -1,0 +1,130 @@
+/* Array forms of dkmath.h's sin/cos and atan2 for drivekin.batch, vectorised by the compiler
+ * from the scalar source: each loop runs the branch-free core on every element, then a
+ * second pass sends the rare |x| >= 2^20 (and non-finite) elements through the scalar
+ * huge-argument path, so every element gets exactly what dk_sincos / dk_atan2 give it,
+ * whatever the vector width and wherever it sits in the array.
+ *
+ * x86_64: the baseline (SSE2, two doubles a vector) is built as is, and the same loops are
+ * built a second time for AVX2 (four); the first call picks AVX2 where the CPU has it.
+ * Neither uses FMA (not enabled, and -ffp-contract=off), so both give the same bits.
+ * aarch64: NEON is baseline, so there is one build.
+ *
+ * The outputs must not overlap the inputs (restrict).
+ */
+#ifndef DRIVEKIN_TRIG_ARRAYS_H
+#define DRIVEKIN_TRIG_ARRAYS_H
+
+#include <stddef.h>
+#include "dkmath.h"
+
+#define DK_SINCOS_LOOP(n, x, s, c)                                                     \
+    do {                                                                               \
+        ptrdiff_t i_;                                                                  \
+        for (i_ = 0; i_ < (n); i_++)                                                   \
+            dk_sincos_core((x)[i_], &(s)[i_], &(c)[i_]);                               \
+        for (i_ = 0; i_ < (n); i_++)                                                   \
+            if (!dk_trig_common((x)[i_]))                                              \
+                dk_sincos_huge((x)[i_], &(s)[i_], &(c)[i_]);                           \
+    } while (0)
+
+#define DK_ATAN2_LOOP(n, y, x, r)                                                      \
+    do {                                                                               \
+        ptrdiff_t i_;                                                                  \
+        for (i_ = 0; i_ < (n); i_++)                                                   \
+            (r)[i_] = dk_atan2_core((y)[i_], (x)[i_]);                                      \
+    } while (0)
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__AVX2__)
+#define DK_DISPATCH 1
+
+__attribute__((target("avx2"))) static void
+dk_sincos_n_avx2(ptrdiff_t n, const double* __restrict x, double* __restrict s,
+                 double* __restrict c) {
+    DK_SINCOS_LOOP(n, x, s, c);
+}
+
+__attribute__((target("avx2"))) static void
+dk_atan2_n_avx2(ptrdiff_t n, const double* __restrict y, const double* __restrict x,
+                double* __restrict r) {
+    DK_ATAN2_LOOP(n, y, x, r);
+}
+
+static void dk_sincos_n_base(ptrdiff_t n, const double* __restrict x, double* __restrict s,
+                             double* __restrict c) {
+    DK_SINCOS_LOOP(n, x, s, c);
+}
+
+static void dk_atan2_n_base(ptrdiff_t n, const double* __restrict y,
+                            const double* __restrict x, double* __restrict r) {
+    DK_ATAN2_LOOP(n, y, x, r);
+}
+
+/* 1: AVX2 in use, 0: the SSE2 baseline. Set once at import (dk_trig_init), changed only by
+ * the test hook dk_trig_use. */
+static int dk_avx2 = 0;
+
+static int dk_trig_init(void) {
+    __builtin_cpu_init();
+    dk_avx2 = __builtin_cpu_supports("avx2") ? 1 : 0;
+    return 0;
+}
+
+static const char* dk_trig_isa(void) { return dk_avx2 ? "AVX2" : "SSE2"; }
+
+/* Select an instruction set by name (for tests): 0 if done, -1 if unknown or unsupported. */
+static int dk_trig_use(const char* name) {
+    if (strcmp(name, "SSE2") == 0) {
+        dk_avx2 = 0;
+        return 0;
+    }
+    if (strcmp(name, "AVX2") == 0 && __builtin_cpu_supports("avx2")) {
+        dk_avx2 = 1;
+        return 0;
+    }
+    return -1;
+}
+
+static inline void dk_sincos_n(ptrdiff_t n, const double* x, double* s, double* c) {
+    if (dk_avx2)
+        dk_sincos_n_avx2(n, x, s, c);
+    else
+        dk_sincos_n_base(n, x, s, c);
+}
+
+static inline void dk_atan2_n(ptrdiff_t n, const double* y, const double* x, double* r) {
+    if (dk_avx2)
+        dk_atan2_n_avx2(n, y, x, r);
+    else
+        dk_atan2_n_base(n, y, x, r);
+}
+
+#else /* one build: what the compiler targets */
+
+static int dk_trig_init(void) { return 0; }
+
+static const char* dk_trig_isa(void) {
+#if defined(__AVX2__)
+    return "AVX2";
+#elif defined(__x86_64__) || defined(__SSE2__)
+    return "SSE2";
+#elif defined(__ARM_NEON) || defined(__aarch64__)
+    return "NEON";
+#else
+    return "scalar";
+#endif
+}
+
+static int dk_trig_use(const char* name) { return strcmp(name, dk_trig_isa()) == 0 ? 0 : -1; }
+
+static void dk_sincos_n(ptrdiff_t n, const double* __restrict x, double* __restrict s,
+                        double* __restrict c) {
+    DK_SINCOS_LOOP(n, x, s, c);
+}
+
+static void dk_atan2_n(ptrdiff_t n, const double* __restrict y, const double* __restrict x,
+                       double* __restrict r) {
+    DK_ATAN2_LOOP(n, y, x, r);
+}
+
+#endif
+#endif

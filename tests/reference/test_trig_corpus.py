@@ -1,0 +1,93 @@
+"""The same bits on every platform: a fixed corpus of drivekin results, hashed.
+
+The corpus is drivekin's own sin/cos/atan2 on a fixed set of arguments (seeded numpy
+draws, whose doubles are the same on every platform, plus the special values), then the
+batch functions built on them (swerve inverse and forward kinematics, discretize, exp,
+log, a swerve odometry replay) and per-call results (Rotation2d from an angle, Pose2d.exp,
+SwerveDriveKinematics). CI runs this file natively (x86_64, every CPython and both
+instruction sets) and on the aarch64 CPython 3.14 wheel under qemu-user
+(scripts/wheel_tests.sh); every run must produce EXPECTED. A change that moves any bit
+changes the hash: if it is intended, run this file with DRIVEKIN_PRINT_CORPUS=1 and put
+the printed hash here, saying why in the commit.
+"""
+from __future__ import annotations
+
+import hashlib
+import math
+import os
+
+import numpy as np
+import pytest
+
+from drivekin import (ChassisVelocities, Pose2d, Rotation2d, SwerveDriveKinematics,
+                      SwerveDriveOdometry, SwerveModulePosition, Translation2d, Twist2d)
+import drivekin.batch as batch
+
+EXPECTED = "b5141c40bb954b7d0bd6d4d356a6da2532e503422f51d7d9b6f4f49c4af62235"
+
+
+def corpus() -> bytes:
+    rng = np.random.default_rng(27)
+    parts = []
+    x = np.concatenate([rng.uniform(-10, 10, 20000), rng.uniform(-2.0 ** 21, 2.0 ** 21, 5000),
+                        np.exp(rng.uniform(0, 709, 5000)), np.exp(rng.uniform(-745, 0, 2000)),
+                        np.arange(-200, 200) * (np.pi / 2),
+                        [0.0, -0.0, math.inf, -math.inf, math.nan, 1.7976931348623157e308]])
+    x = np.concatenate([x, -x])
+    parts += list(batch._trig("sincos", x))
+    y = rng.standard_normal(20000) * np.exp(rng.uniform(-20, 20, 20000))
+    z = rng.standard_normal(20000) * np.exp(rng.uniform(-20, 20, 20000))
+    parts.append(batch._trig("atan2", y, z))
+    special = np.array([0.0, -0.0, math.inf, -math.inf, 1.0, -1.0, 1e-310])
+    parts.append(batch._trig("atan2", np.repeat(special, len(special)),
+                             np.tile(special, len(special))))
+
+    k = SwerveDriveKinematics(Translation2d(0.3, 0.3), Translation2d(0.3, -0.3),
+                              Translation2d(-0.3, 0.3), Translation2d(-0.3, -0.3))
+    v = np.column_stack([rng.uniform(-3, 3, 5000), rng.uniform(-3, 3, 5000),
+                         rng.uniform(-4, 4, 5000)])
+    modules = batch.toSwerveModuleVelocities(k, v)
+    parts += [modules, batch.toChassisVelocities(k, modules), batch.discretize(v, 0.02)]
+    parts.append(batch.log(batch.exp(v * 0.7)))
+    n = 5000
+    dist = np.cumsum(rng.uniform(-0.02, 0.06, (n, 4)), axis=0)
+    positions = np.stack([dist, rng.uniform(-4, 4, (n, 4))], axis=-1)
+    gyro = np.cumsum(rng.uniform(-0.2, 0.25, n))
+    odo = SwerveDriveOdometry(k, Rotation2d(0.0), [SwerveModulePosition()] * 4,
+                              Pose2d(1.0, -2.0, Rotation2d(0.3)))
+    parts.append(batch.replay(odo, gyro, positions))
+
+    per_call = []
+    for t in rng.uniform(-50, 50, 2000):
+        r = Rotation2d(float(t))
+        p = Pose2d(1.0, 2.0, r).exp(Twist2d(0.1, -0.2, float(t) / 10))
+        per_call += [r.getCos(), r.getSin(), r.getRadians(), p.x, p.y,
+                     p.getRotation().getRadians()]
+    for vx, vy, w in v[:500]:
+        for m in k.toSwerveModuleVelocities(ChassisVelocities(vx, vy, w)):
+            per_call += [m.velocity, m.angle.getRadians()]
+    parts.append(np.array(per_call))
+    return b"".join(np.ascontiguousarray(p, dtype="<f8").tobytes() for p in parts)
+
+
+def test_corpus_hash_is_the_same_everywhere():
+    digest = hashlib.sha256(corpus()).hexdigest()
+    if os.environ.get("DRIVEKIN_PRINT_CORPUS") == "1":
+        print(f"\ncorpus sha256 on {batch.SIMD}: {digest}")
+    assert digest == EXPECTED, (f"the corpus hashes to {digest} on {batch.SIMD}, not "
+                                "EXPECTED: some result's bits differ from every other build's")
+
+
+def test_corpus_hash_does_not_depend_on_the_instruction_set():
+    before = batch.SIMD
+    digests = {}
+    try:
+        for isa in ("SSE2", "AVX2", "NEON", "scalar"):
+            try:
+                batch._use_isa(isa)
+            except ValueError:
+                continue
+            digests[isa] = hashlib.sha256(corpus()).hexdigest()
+    finally:
+        batch._use_isa(before)
+    assert digests and len(set(digests.values())) == 1, digests
