@@ -36,7 +36,7 @@ every supported platform (docs/DESIGN.md, "One trig").
 """
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from libc.math cimport fabs
-from drivekin._core.dkmath cimport atan2, sincos
+from drivekin._core.dkmath cimport atan2, atan2_n, sincos, sincos_n, trig_isa, trig_use
 from libc.string cimport memcpy, memset
 cimport numpy as cnp
 
@@ -59,17 +59,7 @@ from drivekin._core.errors import type_name
 
 cnp.import_array()
 
-cdef extern from "_core/trig_arrays.h" nogil:
-    # Array sin/cos and atan2, vectorised (see the header). Every transcendental call of
-    # this module goes through these two.
-    void dk_sincos_n(Py_ssize_t n, const double* x, double* s, double* c)
-    void dk_atan2_n(Py_ssize_t n, const double* y, const double* x, double* r)
-    int dk_trig_init()
-    const char* dk_trig_isa()
-    int dk_trig_use(const char* name)
-
-dk_trig_init()
-SIMD = dk_trig_isa().decode()
+SIMD = trig_isa().decode()
 
 
 def _use_isa(str name):
@@ -77,9 +67,9 @@ def _use_isa(str name):
     returns the one in use before. ValueError if this build or CPU cannot."""
     global SIMD
     cdef str before = SIMD
-    if dk_trig_use(name.encode()) != 0:
+    if trig_use(name.encode()) != 0:
         raise ValueError(f"instruction set {name!r} is not available here (in use: {before})")
-    SIMD = dk_trig_isa().decode()
+    SIMD = trig_isa().decode()
     return before
 
 
@@ -99,7 +89,7 @@ def _trig(str fn, a, b=None, bint scalar=False):
                 for i in range(n):
                     sincos(x.data[i], &o1[i], &o2[i])
             else:
-                dk_sincos_n(n, x.data, o1, o2)
+                sincos_n(n, x.data, o1, o2)
         return r1, r2
     if fn == "atan2" and y is not None and y.n == n:
         with nogil:
@@ -107,7 +97,7 @@ def _trig(str fn, a, b=None, bint scalar=False):
                 for i in range(n):
                     o1[i] = atan2(x.data[i], y.data[i])
             else:
-                dk_atan2_n(n, x.data, y.data, o1)
+                atan2_n(n, x.data, y.data, o1)
         return r1
     raise ValueError("_trig takes ('sincos', x) or ('atan2', y, x) with arrays of one length")
 
@@ -245,7 +235,7 @@ cdef inline void store_poses(Py_ssize_t k, double* o, const double* px, const do
                              const double* pc, const double* ps, double* heading) noexcept nogil:
     # k poses as [x, y, atan2(s, c)] rows.
     cdef Py_ssize_t i
-    dk_atan2_n(k, ps, pc, heading)
+    atan2_n(k, ps, pc, heading)
     for i in range(k):
         o[3 * i] = px[i]
         o[3 * i + 1] = py[i]
@@ -305,7 +295,7 @@ cdef object _inverse(Drivetrain k, object chassis, object omega, object centerOf
                 i0 = ch * CHUNK
                 kk = chunk_len(i0, count)
                 k._inverse_many(kk, v.data + 3 * i0, w.data + i0, accel, buf, mag, oc, os)
-                dk_atan2_n(kk * n, os, oc, ang)
+                atan2_n(kk * n, os, oc, ang)
                 y = o.data + 2 * n * i0
                 for j in range(kk * n):
                     y[2 * j] = mag[j]
@@ -391,7 +381,7 @@ cdef object _forward(Drivetrain k, object wheels, object gyro_arg, object out,
                 for j in range(kk * n):
                     mag[j] = x[2 * j]
                     ang[j] = x[2 * j + 1]
-                dk_sincos_n(kk * n, ang, s, c)
+                sincos_n(kk * n, ang, s, c)
                 k._forward_many(kk, mag, c, s, NULL, accel, buf, o.data + 3 * i0)
     PyMem_Free(buf)
     return o.array
@@ -522,7 +512,7 @@ def discretize(chassisVelocities, dt, out=None):
             kk = chunk_len(i0, count)
             for i in range(kk):
                 th[i] = v.data[3 * (i0 + i) + 2] * t.data[i0 + i]
-            dk_sincos_n(kk, th, s, c)
+            sincos_n(kk, th, s, c)
             for i in range(kk):
                 x = v.data + 3 * (i0 + i)
                 d = chassis_discretize_cs(x[0], x[1], t.data[i0 + i], th[i], c[i], s[i])
@@ -626,7 +616,7 @@ cdef object _rotate(object vectors, object robotAngles, object out, bint to_robo
         for ch in range((count + CHUNK - 1) // CHUNK):
             i0 = ch * CHUNK
             kk = chunk_len(i0, count)
-            dk_sincos_n(kk, a.data + i0, s, c)
+            sincos_n(kk, a.data + i0, s, c)
             for i in range(kk):
                 x = v.data + 3 * (i0 + i)
                 r = rot_cs(c[i], s[i])
@@ -673,7 +663,7 @@ def exp(twists, out=None):
             kk = chunk_len(i0, count)
             for i in range(kk):
                 th[i] = v.data[3 * (i0 + i) + 2]
-            dk_sincos_n(kk, th, s, c)
+            sincos_n(kk, th, s, c)
             for i in range(kk):
                 x = v.data + 3 * (i0 + i)
                 keep_pose(i, px, py, pc, ps, twist_exp_cs(x[0], x[1], x[2], c[i], s[i]))
@@ -698,9 +688,9 @@ def log(transforms, out=None):
             kk = chunk_len(i0, count)
             for i in range(kk):
                 th[i] = v.data[3 * (i0 + i) + 2]
-            dk_sincos_n(kk, th, s, c)
+            sincos_n(kk, th, s, c)
             # The wrapped angle: Transform2d.log takes atan2 of the rotation.
-            dk_atan2_n(kk, s, c, th)
+            atan2_n(kk, s, c, th)
             for i in range(kk):
                 x = v.data + 3 * (i0 + i)
                 tw = transform_log_angle(pose(vec(x[0], x[1]), rot_cs(c[i], s[i])), th[i])
@@ -763,14 +753,14 @@ cdef inline void gyro_turns(Py_ssize_t k, const double* g, rot2_t* prev,   # IN/
     cdef rot2_t d, before
     gc[0] = prev.c
     gs[0] = prev.s
-    dk_sincos_n(k, g, gs + 1, gc + 1)
+    sincos_n(k, g, gs + 1, gc + 1)
     for i in range(k):
         before = rot_cs(gc[i], gs[i])
         d = gyro_turn(rot_cs(gc[i + 1], gs[i + 1]), &before)
         tc[i] = d.c
         ts[i] = d.s
     prev[0] = rot_cs(gc[k], gs[k])
-    dk_atan2_n(k, ts, tc, dth)
+    atan2_n(k, ts, tc, dth)
 
 
 cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
@@ -816,12 +806,12 @@ cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
                     for i in range(kk):
                         md[kk * j + i] = x[2 * (n * i + j)]
                         ang[kk * j + i] = x[2 * (n * i + j) + 1]
-                dk_sincos_n(kk * n, ang, ms, mc)
+                sincos_n(kk * n, ang, ms, mc)
                 odo._motions(kk, md, mc, ms, dth, mx, row)
             else:
                 odo._motions(kk, p.data + n * i0, NULL, NULL, dth, mx, row)
             if not gyro:
-                dk_sincos_n(kk, dth, ts, tc)
+                sincos_n(kk, dth, ts, tc)
             # The pose changes (vectorised), then the compositions, the only sequential part.
             for i in range(kk):
                 step = odometry_motion(mx[i], my[i], dth[i], tc[i], ts[i], gyro)

@@ -163,7 +163,7 @@ cdef inline pose2_t interpolate_samples(const sample_t* a, const sample_t* b,
         return pose_interpolate(a.p, b.p, f)
     sincos(theta, &s, &c)
     step = twist_exp_cs(b.tw.dx * f, b.tw.dy * f, theta, c, s)
-    # libm's (cos, sin) is unit to an ulp and the composition below normalises its
+    # The (cos, sin) pair is unit to an ulp and the composition below normalises its
     # rotation product anyway: a normalisation less on the sampling path.
     step.r = rot_cs(c, s)
     return pose_transform_by(a.p, step)

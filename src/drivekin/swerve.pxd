@@ -55,6 +55,7 @@ cdef class SwerveDriveKinematics(Drivetrain):
     cdef double* s0              # scratch, n
     cdef double* s1              # scratch, n
     cdef double* s2              # scratch, n
+    cdef double* s3              # scratch, n
     cdef vec2_t cor              # centre of rotation the rx/ry rows were built for, m
     cdef tuple modules           # the Translation2d objects, constructor order
 

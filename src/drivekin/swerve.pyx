@@ -15,7 +15,7 @@ from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, fabs, isfinite, signbit
-from drivekin._core.dkmath cimport atan2, sincos
+from drivekin._core.dkmath cimport atan2_n, sincos_n
 from libc.string cimport memcpy
 
 import numpy as np
@@ -333,16 +333,24 @@ cdef object out_modules(object out, Py_ssize_t n, type cls, str what, double** d
     return fast
 
 
-cdef void store_modules(object fast, double* d, Py_ssize_t n, const double* m,
-                        const double* c, const double* s) noexcept:
-    """Copy n (scalar, cos, sin) into what out_modules/new_modules returned."""
+cdef void store_rows(double* d, Py_ssize_t n, const double* m, const double* c,
+                    const double* s, double* a) noexcept nogil:
+    """Copy n (scalar, cos, sin) into the [scalar, angle] rows of an (n, 2) array, the
+    angles a vector at a time (the same bits as one atan2 per module) through ``a``
+    (scratch for n)."""
+    cdef Py_ssize_t i
+    atan2_n(n, s, c, a)
+    for i in range(n):
+        d[2 * i] = m[i]
+        d[2 * i + 1] = a[i]
+
+
+cdef void store_modules(object fast, Py_ssize_t n, const double* m, const double* c,
+                        const double* s) noexcept:
+    """Copy n (scalar, cos, sin) into the module objects out_modules/new_modules
+    returned (an array's rows are store_rows')."""
     cdef Py_ssize_t i
     cdef PyObject** items
-    if d != NULL:
-        for i in range(n):
-            d[2 * i] = m[i]
-            d[2 * i + 1] = atan2(s[i], c[i])
-        return
     items = PySequence_Fast_ITEMS(fast)
     for i in range(n):
         (<_ModuleVector>items[i]).m = m[i]
@@ -414,8 +422,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
         # Reading a generic iterable above ran Python code, which may have initialised
         # this object meanwhile; committing now would leak and replace that state.
         self._refuse_reinit()
-        # 9 arrays of n (positions, CoR rows, headings, scratch) + f1 (3 x 2n) + f2 (4 x 2n)
-        cdef double* buf = <double*>PyMem_Malloc(sizeof(double) * (9 * n + 6 * n + 8 * n))
+        # 10 arrays of n (positions, CoR rows, headings, scratch) + f1 (3 x 2n) + f2 (4 x 2n)
+        cdef double* buf = <double*>PyMem_Malloc(sizeof(double) * (10 * n + 6 * n + 8 * n))
         if buf == NULL:
             raise MemoryError()
         self.n = n
@@ -432,7 +440,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
         self.s0 = self.hs + n
         self.s1 = self.s0 + n
         self.s2 = self.s1 + n
-        self.f1 = self.s2 + n            # 3 x 2n
+        self.s3 = self.s2 + n
+        self.f1 = self.s3 + n            # 3 x 2n
         self.f2 = self.f1 + 6 * n        # 4 x 2n
         for i in range(n):
             self.mx[i] = xs[i]
@@ -586,7 +595,7 @@ cdef class SwerveDriveKinematics(Drivetrain):
         self._ready()
         cdef object t = new_modules(self.n, SwerveModuleVelocity)
         self._ik(<ChassisVelocities>chassisVelocities, <Translation2d>centerOfRotation)
-        store_modules(t, NULL, self.n, self.s0, self.s1, self.s2)
+        store_modules(t, self.n, self.s0, self.s1, self.s2)
         return t
 
     def toWheelVelocities(self, chassisVelocities: ChassisVelocities):
@@ -595,7 +604,7 @@ cdef class SwerveDriveKinematics(Drivetrain):
         self._ready()
         cdef object t = new_modules(self.n, SwerveModuleVelocity)
         self._ik(<ChassisVelocities>chassisVelocities, ORIGIN)
-        store_modules(t, NULL, self.n, self.s0, self.s1, self.s2)
+        store_modules(t, self.n, self.s0, self.s1, self.s2)
         return t
 
     def toSwerveModuleVelocitiesInto(self, chassisVelocities: ChassisVelocities, out,
@@ -611,7 +620,10 @@ cdef class SwerveDriveKinematics(Drivetrain):
         self._ready()
         cdef object fast = out_modules(out, self.n, SwerveModuleVelocity, "out", &d)
         self._ik(<ChassisVelocities>chassisVelocities, <Translation2d>centerOfRotation)
-        store_modules(fast, d, self.n, self.s0, self.s1, self.s2)
+        if d == NULL:
+            store_modules(fast, self.n, self.s0, self.s1, self.s2)
+        else:
+            store_rows(d, self.n, self.s0, self.s1, self.s2, self.s3)
 
     cdef int _read(self, object states, type cls, str what) except -1:
         """Load N (scalar, cos, sin) from objects or an (N, 2) array into the scratch."""
@@ -625,7 +637,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
             d = float64_data(states, n, 2, False, what)
             for i in range(n):
                 self.s0[i] = d[2 * i]
-                sincos(d[2 * i + 1], &self.s2[i], &self.s1[i])
+                self.s3[i] = d[2 * i + 1]
+            sincos_n(n, self.s3, self.s2, self.s1)
             return 0
         fast = as_fast(states, what)
         if PySequence_Fast_GET_SIZE(fast) != n:
@@ -804,7 +817,7 @@ cdef class SwerveDriveKinematics(Drivetrain):
             self._set_cor((<Translation2d>centerOfRotation).v)
         swerve_ik_accel(self.n, self.rx, self.ry, ca.v.x, ca.v.y, angularVelocity, ca.v.z,
                         self.s0, self.s1, self.s2)
-        store_modules(t, NULL, self.n, self.s0, self.s1, self.s2)
+        store_modules(t, self.n, self.s0, self.s1, self.s2)
         return t
 
     def toWheelAccelerations(self, chassisAccelerations: ChassisAccelerations):

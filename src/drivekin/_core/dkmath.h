@@ -39,6 +39,9 @@
 #if defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0
 #error "drivekin needs double arithmetic without excess precision (SSE2 on 32-bit x86, not x87)"
 #endif
+#ifdef __FAST_MATH__
+#error "drivekin's trig needs IEEE arithmetic: do not build it with -ffast-math"
+#endif
 #ifdef __clang__
 #pragma STDC FP_CONTRACT OFF
 #endif
@@ -126,6 +129,15 @@ static inline double dk_two_prod(double a, double b, double* e) {
     return p;
 }
 
+/* a * a = p + *e exactly (dk_two_prod for a square: one split). */
+static inline double dk_two_sqr(double a, double* e) {
+    const double split = 134217729.0;
+    double p = a * a;
+    double t = split * a, ah = t - (t - a), al = a - ah;
+    *e = ((ah * ah - p) + 2.0 * (ah * al)) + al * al;
+    return p;
+}
+
 /* ---------------------------------------------------------------------------------------
  * sin and cos */
 
@@ -145,31 +157,44 @@ static inline uint64_t dk_reduce(double x, double* rh, double* rl) {
     return dk_bits(t);
 }
 
-/* sin(rh + rl), |rh| <= pi/4 (a little more after rounding), |rl| <= ulp(rh). */
-static inline double dk_sin_kernel(double rh, double rl) {
-    double z = rh * rh;
+/* sin(rh + rl), |rh| <= pi/4 (a little more after rounding), |rl| <= ulp(rh): rh plus
+ * dk_sin_odd(rh) plus rl's share. */
+static inline double dk_sin_odd(double rh, double z) { /* rh^3 P(rh^2), z = rh^2 */
     double p = DK_SIN5;
     p = p * z + DK_SIN4;
     p = p * z + DK_SIN3;
     p = p * z + DK_SIN2;
     p = p * z + DK_SIN1;
     p = p * z + DK_SIN0;
-    return rh + ((rh * z) * p + rl * (1.0 - 0.5 * z));
+    return (rh * z) * p;
+}
+
+static inline double dk_sin_kernel(double rh, double rl) {
+    double z = rh * rh;
+    return rh + (dk_sin_odd(rh, z) + rl * (1.0 - 0.5 * z));
 }
 
 /* cos(rh + rl). 1 - rh^2/2 is the part that decides the rounding: rh^2 is taken exactly
  * (zh + zl), 1 - zh/2 is split into its rounded value w and that rounding's error ((1 - w)
  * and its difference from zh/2 are exact), so only the final addition rounds at full
  * weight; rounding rh^2 instead costs up to a quarter of an ulp near pi/4. */
-static inline double dk_cos_kernel(double rh, double rl) {
-    double zl, zh = dk_two_prod(rh, rh, &zl), hz = 0.5 * zh, w = 1.0 - hz, z = zh;
+static inline double dk_cos_even(double rh, double* w, double* lo) {
+    /* cos rh = w + lo + (what this returns): w = 1 - zh/2 rounded, lo its error. */
+    double zl, zh = dk_two_sqr(rh, &zl), hz = 0.5 * zh, z = zh;
     double q = DK_COS5;
     q = q * z + DK_COS4;
     q = q * z + DK_COS3;
     q = q * z + DK_COS2;
     q = q * z + DK_COS1;
     q = q * z + DK_COS0;
-    return w + ((((1.0 - w) - hz) - 0.5 * zl) + ((z * z) * q - rh * rl));
+    *w = 1.0 - hz;
+    *lo = ((1.0 - *w) - hz) - 0.5 * zl;
+    return (z * z) * q;
+}
+
+static inline double dk_cos_kernel(double rh, double rl) {
+    double w, lo, q = dk_cos_even(rh, &w, &lo);
+    return w + (lo + (q - rh * rl));
 }
 
 /* sin and cos of x = k pi/2 + r from sin r and cos r, with k mod 4 in q's low bits:
@@ -296,20 +321,51 @@ static inline int dk_trig_common(double x) {
     return fabs(x) < 0x1p20;
 }
 
-/* The scalar forms are calls, as libm's were: inlined, the branch-free code would be
- * computed speculatively on both sides of a selection by the compiler (seen: an atan2
- * paid for by every sample of batch.discretize, which needs it only past +-3 rad). */
+/* The scalar forms. Past |x| = 0.78 a call, as libm's was: inlined, the branch-free body
+ * would be computed speculatively on both sides of a selection by the compiler (seen: an
+ * atan2 paid for by every sample of batch.discretize, which needs it only past +-3 rad).
+ * Below, the shortcuts give dk_sincos_core's bits while skipping what is known there. */
 #if defined(__GNUC__)
 #define DK_CALL __attribute__((noinline, unused))
 #else
 #define DK_CALL
 #endif
 
-DK_CALL static void dk_sincos(double x, double* s, double* c) {
-    if (dk_trig_common(x))
-        dk_sincos_core(x, s, c);
-    else
+DK_CALL static void dk_sincos_far(double x, double* s, double* c) {
+    /* dk_sincos_core's arithmetic, with the quadrant taken by a branch (the masks swap and
+     * negate, as these assignments do) and without the tiny-argument selection. */
+    double rh, rl, sr, cr;
+    uint64_t q;
+    if (!dk_trig_common(x)) {
         dk_sincos_huge(x, s, c);
+        return;
+    }
+    q = dk_reduce(x, &rh, &rl) & 3;
+    sr = dk_sin_kernel(rh, rl);
+    cr = dk_cos_kernel(rh, rl);
+    switch (q) {
+    case 0: *s = sr; *c = cr; break;
+    case 1: *s = cr; *c = -sr; break;
+    case 2: *s = -sr; *c = -cr; break;
+    default: *s = -cr; *c = sr; break;
+    }
+}
+
+static inline void dk_sincos(double x, double* s, double* c) {
+    double w, lo, q;
+    if (fabs(x) < 0x1p-27) {
+        /* x, and 1 - x^2/2 with x^2/2 below half an ulp of 1. */
+        *s = x;
+        *c = 1.0;
+    } else if (fabs(x) < 0.78) {
+        /* k = 0 (|x 2/pi| < 0.4966): the reduction gives rh = x, rl = +0, and the quadrant
+         * masks are identities; rl's terms then add a zero to nonzero sums. */
+        *s = x + dk_sin_odd(x, x * x);
+        q = dk_cos_even(x, &w, &lo);
+        *c = w + (lo + q);
+    } else {
+        dk_sincos_far(x, s, c);
+    }
 }
 
 static inline double dk_sin(double x) {
@@ -327,33 +383,15 @@ static inline double dk_cos(double x) {
 /* ---------------------------------------------------------------------------------------
  * atan2 */
 
-static inline double dk_atan2_core(double y, double x) {
-    /* Every condition is a double comparison feeding a selection (no int flags), which
-     * is what lets gcc vectorise loops over this function. */
-    double ax = fabs(x), ay = fabs(y), xs = copysign(1.0, x);
-    double num = ay > ax ? ax : ay, den = ay > ax ? ay : ax; /* num <= den */
-    double q0, sc, ns, ds, c, ahi, alo, bhi, blo, uh, ul, p, pe, z, a, vl, sgn, m, e, s, r;
-    /* inf/inf is the diagonal; a finite over an infinite (or a zero over a zero) is 0. */
-    double ninf = num == INFINITY ? 1.0 : 0.0;
-    num = den == INFINITY ? ninf : num;
-    den = den == INFINITY ? 1.0 : den;
-    den = den == 0.0 ? 1.0 : den;
-    q0 = num / den;
-    /* The exact products below need moderate magnitudes; a power of two keeps the ratio. */
-    sc = den > 0x1p500 ? 0x1p-600 : (den < 0x1p-500 ? 0x1p600 : 1.0);
-    ns = num * sc;
-    ds = den * sc;
-    /* u = (num - c den) / (den + c num), c = 1 above tan(pi/8) (atan t = pi/4 + atan u),
-     * as uh + ul: numerator and denominator as exact two-sums, then the quotient's error
-     * from the exact remainder. */
-    c = q0 > DK_TAN_PI_8 ? 1.0 : 0.0;
-    ahi = dk_two_sum(ns, -(c * ds), &alo);
-    bhi = dk_two_sum(ds, c * ns, &blo);
-    uh = ahi / bhi;
-    p = dk_two_prod(uh, bhi, &pe);
-    ul = ((((ahi - p) - pe) + alo) - uh * blo) / bhi;
-    z = uh * uh;
-    a = DK_ATAN10;
+/* The rest of atan2 once u = uh + ul is known (ahi, alo, bhi, blo: u's numerator and
+ * denominator as two-sums) and its octant (result = m pi/4 + sgn atan u, m in 0..4),
+ * shared by the vector and scalar forms so both perform these operations in this order. */
+static inline double dk_atan2_finish(double y, double sgn, double m,
+                                     double ahi, double alo, double bhi, double blo,
+                                     double uh) {
+    double pe, p = dk_two_prod(uh, bhi, &pe), e, s, r;
+    double ul = ((((ahi - p) - pe) + alo) - uh * blo) / bhi;
+    double z = uh * uh, a = DK_ATAN10;
     a = a * z + DK_ATAN9;
     a = a * z + DK_ATAN8;
     a = a * z + DK_ATAN7;
@@ -364,20 +402,69 @@ static inline double dk_atan2_core(double y, double x) {
     a = a * z + DK_ATAN2;
     a = a * z + DK_ATAN1;
     a = a * z + DK_ATAN0;
-    vl = (uh * z) * a + ul * (1.0 - z); /* atan u = uh + vl; d atan/du = 1/(1 + u^2) */
-    /* The octant: result = m pi/4 + sgn atan u, m in 0..4. */
-    sgn = ay > ax ? -xs : xs;
-    m = (ay > ax ? 2.0 : 2.0 - 2.0 * xs) + sgn * c;
+    double vl = (uh * z) * a + ul * (1.0 - z); /* atan u = uh + vl; d atan/du = 1/(1 + u^2) */
     s = dk_two_sum(m * DK_PIO4_A, sgn * uh, &e);
     r = s + (e + (sgn * vl + m * DK_PIO4_B));
     /* Below 2^-30, atan t rounds to t, and the exact products could underflow. */
-    r = m + (q0 < 0x1p-30 ? 0.0 : 1.0) == 0.0 ? q0 : r;
-    r = copysign(r, y);
+    r = m + (uh < 0x1p-30 ? 0.0 : 1.0) == 0.0 ? uh : r;
+    return copysign(r, y);
+}
+
+static inline double dk_atan2_core(double y, double x) {
+    /* Every condition is a double comparison feeding a selection (no int flags), which
+     * is what lets gcc vectorise loops over this function. */
+    double ax = fabs(x), ay = fabs(y), xs = copysign(1.0, x);
+    double num = ay > ax ? ax : ay, den = ay > ax ? ay : ax; /* num <= den */
+    double sc, ns, ds, c, ahi, alo, bhi, blo, uh, sgn, m, r;
+    /* inf/inf is the diagonal; a finite over an infinite (or a zero over a zero) is 0. */
+    double ninf = num == INFINITY ? 1.0 : 0.0;
+    num = den == INFINITY ? ninf : num;
+    den = den == INFINITY ? 1.0 : den;
+    den = den == 0.0 ? 1.0 : den;
+    /* The exact products below need moderate magnitudes; a power of two keeps the ratio. */
+    sc = den > 0x1p500 ? 0x1p-600 : (den < 0x1p-500 ? 0x1p600 : 1.0);
+    ns = num * sc;
+    ds = den * sc;
+    /* u = (num - c den) / (den + c num), c = 1 above tan(pi/8) (atan t = pi/4 + atan u),
+     * as uh + ul: numerator and denominator as exact two-sums, the quotient's error from
+     * the exact remainder. For c = 0 the quotient is taken unscaled, so it is num/den
+     * correctly rounded even where ns underflowed (then it is also the result). */
+    c = ns > DK_TAN_PI_8 * ds ? 1.0 : 0.0;
+    ahi = dk_two_sum(ns, -(c * ds), &alo);
+    bhi = dk_two_sum(ds, c * ns, &blo);
+    uh = (c == 0.0 ? num : ahi) / (c == 0.0 ? den : bhi);
+    sgn = ay > ax ? -xs : xs;
+    m = (ay > ax ? 2.0 : 2.0 - 2.0 * xs) + sgn * c;
+    r = dk_atan2_finish(y, sgn, m, ahi, alo, bhi, blo, uh);
     /* NaN in, that NaN out (y's if both are): the same bits on every target. */
     r = x != x ? x : r;
     return y != y ? y : r;
 }
 
-DK_CALL static double dk_atan2(double y, double x) { return dk_atan2_core(y, x); }
+/* The scalar atan2 skips, for moderate finite arguments, what dk_atan2_core's selections
+ * would leave unchanged there: the special values (none), the scaling (by 1, exact),
+ * below tan(pi/8) the two-sums (whose sums are then ns and ds, and errors +0), and on an
+ * axis everything but the octant's multiple of pi/4. */
+DK_CALL static double dk_atan2(double y, double x) {
+    double ax = fabs(x), ay = fabs(y), xs, num, den, ahi, alo, bhi, blo, sgn, m;
+    int swap = ay > ax;
+    num = swap ? ax : ay;
+    den = swap ? ay : ax;
+    if (!(den >= 0x1p-500 && den <= 0x1p500 && num == num))
+        return dk_atan2_core(y, x);
+    /* The octant as the core computes it, less its "+ sgn c" (m is a small integer, so
+     * adding sgn * 0 changes nothing and adding sgn below is the same sum). */
+    xs = copysign(1.0, x);
+    sgn = swap ? -xs : xs;
+    m = swap ? 2.0 : 2.0 - 2.0 * xs;
+    if (num == 0.0) /* on an axis: uh = ul = vl = 0, so the sum is m pi/4, or +0 */
+        return copysign(m == 0.0 ? 0.0 : m * DK_PIO4_A + m * DK_PIO4_B, y);
+    if (num > DK_TAN_PI_8 * den) {
+        ahi = dk_two_sum(num, -den, &alo);
+        bhi = dk_two_sum(den, num, &blo);
+        return dk_atan2_finish(y, sgn, m + sgn, ahi, alo, bhi, blo, ahi / bhi);
+    }
+    return dk_atan2_finish(y, sgn, m, num, 0.0, den, 0.0, num / den);
+}
 
 #endif
