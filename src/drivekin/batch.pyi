@@ -54,8 +54,8 @@ from drivekin.setpoint import PathConstraints, SwerveSetpoint, SwerveSetpointGen
 _Array = npt.NDArray[np.float64]
 
 SIMD: str
-"""The instruction set the array sin/cos/atan2 run on: ``"AVX2"``, ``"SSE2"``, ``"NEON"``
-or ``"scalar"``. Results are the same bits on each."""
+"""The instruction set the array sin/cos/atan2 run on: ``"AVX-512"``, ``"AVX2"``,
+``"SSE2"``, ``"NEON"`` or ``"scalar"``. Results are the same bits on each."""
 
 __all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize", "exp", "generateSetpoints", "log", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
 

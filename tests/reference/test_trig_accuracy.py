@@ -11,7 +11,7 @@ split into a double and its rest, so an error is measured in ulps of the exact v
 The same functions run through drivekin.batch's vectorised loops and through the per-call
 scalar path; both are measured here and must agree bit for bit (on every instruction set
 this machine offers), and scripts/trig_coefficients.py must reproduce the header's
-constants. Under emulation (DRIVEKIN_EMULATED=1) the point counts are a fiftieth.
+constants. Under emulation (DRIVEKIN_EMULATED=1) the point counts are a two-hundredth.
 """
 from __future__ import annotations
 
@@ -28,7 +28,7 @@ import pytest
 mp = pytest.importorskip("mpmath")
 batch = pytest.importorskip("drivekin.batch")
 
-SCALE = 50 if os.environ.get("DRIVEKIN_EMULATED") == "1" else 1
+SCALE = 200 if os.environ.get("DRIVEKIN_EMULATED") == "1" else 1
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 PREC = 160
 BOUND = 1.0                 # ulps: the documented bound
@@ -52,6 +52,8 @@ def _exact(job):
 def exact(name, *args):
     """mpmath's values of name at args, computed on every core."""
     n = len(args[0])
+    if SCALE != 1:  # emulated: few points, and no process pool inside the root filesystem
+        return _exact((name, list(args)))
     workers = max(1, min(os.cpu_count() or 1, 8))
     step = -(-n // (4 * workers)) or 1
     jobs = [(name, [a[i:i + step] for a in args]) for i in range(0, n, step)]
@@ -204,7 +206,8 @@ def test_vector_and_scalar_paths_give_the_same_bits(sin_cos, atan2):
     x, s, c = sin_cos
     y, ax, r = atan2
     extra = np.array(SPECIAL)
-    isas = [batch.SIMD] + [i for i in ("SSE2", "AVX2", "NEON", "scalar") if i != batch.SIMD]
+    isas = [batch.SIMD] + [i for i in ("SSE2", "AVX2", "AVX-512", "NEON", "scalar")
+                           if i != batch.SIMD]
     before = batch.SIMD
     tried = []
     try:
@@ -236,7 +239,7 @@ def test_vector_and_scalar_paths_give_the_same_bits(sin_cos, atan2):
 
 
 def test_isa_names_what_runs():
-    assert batch.SIMD in ("AVX2", "SSE2", "NEON", "scalar")
+    assert batch.SIMD in ("AVX-512", "AVX2", "SSE2", "NEON", "scalar")
     with pytest.raises(ValueError, match="not available"):
         batch._use_isa("AVX-1024")
 
