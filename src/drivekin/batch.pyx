@@ -30,9 +30,10 @@ stays safe, but the interleaving is unspecified).
 Every sine, cosine and atan2 comes from drivekin's own functions (``_core/dkmath.h``,
 at most 1 ulp from the exact value), here vectorised by the compiler: ``SIMD`` names the
 instruction set in use, the best the CPU has, chosen at import: ``"AVX-512"`` or
-``"AVX2"`` (x86_64 CPUs that have them), ``"SSE2"`` (other x86_64), ``"NEON"`` (aarch64). The vector and scalar forms perform the
-same operations in the same order, so results are the same bits whichever is in use, on
-every supported platform (docs/DESIGN.md, "One trig").
+``"AVX2"`` (x86_64 CPUs that have them), ``"SSE2"`` (other x86_64), ``"NEON"``
+(aarch64). The vector and scalar forms perform the same operations in the same order, so
+results are the same bits whichever is in use, on every supported platform
+(docs/DESIGN.md, "One trig").
 """
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from libc.math cimport fabs

