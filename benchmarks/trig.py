@@ -37,11 +37,8 @@ def main() -> int:
     rows = []
     before = batch.SIMD
     try:
-        for isa in ("SSE2", "AVX2", "AVX-512", "NEON", "scalar"):
-            try:
-                batch._use_isa(isa)
-            except ValueError:
-                continue
+        for isa in batch._isas():
+            batch._use_isa(isa)
             rows.append((f"drivekin array, {isa}",
                          ns_per_value(lambda: batch._trig("sincos", x), n, number, repeats),
                          ns_per_value(lambda: batch._trig("atan2", y, x), n, number, repeats)))

@@ -74,6 +74,15 @@ def _use_isa(str name):
     return before
 
 
+def _isas():
+    """Test hook: the instruction sets :func:`_use_isa` accepts with this build and CPU."""
+    cdef str before = SIMD
+    found = tuple(n for n in ("SSE2", "AVX2", "AVX-512", "NEON", "scalar")
+                  if trig_use(n.encode()) == 0)
+    trig_use(before.encode())
+    return found
+
+
 def _trig(str fn, a, b=None, bint scalar=False):
     """Test hook: ``fn`` ("sincos" or "atan2") of float64 arrays through the array path
     (or, with ``scalar``, the per-call path, one element at a time); sincos returns
