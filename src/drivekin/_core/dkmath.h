@@ -26,8 +26,9 @@
  * docs/DESIGN.md gives the figures). sin(+-0) = +-0, NaN and infinities give NaN as in
  * libm; atan2 follows C99 Annex F for signed zeros, infinities and NaN.
  *
- * The dk_*_core functions are branch-free (selections only), so loops over them vectorise;
- * dk_sin, dk_cos and dk_sincos add the one test for |x| >= 2^20 (and non-finite x).
+ * The dk_*_core functions are branch-free (selections only), so loops over them vectorise
+ * (trig_arrays.h); dk_sincos and dk_atan2, the scalar forms, branch around work whose
+ * result is known, so they give the cores' bits with fewer instructions.
  */
 #ifndef DRIVEKIN_DKMATH_H
 #define DRIVEKIN_DKMATH_H
