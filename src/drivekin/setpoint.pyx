@@ -813,7 +813,8 @@ cdef inline vec3_t wpilib_discretize(double vx, double vy, double omega,
                                     double dt) noexcept nogil:
     # ChassisSpeeds.discretize in WPILib 2026's own arithmetic (Pose2d.log's cos θ − 1,
     # which cancels for small θ): drivekin's discretize is exact where this is not (up to
-    # ~1e-10 m/s apart here), and the compatibility mode reproduces PathPlannerLib's bits.
+    # ~1e-10 m/s apart here), and the compatibility mode reproduces PathPlannerLib's
+    # arithmetic (its bits, but for drivekin's own sin and cos, an ulp from libm's at most).
     cdef double c, s, m, theta, h, k, cmo, rc, rs, x, y
     cdef vec3_t out
     sincos(omega * dt, &s, &c)

@@ -442,7 +442,7 @@ cdef inline pose2_t odometry_motion(double dx, double dy, double dtheta,
                                     double ct, double st, bint unit) noexcept nogil:
     # The pose change of an odometry step with the twist (dx, dy, dtheta), given cos and sin
     # of dtheta. ``unit``: they come from a normalised rotation (the gyro turn) and become
-    # the step's rotation as they are; otherwise (libm values) they are normalised, as
+    # the step's rotation as they are; otherwise (sincos values) they are normalised, as
     # WPILib's exp does through the Rotation2d(x, y) constructor. Normalising a unit pair
     # again would move only the last bit, and it sits on the update's critical path (about
     # 12 ns here). It does not depend on the pose, so the batch replay computes it for a
