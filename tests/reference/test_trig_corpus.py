@@ -23,7 +23,7 @@ from drivekin import (ChassisVelocities, DifferentialDriveOdometry, Pose2d, Rota
                       SwerveDriveKinematics, Translation2d, Twist2d)
 import drivekin.batch as batch
 
-EXPECTED = "b1337a8d5665fd2b36c7ba681a3d6bdf6bb2a6ebcee7383461caac35cc9527b0"
+EXPECTED = "c5338145a87910a747a65e69c3f16858a192c44333dba73c6b14c9c1ad7b9489"
 
 
 def magnitudes(rng, n, lo, hi):

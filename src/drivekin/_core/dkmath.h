@@ -310,7 +310,9 @@ static void dk_sincos_huge(double x, double* s, double* c) {
     double rh, rl;
     uint64_t q;
     if (!isfinite(x)) {
-        *s = *c = x - x;
+        /* A NaN comes back as itself, an infinity as the default quiet NaN, spelled out:
+         * inf - inf is negative on x86_64 and positive on aarch64. */
+        *s = *c = x != x ? x : dk_from_bits((uint64_t)0x7ff8 << 48);
         return;
     }
     q = dk_reduce_huge(x, &rh, &rl);
