@@ -36,7 +36,6 @@ results are the same bits whichever is in use, on every supported platform
 (docs/DESIGN.md, "One trig").
 """
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from libc.math cimport fabs
 from drivekin._core.dkmath cimport atan2, atan2_n, sincos, sincos_n, trig_isa, trig_use
 from libc.string cimport memcpy, memset
 cimport numpy as cnp

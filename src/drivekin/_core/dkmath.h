@@ -371,18 +371,6 @@ static inline void dk_sincos(double x, double* s, double* c) {
     }
 }
 
-static inline double dk_sin(double x) {
-    double s, c;
-    dk_sincos(x, &s, &c);
-    return s;
-}
-
-static inline double dk_cos(double x) {
-    double s, c;
-    dk_sincos(x, &s, &c);
-    return c;
-}
-
 /* ---------------------------------------------------------------------------------------
  * atan2 */
 

@@ -19,19 +19,9 @@
 #include <stddef.h>
 #include "dkmath.h"
 
-/* Two vectors an iteration: their dependency chains overlap (measured 10-15 % faster). */
-#if defined(__GNUC__) && !defined(__clang__)
-#define DK_UNROLL _Pragma("GCC unroll 2")
-#elif defined(__clang__)
-#define DK_UNROLL _Pragma("clang loop unroll_count(2)")
-#else
-#define DK_UNROLL
-#endif
-
 #define DK_SINCOS_LOOP(n, x, s, c)                                                     \
     do {                                                                               \
         ptrdiff_t i_;                                                                  \
-        DK_UNROLL                                                                      \
         for (i_ = 0; i_ < (n); i_++)                                                   \
             dk_sincos_core((x)[i_], &(s)[i_], &(c)[i_]);                               \
         for (i_ = 0; i_ < (n); i_++)                                                   \
@@ -42,13 +32,11 @@
 #define DK_ATAN2_LOOP(n, y, x, r)                                                      \
     do {                                                                               \
         ptrdiff_t i_;                                                                  \
-        DK_UNROLL                                                                      \
         for (i_ = 0; i_ < (n); i_++)                                                   \
             (r)[i_] = dk_atan2_core((y)[i_], (x)[i_]);                                 \
     } while (0)
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__)) && !defined(__AVX2__)
-#define DK_DISPATCH 1
 /* Not every module that includes this uses every function. */
 #define DK_MAYBE_UNUSED __attribute__((unused))
 
