@@ -88,6 +88,8 @@ def extensions(numpy_include=None, system=sys.platform, machine=platform.machine
         compiler_directives=directives,
         include_path=["src"],
         annotate=trace,
+        # Cython translates the modules in parallel too, as build_ext compiles them (below).
+        nthreads=os.cpu_count() or 1,
     )
 
 

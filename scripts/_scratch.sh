@@ -3,6 +3,7 @@
 # (its .c and .so files) is never touched or shadowed.
 
 PYTHON=${PYTHON:-python}
+. "$here/_steps.sh"
 
 # scratch_copy SRC: sets $work to a fresh copy of SRC's sources (no VCS, no build
 # products, no virtual environments), removed again when the calling script exits
@@ -20,12 +21,10 @@ scratch_copy() {
 }
 
 # scratch_build [ENV=VALUE ...]: build the extensions in place in $work with the given
-# environment; prints the wall time.
+# environment.
 scratch_build() {
-    local t0=$SECONDS
     (cd "$work" && env "$@" "$PYTHON" setup.py -q build_ext --inplace -j2 >"$work/build.log" 2>&1) \
         || { cat "$work/build.log" >&2; echo "build failed" >&2; exit 1; }
-    echo "build: $((SECONDS - t0)) s"
 }
 
 # check_import [ENV=VALUE ...]: the tests will import drivekin from $work/src, not from an

@@ -1,16 +1,10 @@
 # Sourced by scripts/wheels.sh and scripts/wheel_tests.sh: Debian forky root filesystems
-# with CPython 3.14, one per architecture, kept in $CACHE, and the scripts' step timer.
+# with CPython 3.14, one per architecture, kept in $CACHE (and the step timer,
+# scripts/_steps.sh).
 CACHE=${DRIVEKIN_CACHE:-$HOME/.cache/drivekin-release}
 MIRROR=${DEBIAN_MIRROR:-http://deb.debian.org/debian}
 
-step_start=$SECONDS
-step() {  # step NAME: report how long the previous step took, then announce NAME
-    local now=$SECONDS
-    [[ -n "${step_name:-}" ]] && printf '== %-44s %4d s\n' "$step_name" $((now - step_start))
-    step_name=$1 step_start=$now
-    [[ -n "$1" ]] && echo "-- $1"
-    return 0
-}
+. "$(dirname "${BASH_SOURCE[0]}")/_steps.sh"
 
 # native_pythons: every working CPython 3.10-3.13 on this machine (PATH, then pyenv's),
 # one per minor version.

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Build drivekin with AddressSanitizer (gcc) in a scratch copy of SRC_DIR (default: this
-# repository) and run its whole test suite under ASan. Extra arguments go to pytest.
+# repository) and run the memory-safety selection of its tests (tests/README.md; pytest's
+# --memory-safety) under ASan. Extra arguments go to pytest instead
+# (`scripts/asan.sh . tests` for the whole suite).
 # Exit status is non-zero on any test failure and on any ASan report, including reports
 # from subprocesses the tests start (they inherit the environment below).
 #   usage: scripts/asan.sh [SRC_DIR [PYTEST_ARGS...]]
@@ -10,6 +12,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 scratch_copy "${1:-$here/..}"
 shift || true
 
+args=("$@")
+((${#args[@]})) || args=(--memory-safety)
+
+step "AddressSanitizer build"
 flags="-fsanitize=address -fno-omit-frame-pointer -g"   # frame pointers: usable stacks
 scratch_build CFLAGS="$flags" LDFLAGS="-fsanitize=address"
 for so in "$work"/src/drivekin/*.so "$work"/src/drivekin/_core/*.so; do  # a build that ignored CFLAGS would prove nothing
@@ -49,10 +55,11 @@ run_env=(
 )
 check_import "${run_env[@]}"
 
-t0=$SECONDS
+step "tests under AddressSanitizer (${args[*]})"
 status=0
-(cd "$work" && env "${run_env[@]}" "$PYTHON" -m pytest -p no:cacheprovider "$@") || status=$?
-echo "tests under ASan: $((SECONDS - t0)) s, pytest exit status $status"
+(cd "$work" && env "${run_env[@]}" "$PYTHON" -m pytest -p no:cacheprovider "${args[@]}") || status=$?
+step ""
+echo "tests under ASan: pytest exit status $status"
 
 if compgen -G "$work/asan-reports/*" >/dev/null; then
     for f in "$work"/asan-reports/*; do echo "=== $f"; cat "$f"; done
