@@ -504,12 +504,12 @@ def test_a_subclass_of_a_robotpy_class_converts(wp):
 
 # ---- robotpy-wpimath stays optional --------------------------------------------------------
 
-def run_python(code: str) -> subprocess.CompletedProcess:
+def run_python(code: str, cwd: os.PathLike | None = None) -> subprocess.CompletedProcess:
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join(
         [os.path.dirname(os.path.dirname(drivekin.__file__))]
         + ([env["PYTHONPATH"]] if env.get("PYTHONPATH") else []))
-    return subprocess.run([sys.executable, "-c", textwrap.dedent(code)], env=env,
+    return subprocess.run([sys.executable, "-c", textwrap.dedent(code)], env=env, cwd=cwd,
                           capture_output=True, text=True, timeout=120)
 
 
@@ -533,23 +533,13 @@ def test_importing_drivekin_and_interop_does_not_import_wpimath():
     assert proc.returncode == 0 and proc.stdout.strip() == "clean", proc.stderr
 
 
-BLOCKER = """
-    import sys
-
-    class Blocker:
-        def find_spec(self, name, path=None, target=None):
-            if name == "wpimath" or name.startswith("wpimath."):
-                raise {exc}
-            return None
-
-    sys.meta_path.insert(0, Blocker())
-    import drivekin, drivekin.interop
-"""
-
-
 def test_missing_wpimath_says_what_to_install():
-    proc = run_python(BLOCKER.format(exc='ModuleNotFoundError(f"No module named {name!r}", '
-                                         'name=name)') + """
+    # None in sys.modules makes an import raise ModuleNotFoundError, as when the package is
+    # not installed (the import system's documented rule), whether or not it is here.
+    proc = run_python("""
+    import sys
+    sys.modules["wpimath"] = None
+    import drivekin, drivekin.interop
     try:
         drivekin.interop.toWpimath(drivekin.Pose2d())
     except ModuleNotFoundError as e:
@@ -563,14 +553,21 @@ def test_missing_wpimath_says_what_to_install():
     """)
     assert proc.returncode == 0, proc.stderr
     name, message, refusal = proc.stdout.strip().split("\n")
-    assert name == "wpimath"
+    # The module that could not be imported: "wpimath.geometry" here (its parent is None),
+    # "wpimath" when nothing is installed.
+    assert name.partition(".")[0] == "wpimath"
     assert "pip install robotpy-wpimath" in message and 'drivekin[wpimath]' in message
     assert refusal.startswith("TypeError toWpimath() cannot convert str")
 
 
-def test_a_broken_wpimath_says_so():
-    proc = run_python(BLOCKER.format(exc='ImportError("libwpimath.so: cannot open shared '
-                                         'object file")') + """
+def test_a_broken_wpimath_says_so(tmp_path):
+    # A wpimath package whose import fails (as one whose shared library is missing does),
+    # found first because `python -c` looks in the working directory before site-packages.
+    (tmp_path / "wpimath").mkdir()
+    (tmp_path / "wpimath" / "__init__.py").write_text(
+        'raise ImportError("libwpimath.so: cannot open shared object file")\n')
+    proc = run_python("""
+    import drivekin, drivekin.interop
     try:
         drivekin.interop.fromWpimath
         drivekin.interop.toWpimath([drivekin.Translation2d()])
@@ -578,7 +575,7 @@ def test_a_broken_wpimath_says_so():
         print("wrong: not a missing package")
     except ImportError as e:
         print(e)
-    """)
+    """, cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
     out = proc.stdout.strip()
     assert "failed to import" in out and "libwpimath.so" in out
