@@ -13,8 +13,8 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from drivekin._core import catalog
 from drivekin import datalog
+from drivekin._core import catalog
 from drivekin._core.errors import clip, cut
 
 # Schemas drivekin knows even when a log does not publish them: drivekin's own types

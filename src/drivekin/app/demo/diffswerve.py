@@ -4,18 +4,10 @@ from __future__ import annotations
 
 import math
 
-from drivekin import (
-    ChassisVelocities,
-    DifferentialSwerveModuleKinematics,
-    DifferentialSwerveModuleVelocities,
-    DifferentialSwerveMotorVelocities,
-    Rotation2d,
-    SwerveDriveKinematics,
-    SwerveDriveOdometry,
-    SwerveModulePosition,
-    SwerveModuleVelocity,
-    Translation2d,
-)
+from drivekin import (ChassisVelocities, DifferentialSwerveModuleKinematics,
+                      DifferentialSwerveModuleVelocities, DifferentialSwerveMotorVelocities,
+                      Rotation2d, SwerveDriveKinematics, SwerveDriveOdometry,
+                      SwerveModulePosition, SwerveModuleVelocity, Translation2d)
 from drivekin.app.demo.script import DT
 from drivekin.app.demo.sim import Drivetrain, _from_radians, _hypot
 

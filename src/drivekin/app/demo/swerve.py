@@ -6,24 +6,10 @@ import math
 import random
 from array import array
 
-from drivekin import (
-    ChassisVelocities,
-    DCMotor,
-    DriveFeedforwards,
-    ModuleConfig,
-    Pose2d,
-    RobotConfig,
-    Rotation2d,
-    SwerveDriveKinematics,
-    SwerveDriveOdometry,
-    SwerveDrivePoseEstimator,
-    SwerveModulePosition,
-    SwerveModuleVelocity,
-    SwerveSetpoint,
-    SwerveSetpointGenerator,
-    Translation2d,
-    Twist2d,
-)
+from drivekin import (ChassisVelocities, DCMotor, DriveFeedforwards, ModuleConfig, Pose2d,
+                      RobotConfig, Rotation2d, SwerveDriveKinematics, SwerveDriveOdometry,
+                      SwerveDrivePoseEstimator, SwerveModulePosition, SwerveModuleVelocity,
+                      SwerveSetpoint, SwerveSetpointGenerator, Translation2d, Twist2d)
 from drivekin.app.demo.script import DT
 from drivekin.app.demo.sim import (Drivetrain, _clock_ns, _desaturate_in_place, _from_radians,
                                    _hypot, _normal, _pose_dict, _track, localization_rows)

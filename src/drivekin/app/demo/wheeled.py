@@ -6,22 +6,12 @@ import math
 import random
 from array import array
 
-from drivekin import (
-    ChassisVelocities,
-    DeadWheelKinematics,
-    DeadWheelOdometry,
-    DifferentialDriveKinematics,
-    DifferentialDriveOdometry,
-    DifferentialDriveWheelVelocities,
-    MecanumDriveKinematics,
-    MecanumDriveOdometry,
-    MecanumDriveWheelPositions,
-    MecanumDriveWheelVelocities,
-    Pose2d,
-    Rotation2d,
-    Translation2d,
-    Twist2d,
-)
+from drivekin import (ChassisVelocities, DeadWheelKinematics, DeadWheelOdometry,
+                      DifferentialDriveKinematics, DifferentialDriveOdometry,
+                      DifferentialDriveWheelVelocities, MecanumDriveKinematics,
+                      MecanumDriveOdometry, MecanumDriveWheelPositions,
+                      MecanumDriveWheelVelocities, Pose2d, Rotation2d, Translation2d,
+                      Twist2d)
 from drivekin.app.demo.script import DT
 from drivekin.app.demo.sim import Drivetrain, _hypot, _normal, _pose_dict, _track, localization_rows
 
