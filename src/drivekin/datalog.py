@@ -98,16 +98,16 @@ from __future__ import annotations
 import mmap
 import operator
 import os
-import re
 from collections.abc import Iterable
 from typing import Any, NamedTuple
 
 import numpy as np
 
 from drivekin import wpistruct
-from drivekin._core.errors import type_name
+from drivekin._core.errors import clip, cut, type_name
 from drivekin._core import catalog
 from drivekin._core import wpilog as _wpilog
+from drivekin._core import structschema
 
 __all__ = ["DataLogError", "EntryInfo", "LogData", "Writer", "listEntries", "read"]
 
@@ -140,274 +140,6 @@ class EntryInfo(NamedTuple):
     metadata: str
     records: int
     columns: tuple[str, ...]
-
-
-# ---------------------------------------------------------------------------------------
-# Struct layouts
-
-# Schemas drivekin knows even when a log does not publish them: drivekin's own types
-# (WPILib 2027 names) and the 2026 names of the same layouts.
-_KNOWN_SCHEMAS: dict[str, str] = {}
-# Repeated structs (one type per member count, SwerveDriveKinematics__N): name -> entry.
-_REPEATED: dict[str, catalog.Entry] = {}
-for _e in catalog.ENTRIES:
-    if _e.struct is not None:
-        if _e.struct.repeats is None:
-            _KNOWN_SCHEMAS[_e.struct.name] = _e.struct.schema
-        else:
-            _REPEATED[_e.struct.name] = _e
-_KNOWN_SCHEMAS.update({
-    "ChassisSpeeds": "double vx;double vy;double omega",
-    "SwerveModuleState": "double speed;Rotation2d angle",
-    "MecanumDriveWheelSpeeds": _KNOWN_SCHEMAS["MecanumDriveWheelVelocities"],
-    "DifferentialDriveWheelSpeeds": _KNOWN_SCHEMAS["DifferentialDriveWheelVelocities"],
-})
-del _e
-
-_REPEATED_NAME = re.compile("(" + "|".join(_REPEATED) + r")__(\d+)")
-
-# Limits on what one struct element may decode to (WPILib's structs have a few dozen
-# doubles at most): column count and the total length of the column names. A schema is
-# measured before anything is built from it, so a hostile one ("double d[200000000]", or
-# structs nested a thousand times a thousand) is refused without allocating its columns.
-_MAX_COLUMNS = 1 << 16                  # 512 KiB of doubles per element
-_MAX_COLUMN_CHARS = 1 << 23
-_MAX_COUNT_DIGITS = 9                   # an array count of more is beyond _MAX_COLUMNS
-_DOUBLE = ("double", "float64")
-_OTHER_SCALARS = frozenset(("bool", "char", "int8", "int16", "int32", "int64", "uint8",
-                            "uint16", "uint32", "uint64", "float", "float32"))
-
-
-def _clip(text: str, n: int = 60) -> str:
-    """``repr(text)``, shortened to about ``n`` characters (names and schema text come
-    from the file and may be huge)."""
-    return repr(text) if len(text) <= n else repr(text[:n]) + f"... ({len(text)} characters)"
-
-
-def _cut(text: str, n: int = 60) -> str:
-    """``text`` as it is, shortened to about ``n`` characters."""
-    return text if len(text) <= n else text[:n] + f"... ({len(text)} characters)"
-
-
-class _Member(NamedTuple):
-    name: str
-    type: str
-    count: int | None                   # None: not an array
-
-
-def _tokens(decl: str) -> list[str] | None:
-    """Split one schema declaration into words (runs of word characters), enum bodies
-    (``{...}``, one token) and the punctuation ``[ ] :``; None if another character
-    occurs. One pass, no backtracking."""
-    out: list[str] = []
-    i, n = 0, len(decl)
-    while i < n:
-        c = decl[i]
-        if c.isspace():
-            i += 1
-        elif c.isalnum() or c == "_":
-            j = i + 1
-            while j < n and (decl[j].isalnum() or decl[j] == "_"):
-                j += 1
-            out.append(decl[i:j])
-            i = j
-        elif c == "{":
-            j = decl.find("}", i)
-            if j < 0:
-                return None
-            out.append(decl[i:j + 1])
-            i = j + 1
-        elif c in "[]:":
-            out.append(c)
-            i += 1
-        else:
-            return None
-    return out
-
-
-def _word(t: str) -> bool:
-    return t[0].isalnum() or t[0] == "_"
-
-
-def _parse_member(struct: str, decl: str) -> _Member:
-    """One member of a schema: ``[enum {...}] type name [[count]] [: bits]``."""
-    toks = _tokens(decl)
-
-    def bad() -> DataLogError:
-        return DataLogError(f"struct:{_cut(struct)}: cannot parse schema member {_clip(decl.strip())}")
-
-    if toks is None:
-        raise bad()
-    enum = len(toks) >= 2 and toks[0] == "enum" and toks[1][0] == "{"
-    i = 2 if enum else 0
-    if len(toks) < i + 2 or not (_word(toks[i]) and _word(toks[i + 1])):
-        raise bad()
-    mtype, mname = toks[i], toks[i + 1]
-    i += 2
-    count = None
-    if i < len(toks) and toks[i] == "[":
-        if i + 2 >= len(toks) or toks[i + 2] != "]" or not (toks[i + 1].isascii()
-                                                            and toks[i + 1].isdigit()):
-            raise bad()
-        digits = toks[i + 1].lstrip("0") or "0"
-        if len(digits) > _MAX_COUNT_DIGITS:
-            raise DataLogError(f"struct:{_cut(struct)}: member {_clip(mname)} has an array count "
-                               f"of {len(digits)} digits, more than any log holds")
-        count = int(digits)
-        i += 3
-    bits = i < len(toks) and toks[i] == ":"
-    if bits:
-        if i + 1 >= len(toks) or not (toks[i + 1].isascii() and toks[i + 1].isdigit()):
-            raise bad()
-        i += 2
-    if i != len(toks):
-        raise bad()
-    if enum or bits:
-        raise DataLogError(f"struct:{_cut(struct)}: member {_clip(mname)} is an enum or bit "
-                           f"field; only structs of doubles are decoded")
-    if mtype in _OTHER_SCALARS:
-        raise DataLogError(f"struct:{_cut(struct)}: member {_clip(mname)} is {mtype}; only "
-                           f"structs of doubles are decoded")
-    return _Member(mname, mtype, count)
-
-
-def _members(name: str, schemas: dict[str, str]) -> list[_Member]:
-    """The parsed members of struct ``name``: the log's schema first, then drivekin's."""
-    schema = schemas.get(name)
-    if schema is None:
-        schema = _KNOWN_SCHEMAS.get(name)
-        m = _REPEATED_NAME.fullmatch(name)
-        if schema is None and m:
-            schema = f"{_REPEATED[m.group(1)].struct.schema}[{m.group(2)}]"  # type: ignore[union-attr]
-    if schema is None:
-        raise DataLogError(f"no schema for struct:{_cut(name)} in the log, and it is not "
-                           f"a WPILib type drivekin knows")
-    return [_parse_member(name, d) for d in schema.split(";") if d.strip()]
-
-
-def _digits_below(n: int) -> int:
-    """Total decimal digits of 0, 1, ..., n - 1 (the indices in ``name[i]``)."""
-    total, width, low = 0, 1, 0
-    while low < n:
-        high = min(n, 10 ** width)
-        total += (high - low) * width
-        low, width = high, width + 1
-    return total
-
-
-class _Plan(NamedTuple):
-    root: str
-    members: dict[str, list[_Member]]   # every struct reachable from root
-    columns: int                        # doubles per element of root
-
-
-def _struct_plan(root: str, schemas: dict[str, str]) -> _Plan:
-    """Parse struct ``root`` and every struct it nests (an explicit stack, so any depth
-    works; a cycle is an error), then count its doubles bottom-up, refusing a struct
-    beyond _MAX_COLUMNS / _MAX_COLUMN_CHARS before any column is built."""
-    members = {root: _members(root, schemas)}
-    state = {root: 1}                   # 1: on the path, 2: done
-    path, todo, order = [root], [iter(members[root])], []
-    while todo:
-        for m in todo[-1]:
-            if m.type in _DOUBLE or state.get(m.type) == 2:
-                continue
-            if state.get(m.type) == 1:
-                cycle = path[path.index(m.type):] + [m.type]
-                shown = (" -> ".join(cycle) if len(cycle) <= 8 else
-                         " -> ".join(cycle[:3]) + f" -> ... ({len(cycle) - 6} more) -> "
-                         + " -> ".join(cycle[-3:]))
-                raise DataLogError(f"struct:{_cut(m.type)} contains itself (schema cycle "
-                                   f"{_cut(shown, 300)})")
-            members[m.type] = _members(m.type, schemas)
-            state[m.type] = 1
-            path.append(m.type)
-            todo.append(iter(members[m.type]))
-            break
-        else:
-            todo.pop()
-            done = path.pop()
-            state[done] = 2
-            order.append(done)
-    ncols: dict[str, int] = {}
-    chars: dict[str, int] = {}
-    for s in order:                     # nested structs before the structs holding them
-        n = c = 0
-        for m in members[s]:
-            reps = 1 if m.count is None else m.count
-            elem = len(m.name) if m.count is None else reps * (len(m.name) + 2) + _digits_below(reps)
-            if m.type in _DOUBLE:
-                n += reps
-                c += elem
-            else:
-                sn = ncols[m.type]
-                n += reps * sn
-                c += elem * sn + reps * (sn + chars[m.type])
-            if n > _MAX_COLUMNS or c > _MAX_COLUMN_CHARS:
-                raise DataLogError(
-                    f"struct:{_cut(root)} has more than {_MAX_COLUMNS} doubles per element "
-                    f"(at member {_clip(m.name)} of struct:{_cut(s)}) or column names of "
-                    f"more than {_MAX_COLUMN_CHARS} characters; drivekin decodes smaller "
-                    f"structs")
-        if n == 0:
-            raise DataLogError(f"struct:{_cut(s)} has no members")
-        ncols[s], chars[s] = n, c
-    return _Plan(root, members, ncols[root])
-
-
-def _plan_columns(plan: _Plan) -> tuple[str, ...]:
-    """Column paths of a planned struct (one per double, nested structs inlined), built
-    top-down with an explicit stack."""
-    out: list[str] = []
-    stack: list[tuple[str, str | None]] = [("", plan.root)]
-    while stack:
-        prefix, s = stack.pop()
-        if s is None:
-            out.append(prefix)
-            continue
-        items: list[tuple[str, str | None]] = []
-        for m in plan.members[s]:
-            elems = [m.name] if m.count is None else [f"{m.name}[{i}]" for i in range(m.count)]
-            if m.type in _DOUBLE:
-                items += [(prefix + e, None) for e in elems]
-            else:
-                items += [(prefix + e + ".", m.type) for e in elems]
-        stack += reversed(items)
-    return tuple(out)
-
-
-def _struct_columns(name: str, schemas: dict[str, str]) -> tuple[str, ...]:
-    """Column paths of struct ``name`` (one per double), resolving nested structs with
-    the log's schemas first, then drivekin's; DataLogError for anything but doubles."""
-    return _plan_columns(_struct_plan(name, schemas))
-
-
-_PLAIN = {  # type -> (numpy dtype of one element, output dtype)
-    "double": ("<f8", np.float64), "float": ("<f4", np.float64),
-    "int64": ("<i8", np.int64), "boolean": ("u1", np.bool_),
-}
-
-
-class _Layout(NamedTuple):
-    scalar: str                         # numpy dtype of one stored scalar
-    out: Any                            # numpy dtype of the values
-    k: int                              # scalars per element (struct doubles, or 1)
-    is_array: bool
-    plan: _Plan | None                  # structs
-
-
-def _layout(type_string: str, schemas: dict[str, str]) -> _Layout:
-    """How a type string decodes as numbers, or DataLogError if it does not."""
-    is_array = type_string.endswith("[]")
-    base = type_string[:-2] if is_array else type_string
-    if base in _PLAIN:
-        return _Layout(_PLAIN[base][0], _PLAIN[base][1], 1, is_array, None)
-    if base.startswith("struct:") and len(base) > 7:
-        plan = _struct_plan(base[7:], schemas)
-        return _Layout("<f8", np.float64, plan.columns, is_array, plan)
-    raise DataLogError(f"entry type {_clip(type_string)} is not numeric; readable types: "
-                       f"double, float, int64, boolean, their arrays, and struct:<T> or "
-                       f"struct:<T>[] of doubles")
 
 
 # ---------------------------------------------------------------------------------------
@@ -475,17 +207,17 @@ class LogData:
         """The file name (or ``"<buffer>"``)."""
         self._entries = entries
         self._schemas = schemas
-        self._layouts: dict[str, _Layout | DataLogError] = {}
+        self._layouts: dict[str, structschema.Layout | DataLogError] = {}
         self.truncated = truncated
         """None, or why the file ended early (only with ``allowTruncated=True``)."""
         self.extraHeader = extraHeader
         """The file header's extra string (often JSON from the producer)."""
 
-    def _layout(self, type_string: str) -> _Layout:
+    def _layout(self, type_string: str) -> structschema.Layout:
         got = self._layouts.get(type_string)
         if got is None:
             try:
-                got = _layout(type_string, self._schemas)
+                got = structschema.layout(type_string, self._schemas)
             except DataLogError as err:
                 got = err
             self._layouts[type_string] = got
@@ -505,7 +237,8 @@ class LogData:
                 if e.types[0] not in columns:
                     try:
                         plan = self._layout(e.types[0]).plan
-                        columns[e.types[0]] = () if plan is None else _plan_columns(plan)
+                        columns[e.types[0]] = (() if plan is None
+                                               else structschema.plan_columns(plan))
                     except DataLogError:
                         columns[e.types[0]] = ()
                 cols = columns[e.types[0]]
@@ -524,11 +257,11 @@ class LogData:
         if e is None:
             close = [n for n in self._entries if n.lower().endswith(name.lower().rsplit("/", 1)[-1])]
             hint = f"; similar: {', '.join(close[:5])}" if close else ""
-            raise DataLogError(f"{_shown(self.source)}: no entry named {_clip(name, 200)}{hint}")
+            raise DataLogError(f"{_shown(self.source)}: no entry named {clip(name, 200)}{hint}")
         if len(e.types) > 1:
-            shown = ", ".join(_cut(t) for t in e.types[:5])
+            shown = ", ".join(cut(t) for t in e.types[:5])
             more = f", ... ({len(e.types)} types)" if len(e.types) > 5 else ""
-            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)} was started "
+            raise DataLogError(f"{_shown(self.source)}: entry {clip(name, 200)} was started "
                                f"with several types ({shown}{more})")
         return e
 
@@ -549,11 +282,11 @@ class LogData:
             raise ValueError(f"ragged must be 'error' or 'drop', got {ragged!r}")
         e = self._entry(name)
         type_string = e.types[0]
-        what = f"{_shown(self.source)}: entry {_clip(name, 200)} ({_cut(type_string)})"
+        what = f"{_shown(self.source)}: entry {clip(name, 200)} ({cut(type_string)})"
         try:
             lay = self._layout(type_string)
         except DataLogError as err:
-            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)}: {err}") from None
+            raise DataLogError(f"{_shown(self.source)}: entry {clip(name, 200)}: {err}") from None
         elem = np.dtype(lay.scalar).itemsize * lay.k
         ts, sizes = e.ts, e.sizes
         rows = None
@@ -607,15 +340,15 @@ class LogData:
         try:
             lay = self._layout(type_string)
         except DataLogError as err:
-            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)}: {err}") from None
+            raise DataLogError(f"{_shown(self.source)}: entry {clip(name, 200)}: {err}") from None
         if not lay.is_array:
-            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)} "
-                               f"({_cut(type_string)}) is not an array")
+            raise DataLogError(f"{_shown(self.source)}: entry {clip(name, 200)} "
+                               f"({cut(type_string)}) is not an array")
         elem = np.dtype(lay.scalar).itemsize * lay.k
         ts, sizes = e.ts, e.sizes.astype(np.int64)
         if (sizes % elem != 0).any():
             i = int(np.argmax(sizes % elem != 0))
-            raise DataLogError(f"{_shown(self.source)}: entry {_clip(name, 200)}: record "
+            raise DataLogError(f"{_shown(self.source)}: entry {clip(name, 200)}: record "
                                f"{i} has {sizes[i]} bytes, not a multiple of {elem}")
         order = np.argsort(ts, kind="stable")
         data = e.data
@@ -755,9 +488,9 @@ class Writer:
         if not base.startswith("struct:"):
             return
         name = base[7:]
-        m = _REPEATED_NAME.fullmatch(name)
+        m = structschema.REPEATED_NAME.fullmatch(name)
         if m:
-            cls: type | None = _REPEATED[m.group(1)].cls
+            cls: type | None = structschema.REPEATED[m.group(1)].cls
             kw: dict[str, int] = {"numModules": int(m.group(2))}
         else:
             cls, kw = _STRUCT_CLASSES.get(name), {}
@@ -864,8 +597,8 @@ class Writer:
         if base == "double":
             k = 1
         elif base.startswith("struct:") and (base[7:] in _STRUCT_CLASSES
-                                             or _REPEATED_NAME.fullmatch(base[7:])):
-            k = len(_struct_columns(base[7:], {}))
+                                             or structschema.REPEATED_NAME.fullmatch(base[7:])):
+            k = len(structschema.struct_columns(base[7:], {}))
         else:
             raise ValueError(f"appendSeries() writes double, double[] and drivekin's "
                              f"struct types, got {type!r}")

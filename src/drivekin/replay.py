@@ -62,6 +62,7 @@ from drivekin._core import catalog
 from drivekin._core import loglayouts as layouts
 from drivekin._core.loglayouts import REPLAY_PREFIX, Signal
 from drivekin._core.plotting import pyplot
+from drivekin._core.replayinputs import _gyro, _named_pose, _pose, _positions
 from drivekin.datalog import DataLogError, LogData
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.geometry import Pose2d, Rotation2d
@@ -211,182 +212,7 @@ def replayPoses(odometry: Any, gyro: np.ndarray, positions: np.ndarray) -> np.nd
 
 
 # ---------------------------------------------------------------------------------------
-# Finding entries (the layouts table: drivekin/_core/loglayouts.py)
-
-def _choose(cands: list[Signal], role: str, option: str, rank: Any) -> tuple[Signal, str]:
-    """The best-ranked candidate and why; DataLogError when the best are tied."""
-    ordered = sorted(cands, key=rank, reverse=True)          # stable: table order on ties
-    # One entry read by two layouts (CTRE's Pose as a Pose2d and on DriveState's clock)
-    # is one candidate: the better-ranked reading.
-    seen: set[str] = set()
-    unique = []
-    for s in ordered:
-        if s.entries[0] not in seen:
-            seen.add(s.entries[0])
-            unique.append(s)
-    best = [s for s in unique if rank(s) == rank(unique[0])]
-    if len(best) > 1:
-        raise DataLogError(f"several {role} entries: "
-                           f"{'; '.join(f'{s.source} ({s.layout})' for s in best)}; "
-                           f"name one with {option}")
-    chosen = best[0]
-    others = [s.source for s in unique[1:]]
-    why = chosen.why or chosen.layout
-    if others:
-        why += f"; over {', '.join(others[:3])}" + (f" and {len(others) - 3} more"
-                                                    if len(others) > 3 else "")
-    return chosen, why
-
-
-def _named_signal(log: LogData, cands: list[Signal], name: str, option: str) -> Signal | None:
-    """The candidate holding the entry a user named, or whose entries all lie under the
-    named prefix (``--positions /Drive`` for AdvantageKit's per-module entries)."""
-    try:
-        want = {layouts.resolve(log, name, option).name}
-        under = None
-    except DataLogError:
-        want = set()
-        under = layouts.fold(layouts.bare(name)).rstrip("/") + "/"
-        if not any(all(layouts.fold(layouts.bare(n)).startswith(under) for n in s.entries)
-                   for s in cands):
-            raise
-    hits = [s for s in cands if (want & set(s.entries)) or (
-        under is not None and all(layouts.fold(layouts.bare(n)).startswith(under)
-                                  for n in s.entries))]
-    high = [s for s in hits if s.highRate]
-    return (high or hits or [None])[0]
-
-
-_POSITION_RANK = {"CTRE DriveState": 5, "AdvantageKit high-rate odometry": 4,
-                  "WPILib struct": 3,
-                  "per-module entries": 2, "left/right doubles": 1, "double[] wheels": 0}
-
-
-def _positions(log: LogData, cfg: ReplayConfig, units: layouts.Options
-               ) -> tuple[Signal, Signal | None, str]:
-    """The positions signal, the cycle-rate one beside high-rate samples (or None), why."""
-    want = cfg.drivetrain
-    problems: list[DataLogError] = []
-    cands = [s for s in layouts.candidates(log, "positions", units, problems)
-             if want in ("auto", s.drivetrain)]
-    if cfg.odometryRate == "cycle":
-        cands = [s for s in cands if not s.highRate] or cands
-    if cfg.positions is not None:
-        chosen = _named_signal(log, cands, cfg.positions, "--positions")
-        if chosen is None:
-            chosen = _named_array(log, cfg.positions, want, cfg.ragged)
-        why = "named with --positions"
-    else:
-        if want == "deadwheel":
-            raise DataLogError("dead-wheel positions are a double[] entry: name it with "
-                               "--positions")
-        if not cands and problems:
-            raise problems[0]
-        if not cands:
-            found = ", ".join(dict.fromkeys(lay.name for lay in layouts.LAYOUTS
-                                            if lay.role == "positions"))
-            raise DataLogError(f"no wheel or module positions found (layouts tried: "
-                               f"{found}); name an entry with --positions (--list shows "
-                               f"them)")
-        chosen, why = _choose(cands, "positions", "--positions",
-                              lambda s: _POSITION_RANK.get(s.layout, 0))
-    cycle = None
-    if chosen.highRate:
-        group = layouts.fold(chosen.source.split("/...")[0])
-        cycle = next((s for s in cands if s.layout == "per-module entries" and
-                      layouts.fold(s.source.split("/...")[0]) == group), None)
-    return chosen, cycle, why
-
-
-def _named_array(log: LogData, name: str, want: str, ragged: str) -> Signal:
-    """A named double[] entry: dead wheels, or differential [left, right]."""
-    info = layouts.resolve(log, name, "--positions")
-    if info.type != "double[]":
-        raise DataLogError(f"--positions {info.name!r} has type {info.type}; expected one "
-                           f"of {', '.join(layouts.POSITION_STRUCTS)}, double[], or a folder of "
-                           f"per-module entries")
-    kind = "deadwheel" if want == "auto" else want
-    if kind not in ("deadwheel", "differential", "mecanum"):
-        raise DataLogError(f"--positions {info.name!r} is double[]: that is read as dead "
-                           f"wheels, differential [left, right] or mecanum [fl, fr, rl, "
-                           f"rr], not {kind}")
-    t, v = log.values(info.name, ragged=ragged)
-    return Signal("positions", t, v, (info.name,), "double[]", kind, "m")
-
-
-def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Signal,
-          pose: Signal | None) -> tuple[Signal, str]:
-    problems: list[DataLogError] = []
-    cands = layouts.candidates(log, "gyro", units, problems)
-    if cfg.gyro is not None:
-        info = layouts.resolve(log, cfg.gyro, "--gyro")
-        hits = [s for s in cands if info.name in s.entries]
-        if not hits and info.type in ("double", "float"):
-            if units.gyro is None:
-                raise DataLogError(f"gyro entry {info.name!r} is a plain {info.type}: give "
-                                   f"its units with --gyro-units deg, rad or rot")
-            t, v = log.values(info.name)
-            hits = [Signal("gyro", t, v * layouts.angle_scale(units.gyro), (info.name,),
-                           "double", units=f"{units.gyro} (--gyro-units)")]
-        if not hits:
-            raise DataLogError(f"--gyro {info.name!r} has type {info.type}; expected "
-                               f"struct:Rotation2d, Rotation2d[] with its timestamps, or a "
-                               f"double (with --gyro-units)")
-        chosen, why = hits[0], "named with --gyro"
-    else:
-        if positions.highRate:
-            high = [s for s in cands if s.highRate]
-            if high:
-                cands = high
-        else:
-            cands = [s for s in cands if not s.highRate]
-        named = [s for s in cands if s.why]
-        if not cands and problems:
-            raise problems[0]
-        if not cands and pose is not None:
-            # CTRE's generated Telemetry publishes the drive state without the gyro; the
-            # pose's heading is the gyro's plus a constant there, which is all odometry
-            # takes from a gyro (its changes).
-            return (Signal("gyro", pose.t, pose.values[:, 2].copy(), pose.entries,
-                           "pose heading", units="rad"),
-                    "no gyro in the log: the logged pose's heading stands in for it, so "
-                    "only the translation is replayed independently")
-        if not cands:
-            raise DataLogError("no gyro entry (struct:Rotation2d, or a double named gyro, "
-                               "yaw or heading); name one with --gyro")
-        chosen, why = _choose(named or cands, "gyro", "--gyro",
-                              lambda s: (s.layout != "double") + 0)
-    if not chosen.units:
-        raise DataLogError(f"gyro entry {chosen.source!r} is a plain number with no units "
-                           f"in its name or metadata: give --gyro-units deg, rad or rot")
-    return chosen, why
-
-
-def _pose(log: LogData, cfg: ReplayConfig, units: layouts.Options, exclude: set[str]
-          ) -> tuple[Signal | None, str]:
-    cands = [s for s in layouts.candidates(log, "pose", units)
-             if not exclude & set(s.entries)]
-    if cfg.pose is not None:
-        info = layouts.resolve(log, cfg.pose, "--pose")
-        hits = [s for s in cands if info.name in s.entries]
-        if not hits:
-            raise DataLogError(f"--pose {info.name!r} has type {info.type}, expected "
-                               f"struct:Pose2d or a Field2d double[3]")
-        return hits[0], "named with --pose"
-    usable = [s for s in cands if layouts.pose_score(s.entries[0])[0] > -10]
-    if not usable:
-        return None, ("no pose entry" if not cands else
-                      f"none of {', '.join(s.source for s in cands)} is the robot's pose "
-                      f"(name one with --pose)")
-    chosen, why = _choose(usable, "pose", "--pose",
-                          lambda s: (layouts.pose_score(s.entries[0])[0],
-                                     s.layout == "CTRE DriveState"))
-    rejected = [f"{s.source} ({layouts.pose_score(s.entries[0])[1].split(':')[0]})"
-                for s in cands if layouts.pose_score(s.entries[0])[0] <= -10]
-    if rejected:
-        why += "; not " + ", ".join(rejected[:3])
-    return chosen, why
-
+# Drift against a reference pose
 
 def _unwrap(theta: np.ndarray) -> np.ndarray:
     return np.unwrap(theta) if len(theta) else theta
@@ -692,15 +518,6 @@ def _rate_check(log: LogData, cfg: ReplayConfig, result: ReplayResult) -> list[s
             f"{result.rates['positions']:.0f} Hz samples replayed (RMS "
             f"{_cm(mine.rmsPosition)}): it was evidently produced at the cycle rate; "
             f"--odometry-rate cycle replays that"]
-
-
-def _named_pose(log: LogData, name: str, option: str, opts: layouts.Options) -> Signal:
-    info = layouts.resolve(log, name, option)
-    for s in layouts.candidates(log, "pose", opts):
-        if info.name in s.entries:
-            return s
-    raise DataLogError(f"{option} {info.name!r} has type {info.type}, expected "
-                       f"struct:Pose2d or a Field2d double[3]")
 
 
 # The fastest a wheel rolls or a robot turns that the sanity checks believe.

@@ -2,6 +2,17 @@
 from __future__ import annotations
 
 
+def clip(text: str, n: int = 60) -> str:
+    """``repr(text)``, shortened to about ``n`` characters (names and schema text come
+    from the file and may be huge)."""
+    return repr(text) if len(text) <= n else repr(text[:n]) + f"... ({len(text)} characters)"
+
+
+def cut(text: str, n: int = 60) -> str:
+    """``text`` as it is, shortened to about ``n`` characters."""
+    return text if len(text) <= n else text[:n] + f"... ({len(text)} characters)"
+
+
 def type_name(obj: object, expected: type | None = None) -> str:
     """Name ``type(obj)`` for an error message.
 

@@ -12,7 +12,8 @@ from array import array
 
 from drivekin import ChassisVelocities
 from drivekin._core.alloccount import AllocationCounter
-from drivekin.app.demo.drivetrains import _pose_dict, drivetrain_class, make_drivetrain
+from drivekin.app.demo.drivetrains import drivetrain_class, make_drivetrain
+from drivekin.app.demo.sim import _pose_dict
 from drivekin.app.demo.script import BUDGET_NS, DT, JoystickScript
 
 
