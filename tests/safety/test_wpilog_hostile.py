@@ -24,12 +24,14 @@ EMULATED = os.environ.get("DRIVEKIN_EMULATED") == "1"
 
 
 def _measured(data, **kw):
-    """(messages, seconds, peak traced bytes) of exercising ``data``."""
+    """(messages, CPU seconds, peak traced bytes) of exercising ``data``. CPU time, not
+    wall time: what is budgeted is the work the reader does, which other processes on the
+    machine (CI runs two lanes side by side) do not change."""
     tracemalloc.start()
     try:
-        t = time.perf_counter()
+        t = time.process_time()
         errors = W.exercise(data, **kw)
-        return errors, time.perf_counter() - t, tracemalloc.get_traced_memory()[1]
+        return errors, time.process_time() - t, tracemalloc.get_traced_memory()[1]
     finally:
         tracemalloc.stop()
 
@@ -82,10 +84,10 @@ def test_schema_parsing_is_linear():
     # The old regular expression took 9 s on 2,000 spaces (cubic backtracking).
     for n in (2_000, 200_000):
         data = W.struct_log({"Bt": "double a" + " " * n + "!"}, "struct:Bt", [bytes(8)])
-        t = time.perf_counter()
+        t = time.process_time()
         with pytest.raises(DataLogError, match="cannot parse schema member 'double a"):
             datalog.read(data).values("/x")
-        assert time.perf_counter() - t < 2.0
+        assert time.process_time() - t < 2.0
 
 
 @pytest.mark.parametrize("schema, columns", [
@@ -224,11 +226,11 @@ def test_random_damage_is_read_or_refused(data):
             image[at:at] = data.draw(st.binary(min_size=1, max_size=8))
         elif len(image) > 1:
             del image[at:at + data.draw(st.integers(1, 8))]
-    t = time.perf_counter()
+    t = time.process_time()
     for allow in (False, True):
         for e in W.exercise(bytes(image), allowTruncated=allow):
             assert e.startswith("<buffer>: ")
-    assert time.perf_counter() - t < 5.0
+    assert time.process_time() - t < 5.0
 
 
 @settings(max_examples=100, deadline=None)
