@@ -54,7 +54,7 @@ from drivekin.geometry cimport Translation2d
 from drivekin._core.drivetrain cimport Drivetrain
 from drivekin.odometry cimport _Odometry
 from drivekin.swerve cimport SwerveDriveKinematics, check_desaturated_discretize
-from drivekin.setpoint cimport (SwerveSetpointGenerator, check_step, generate, limits_t)
+from drivekin._core.setpointkernel cimport SetpointKernel, check_step, generate, limits_t
 from drivekin._core.errors import type_name
 
 cnp.import_array()
@@ -578,10 +578,10 @@ def generateSetpoints(generator, prevSetpoint, desiredVelocities, dt,
     :class:`DriveFeedforwards`' order. The same numbers as T calls, the generator's
     heading memory included (it is left as the last call leaves it). Every row is checked
     before any is computed; the GIL is held (the generator's scratch is shared)."""
-    if type(generator) is not SwerveSetpointGenerator:
+    if not isinstance(generator, SetpointKernel):
         raise TypeError(f"generateSetpoints takes a SwerveSetpointGenerator as its first "
                         f"argument, got {type_name(generator)}")
-    cdef SwerveSetpointGenerator g = <SwerveSetpointGenerator>generator
+    cdef SetpointKernel g = <SetpointKernel>generator
     cdef _Stack v = _stack(desiredVelocities, (3,), "desiredVelocities", False)
     cdef _Stack t = _per_sample(dt, v.n, False, "dt")
     cdef _Stack u = _per_sample(inputVoltage, v.n, False, "inputVoltage")
