@@ -83,10 +83,13 @@ class RobotConfig:
     @staticmethod
     def fromGUISettings(path: str | PathLike[str]) -> RobotConfig:
         """Read PathPlanner's ``settings.json`` (``deploy/pathplanner/settings.json`` in a
-        robot project) at ``path`` into a RobotConfig: mass, MOI, wheel radius, gearing,
-        top speed, wheel COF, drive motor type and current limit, and the four module
-        positions. A file that is not a swerve (holonomic) robot's settings, lacks a key
-        or holds a value of the wrong kind raises ValueError naming it."""
+        robot project) at ``path`` (a str or os.PathLike; TypeError otherwise) into a
+        RobotConfig: mass, MOI, wheel radius, gearing, top speed, wheel COF, drive motor
+        type and current limit, and the four module positions. A file that is not a
+        swerve (holonomic) robot's settings, lacks a key or holds a value of the wrong
+        kind (a number must be finite as a float) raises ValueError naming it. So does a
+        path that is not a regular file (a FIFO or a device is not opened), a file larger
+        than 1 MiB (the GUI writes a few KB) or JSON nested deeper than 64 levels."""
     @property
     def massKG(self) -> float:
         """Robot mass, kg."""

@@ -139,6 +139,93 @@ _GUI_NUMBERS = ("robotMass", "robotMOI", "driveWheelRadius", "driveGearing", "ma
                "frModuleY", "blModuleX", "blModuleY", "brModuleX", "brModuleY")
 
 
+# settings.json as the GUI writes it is a few KB, one object of numbers and strings: larger
+# files and deeper nesting are refused before json sees them (its parser recurses).
+cdef Py_ssize_t GUI_MAX_BYTES = 1 << 20
+cdef Py_ssize_t GUI_MAX_DEPTH = 64
+
+
+cdef str settings_path(object path):
+    """The path as text for messages; only str and os.PathLike are paths (an int would be
+    taken by open() as a file descriptor, read and closed)."""
+    import os
+    if not isinstance(path, (str, os.PathLike)):
+        raise TypeError(f"path must be a str or os.PathLike naming PathPlanner's "
+                        f"settings.json, got {type_name(path)}")
+    return os.fsdecode(os.fspath(path))
+
+
+cdef bytes read_settings(object path, str name):
+    """The file's bytes: a regular file (checked before opening, and again on the open
+    descriptor), opened without blocking, at most GUI_MAX_BYTES, nested at most
+    GUI_MAX_DEPTH deep."""
+    import os
+    import stat
+    cdef bytes data
+    cdef int fd = -1
+    try:
+        if not stat.S_ISREG(os.stat(path).st_mode):
+            raise ValueError(f"PathPlanner settings {name!r} is not a regular file")
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)
+                     | getattr(os, "O_BINARY", 0) | getattr(os, "O_CLOEXEC", 0))
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise ValueError(f"PathPlanner settings {name!r} is not a regular file")
+        if st.st_size > GUI_MAX_BYTES:
+            raise ValueError(f"PathPlanner settings {name!r} is {st.st_size} bytes, more "
+                             f"than the {GUI_MAX_BYTES} this reader accepts")
+        chunks = []
+        size = 0
+        while size <= GUI_MAX_BYTES:
+            chunk = os.read(fd, GUI_MAX_BYTES + 1 - size)
+            if not chunk:
+                break
+            chunks.append(chunk)
+            size += len(chunk)
+    except OSError as e:
+        raise ValueError(f"cannot read PathPlanner settings {name!r}: {e}") from None
+    finally:
+        if fd >= 0:
+            os.close(fd)
+    if size > GUI_MAX_BYTES:            # it grew after the fstat
+        raise ValueError(f"PathPlanner settings {name!r} is more than {GUI_MAX_BYTES} "
+                         f"bytes, the most this reader accepts")
+    data = b"".join(chunks)
+    if json_depth(data) > GUI_MAX_DEPTH:
+        raise ValueError(f"PathPlanner settings {name!r} nests arrays or objects more than "
+                         f"{GUI_MAX_DEPTH} deep; it is not the GUI's settings.json")
+    return data
+
+
+cdef Py_ssize_t json_depth(bytes data):
+    """The deepest nesting of [ and { outside strings (one pass, no recursion); stops
+    counting past GUI_MAX_DEPTH."""
+    cdef const unsigned char* p = data
+    cdef Py_ssize_t i, n = len(data), depth = 0, deepest = 0
+    cdef bint in_string = False, escaped = False
+    cdef unsigned char c
+    for i in range(n):
+        c = p[i]
+        if in_string:
+            if escaped:
+                escaped = False
+            elif c == 92:               # backslash
+                escaped = True
+            elif c == 34:               # closing quote
+                in_string = False
+        elif c == 34:
+            in_string = True
+        elif c == 91 or c == 123:       # [ {
+            depth += 1
+            if depth > deepest:
+                deepest = depth
+                if deepest > GUI_MAX_DEPTH:
+                    break
+        elif c == 93 or c == 125:       # ] }
+            depth -= 1
+    return deepest
+
+
 cdef class RobotConfig:
     """RobotConfig(massKG, MOI, moduleConfig, moduleOffsets)
 
@@ -190,38 +277,53 @@ cdef class RobotConfig:
     @staticmethod
     def fromGUISettings(path):
         """Read PathPlanner's ``settings.json`` (``deploy/pathplanner/settings.json`` in a
-        robot project) at ``path`` into a RobotConfig: mass, MOI, wheel radius, gearing,
-        top speed, wheel COF, drive motor type and current limit, and the four module
-        positions. A file that is not a swerve (holonomic) robot's settings, lacks a key
-        or holds a value of the wrong kind raises ValueError naming it."""
+        robot project) at ``path`` (a str or os.PathLike; TypeError otherwise) into a
+        RobotConfig: mass, MOI, wheel radius, gearing, top speed, wheel COF, drive motor
+        type and current limit, and the four module positions. A file that is not a
+        swerve (holonomic) robot's settings, lacks a key or holds a value of the wrong
+        kind (a number must be finite as a float) raises ValueError naming it. So does a
+        path that is not a regular file (a FIFO or a device is not opened), a file larger
+        than 1 MiB (the GUI writes a few KB) or JSON nested deeper than 64 levels."""
         import json
         from drivekin.motor import DCMotor as Motor
+        cdef str name = settings_path(path)
+        cdef bytes data = read_settings(path, name)
         try:
-            with open(path, "rb") as f:
-                settings = json.loads(f.read())
-        except (OSError, UnicodeDecodeError, ValueError) as e:
-            raise ValueError(f"cannot read PathPlanner settings {str(path)!r}: {e}") from None
+            settings = json.loads(data)
+        except (UnicodeDecodeError, ValueError) as e:
+            raise ValueError(f"cannot read PathPlanner settings {name!r}: {e}") from None
         if type(settings) is not dict:
-            raise ValueError(f"{str(path)!r} is not PathPlanner settings (a JSON object)")
+            raise ValueError(f"{name!r} is not PathPlanner settings (a JSON object)")
 
         def get(key, kinds):
             if key not in settings:
-                raise ValueError(f"{str(path)!r} has no {key!r}; is it PathPlanner's "
+                raise ValueError(f"{name!r} has no {key!r}; is it PathPlanner's "
                                  f"settings.json?")
             v = settings[key]
             if type(v) not in kinds:
-                raise ValueError(f"{key!r} in {str(path)!r} must be a "
+                raise ValueError(f"{key!r} in {name!r} must be a "
                                  f"{' or '.join(k.__name__ for k in kinds)}, got {v!r}")
             return v
 
+        def number(key):
+            v = get(key, (int, float))
+            try:
+                x = float(v)
+            except OverflowError:           # an int beyond the largest float
+                raise ValueError(f"{key!r} in {name!r} must be a finite number, got an "
+                                 f"integer of {len(str(v))} digits") from None
+            if not isfinite(x):             # 1e400 and JSON's Infinity and NaN
+                raise ValueError(f"{key!r} in {name!r} must be a finite number, got {v!r}")
+            return x
+
         if not get("holonomicMode", (bool,)):
-            raise ValueError(f"{str(path)!r} describes a differential drive "
+            raise ValueError(f"{name!r} describes a differential drive "
                              f"(holonomicMode false); the swerve setpoint generator needs "
                              f"a swerve robot's settings")
-        num = {k: float(get(k, (int, float))) for k in _GUI_NUMBERS}
+        num = {k: number(k) for k in _GUI_NUMBERS}
         motor_type = get("driveMotorType", (str,))
         if motor_type not in _GUI_MOTORS:
-            raise ValueError(f"driveMotorType {motor_type!r} in {str(path)!r} is not one of "
+            raise ValueError(f"driveMotorType {motor_type!r} in {name!r} is not one of "
                              f"{', '.join(_GUI_MOTORS)}")
         gearbox = getattr(Motor, _GUI_MOTORS[motor_type])(1).withReduction(num["driveGearing"])
         module = ModuleConfig(num["driveWheelRadius"], num["maxDriveSpeed"], num["wheelCOF"],
