@@ -54,7 +54,8 @@ from drivekin.geometry cimport Translation2d
 from drivekin._core.drivetrain cimport Drivetrain
 from drivekin.odometry cimport _Odometry
 from drivekin.swerve cimport SwerveDriveKinematics, check_desaturated_discretize
-from drivekin._core.setpointkernel cimport SetpointKernel, check_step, generate, limits_t
+from drivekin._core.setpointkernel cimport (SetpointKernel, check_output, check_step,
+                                            generate, keep_headings, limits_t)
 from drivekin._core.errors import type_name
 
 cnp.import_array()
@@ -599,9 +600,11 @@ def generateSetpoints(generator, prevSetpoint, desiredVelocities, dt,
     cdef double* of = <double*>cnp.PyArray_DATA(feedforwards)
     cdef int has = g._load(prevSetpoint, constraints, &lim)
     cdef double* out = g.out
+    keep_headings(g)                    # a refused row restores the memory of before the call
     for i in range(count):
         want.x, want.y, want.z = v.data[3 * i], v.data[3 * i + 1], v.data[3 * i + 2]
         generate(&g.g, g.prev, want, t.data[i], u.data[i], &lim if has else NULL, out)
+        check_output(g, f"sample {i}: ")
         memcpy(g.prev, out, sizeof(double) * (3 + 3 * n))
         memcpy(oc + 3 * i, out, sizeof(double) * 3)
         memcpy(of + 5 * n * i, out + 3 + 3 * n, sizeof(double) * 5 * n)

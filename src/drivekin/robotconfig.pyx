@@ -245,6 +245,11 @@ cdef class RobotConfig:
                             "existing instance")
         positive_finite(massKG, "massKG", "mass in kg")
         positive_finite(MOI, "MOI", "moment of inertia in kg·m²")
+        # The setpoint generator's feedforwards are mass and MOI times accelerations: 1e308
+        # made them infinite.
+        if not (massKG <= 1e100 and MOI <= 1e100):
+            raise ValueError(f"{'massKG' if massKG > 1e100 else 'MOI'} must be at most 1e100 "
+                             f"(kg, kg·m²), got {massKG if massKG > 1e100 else MOI!r}")
         check_type(moduleConfig, ModuleConfig, "moduleConfig")
         if not (<ModuleConfig>moduleConfig).frozen:
             raise ValueError("moduleConfig has not been initialised")

@@ -188,7 +188,10 @@ class SwerveSetpointGenerator(SetpointKernel):
                          ) -> SwerveSetpoint:
         """Return the next :class:`SwerveSetpoint` from ``prevSetpoint`` (normally the
         previous call's result) towards ``desiredRobotRelativeVelocities`` (m/s, rad/s;
-        not discretized: the generator does that) over ``dt`` (s, > 0).
+        not discretized: the generator does that) over ``dt`` (s, from 1e-9 to 1e6).
+        Velocities (desired and previous) must be at most 1e100 in magnitude, so that
+        every setpoint is finite; one that still overflows (a robot whose own numbers
+        are extreme) raises ValueError.
 
         ``inputVoltage`` (V) is the drive motors' supply: NaN means 12 V, lower values
         are raised to ``brownoutVoltage``; the top speed scales by min(1, V/12).

@@ -25,14 +25,15 @@ differences."""
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.ref cimport Py_INCREF, PyObject
 from cpython.tuple cimport PyTuple_New, PyTuple_SET_ITEM
-from libc.math cimport isfinite
+from libc.math cimport fabs, isfinite
 from libc.string cimport memcpy
 
 from drivekin._core.args cimport (check_type, count_arg, is_array, positive_finite,
                                   read_floats, read_number, snapshot)
 from drivekin._core.kernels cimport rot_xy
-from drivekin._core.setpointkernel cimport (CONSTANTS, SCRATCH, SetpointKernel, check_step,
-                                            generate, limits_t)
+from drivekin._core.setpointkernel cimport (CONSTANTS, SAVED, SCRATCH, SetpointKernel,
+                                            check_output, check_step, generate,
+                                            keep_headings, limits_t)
 from drivekin._core.types cimport rot2_t, vec3_t
 from drivekin.chassis cimport ChassisVelocities, new_chassis_velocities
 from drivekin cimport robotconfig
@@ -460,7 +461,7 @@ cdef class SwerveSetpointGenerator(SetpointKernel):
         cdef SwerveDriveKinematics kin = SwerveDriveKinematics(c.locations)
         cdef Py_ssize_t n = len(c.locations), i
         cdef double* buf = <double*>PyMem_Malloc(
-            sizeof(double) * ((CONSTANTS + SCRATCH) * n + (3 + 3 * n) + (3 + 8 * n)))
+            sizeof(double) * ((CONSTANTS + SCRATCH + SAVED) * n + (3 + 3 * n) + (3 + 8 * n)))
         if buf == NULL:
             raise MemoryError()
         if self.buf != NULL:            # constructing the kinematics ran Python code
@@ -501,6 +502,7 @@ cdef class SwerveSetpointGenerator(SetpointKernel):
         self.g.scratch = buf + CONSTANTS * n
         self.prev = buf + (CONSTANTS + SCRATCH) * n
         self.out = self.prev + 3 + 3 * n
+        self.saved = self.out + 3 + 8 * n
         for i in range(n):
             self.g.pd[i] = c.pivots[i]
             a = rot_xy(kin.mx[i], kin.my[i])
@@ -563,8 +565,11 @@ cdef class SwerveSetpointGenerator(SetpointKernel):
             self.prev[3 + n + i] = mv.a.c
             self.prev[3 + 2 * n + i] = mv.a.s
         for i in range(3 + n):
-            if not isfinite(self.prev[i]):
-                raise ValueError(f"prevSetpoint must be finite, got {prevSetpoint!r}")
+            # check_step's bound on velocities, for the same reason (check_output keeps
+            # every output within it).
+            if not fabs(self.prev[i]) <= 1e100:
+                raise ValueError(f"prevSetpoint's velocities must be finite and at most 1e100 "
+                                 f"(m/s, rad/s) in magnitude, got {prevSetpoint!r}")
         return has
 
     @property
@@ -592,7 +597,10 @@ cdef class SwerveSetpointGenerator(SetpointKernel):
                          double inputVoltage=NAN, constraints=None):
         """Return the next :class:`SwerveSetpoint` from ``prevSetpoint`` (normally the
         previous call's result) towards ``desiredRobotRelativeVelocities`` (m/s, rad/s;
-        not discretized: the generator does that) over ``dt`` (s, > 0).
+        not discretized: the generator does that) over ``dt`` (s, from 1e-9 to 1e6).
+        Velocities (desired and previous) must be at most 1e100 in magnitude, so that
+        every setpoint is finite; one that still overflows (a robot whose own numbers
+        are extreme) raises ValueError.
 
         ``inputVoltage`` (V) is the drive motors' supply: NaN means 12 V, lower values
         are raised to ``brownoutVoltage``; the top speed scales by min(1, V/12).
@@ -605,7 +613,9 @@ cdef class SwerveSetpointGenerator(SetpointKernel):
         check_step(want, dt, inputVoltage, "")
         cdef SwerveSetpoint r = new_setpoint(self.g.n)
         cdef int has = self._load(prevSetpoint, constraints, &lim)
+        keep_headings(self)
         generate(&self.g, self.prev, want, dt, inputVoltage, &lim if has else NULL, self.out)
+        check_output(self, "")
         store_setpoint(r, self.out, self.g.n)
         return r
 
@@ -628,7 +638,9 @@ cdef class SwerveSetpointGenerator(SetpointKernel):
             raise ValueError(f"out has {len((<SwerveSetpoint>out).modules)} modules; this "
                              f"generator's config has {self.g.n}")
         cdef int has = self._load(prevSetpoint, constraints, &lim)
+        keep_headings(self)
         generate(&self.g, self.prev, want, dt, inputVoltage, &lim if has else NULL, self.out)
+        check_output(self, "")
         store_setpoint(<SwerveSetpoint>out, self.out, self.g.n)
 
     def __reduce__(self):

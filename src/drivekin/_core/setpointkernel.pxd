@@ -5,6 +5,7 @@ from drivekin._core.types cimport vec3_t
 cdef enum:
     SCRATCH = 20                 # arrays of n in generator_t.scratch
     CONSTANTS = 5                # pd, lc, ls, kx, ky
+    SAVED = 2                    # arrays of n in SetpointKernel.saved
 
 
 # Limits from PathConstraints, read into C before the kernel runs.
@@ -47,5 +48,12 @@ cdef class SetpointKernel:
     cdef double* buf             # per-module constants, scratch, prev and out
     cdef double* prev            # 3 + 3n: chassis, speeds, cos, sin
     cdef double* out             # 3 + 8n: chassis, speeds, cos, sin, 5 feedforward rows
+    cdef double* saved           # 2n: the heading memory before the call (keep_headings)
 
     cdef int _load(self, object prevSetpoint, object constraints, limits_t* lim) except -1
+
+
+# Around generate: keep_headings before the call (or the batch), check_output after each
+# step; an output that is not finite restores the kept heading memory and raises.
+cdef void keep_headings(SetpointKernel k) noexcept
+cdef int check_output(SetpointKernel k, str where) except -1

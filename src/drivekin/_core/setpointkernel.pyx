@@ -5,7 +5,9 @@ drivekin.batch.generateSetpoints both run ``generate`` on a SetpointKernel's buf
 
 Angles go through drivekin's Rotation2d arithmetic (WPILib's), so the branches
 PathPlannerLib takes on angle comparisons come out the same."""
+from libc.float cimport DBL_MAX
 from libc.math cimport M_PI, fabs, hypot, isfinite, isnan, sqrt
+from libc.string cimport memcpy
 from cpython.mem cimport PyMem_Free
 
 from drivekin._core.dkmath cimport atan2, sincos
@@ -18,6 +20,12 @@ from drivekin.motor cimport motor_current
 
 # PathPlannerLib's tolerance for "zero" speeds and velocities (issue #957 raised it from 1e-8).
 cdef double EPS = 1e-6
+# The per-step arguments' bounds (check_step): far beyond any robot and loop, and small
+# enough that velocity × dt, their squares and Δvelocity / dt stay finite (a 1.7e308 s dt
+# or 1e308 m/s gave NaN and inf).
+cdef double LARGEST = 1e100      # |velocity|, m/s and rad/s
+cdef double MIN_DT = 1e-9        # s
+cdef double MAX_DT = 1e6         # s
 
 # Rotation2d(π), as PathPlannerLib adds it (cos π, sin π: not exactly (−1, 0)).
 cdef rot2_t HALF_TURN = rot_rad(M_PI)
@@ -414,18 +422,46 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
 
 
 cdef int check_step(vec3_t want, double dt, double voltage, str where) except -1:
-    """The per-step arguments: finite desired velocities, dt > 0, a finite voltage or NaN
-    (``where`` prefixes the message, for the batch form's samples)."""
-    if not (isfinite(want.x) and isfinite(want.y) and isfinite(want.z)):
-        raise ValueError(f"{where}desiredRobotRelativeVelocities must be finite, got "
+    """The per-step arguments: desired velocities of at most LARGEST, dt from MIN_DT to
+    MAX_DT, a finite voltage or NaN (``where`` prefixes the message, for the batch form's
+    samples). Within these bounds (and the previous setpoint's, _load) the kernel's
+    products and quotients of them stay finite."""
+    if not (fabs(want.x) <= LARGEST and fabs(want.y) <= LARGEST and fabs(want.z) <= LARGEST):
+        raise ValueError(f"{where}desiredRobotRelativeVelocities must be finite and at most "
+                         f"{LARGEST:g} (m/s, rad/s) in magnitude, got "
                          f"({want.x!r}, {want.y!r}, {want.z!r})")
-    if not (isfinite(dt) and dt > 0.0):
-        raise ValueError(f"{where}dt must be a positive finite loop period in s, got {dt!r}")
+    if not (MIN_DT <= dt <= MAX_DT):
+        raise ValueError(f"{where}dt must be a loop period from {MIN_DT:g} to {MAX_DT:g} s, "
+                         f"got {dt!r}")
     if not (isnan(voltage) or isfinite(voltage)):
         raise ValueError(f"{where}inputVoltage must be a finite voltage in V (NaN for 12 V), "
                          f"got {voltage!r}")
     return 0
 
+
+cdef void keep_headings(SetpointKernel k) noexcept:
+    memcpy(k.saved, k.g.hc, sizeof(double) * k.g.n)
+    memcpy(k.saved + k.g.n, k.g.hs, sizeof(double) * k.g.n)
+
+
+cdef int check_output(SetpointKernel k, str where) except -1:
+    """Refuse a setpoint that is not finite, or whose velocities the next call would refuse
+    as its previous setpoint (beyond LARGEST): within check_step's bounds only a robot
+    whose own numbers are extreme gets there (module positions of 1e300 m). The heading
+    memory is left as keep_headings found it."""
+    cdef Py_ssize_t i, n = k.g.n
+    cdef bint bad = False
+    for i in range(3 + n):
+        bad |= not fabs(k.out[i]) <= LARGEST
+    for i in range(3 + n, 3 + 8 * n):
+        bad |= not fabs(k.out[i]) <= DBL_MAX
+    if not bad:
+        return 0
+    memcpy(k.g.hc, k.saved, sizeof(double) * n)
+    memcpy(k.g.hs, k.saved + n, sizeof(double) * n)
+    raise ValueError(f"{where}the setpoint overflowed: the generator's config holds numbers "
+                     f"too extreme for its model (module positions, wheel radius, top speed, "
+                     f"the motor's constants) at these velocities")
 
 cdef class SetpointKernel:
     """The generator's C state (setpointkernel.pxd): the robot's constants, the buffer
