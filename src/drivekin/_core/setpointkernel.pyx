@@ -98,31 +98,31 @@ cdef inline double drive_max_s(double x0, double y0, double x1, double y1,
     return 1.0
 
 
-cdef inline double band_exit(double x0, double y0, double x1, double y1,
-                             double step) noexcept nogil:
-    # The first s in [0, 1] at which |p0 + s (p1 − p0)| leaves [|p0| − step, |p0| + step]
+cdef inline double band_exit(double x0, double y0, double x1, double y1, double up,
+                             double down) noexcept nogil:
+    # The first s in [0, 1] at which |p0 + s (p1 − p0)| leaves [|p0| − down, |p0| + up]
     # (1 if it never does). PathPlannerLib's root (drive_max_s) only looks for the bound on
-    # the side of |p1|, so a speed that dips through |p0| − step on the way to a faster
+    # the side of |p1|, so a speed that dips through the lower bound on the way to a faster
     # end goes unseen, and another module's limit can stop the step inside the dip; and
     # its l0 + l1 − 2p cancels for a short step at speed (a 1e-8 m/s step near 4.3 m/s
     # came out 0: no limit). Here a = |Δ|² and b = 2 p0·Δ come from the difference, the
-    # constant terms from |p0| and the step, and the roots from the cancellation-free
+    # constant terms from |p0| and the steps, and the roots from the cancellation-free
     # form of the quadratic formula.
     cdef double dx = x1 - x0, dy = y1 - y0
     cdef double a = dx * dx + dy * dy, b = 2.0 * (x0 * dx + y0 * dy)
     cdef double r0 = sqrt(x0 * x0 + y0 * y0), s = 1.0, c, disc, q, lo, hi
     if not a > 0.0:
         return 1.0
-    # Leaving above: a s² + b s − step (2|p0| + step) = 0 has one positive root.
-    c = -step * (2.0 * r0 + step)
+    # Leaving above: a s² + b s − up (2|p0| + up) = 0 has one positive root.
+    c = -up * (2.0 * r0 + up)
     disc = b * b - 4.0 * a * c
     q = -0.5 * (b + (sqrt(disc) if b >= 0.0 else -sqrt(disc)))
     hi = jmax(q / a, c / q) if q != 0.0 else sqrt(-c / a)
     if hi < s:
         s = hi
-    # Leaving below (only where |p0| > step): c > 0, real roots only when heading inwards.
-    if r0 > step:
-        c = step * (2.0 * r0 - step)
+    # Leaving below (only where |p0| > down): c > 0, real roots only when heading inwards.
+    if r0 > down:
+        c = down * (2.0 * r0 - down)
         disc = b * b - 4.0 * a * c
         if disc >= 0.0 and b < 0.0:
             q = -0.5 * (b - sqrt(disc))
@@ -167,6 +167,60 @@ cdef inline vec3_t wpilib_discretize(double vx, double vy, double omega,
     return out
 
 
+cdef inline vec3_t module_force(const generator_t* g, Py_ssize_t m, double v, double c,
+                                double s, double tq_f, double tq_r,
+                                bint accelerating) noexcept nogil:
+    # PathPlannerLib's wheel force of module m (previous speed v, angle (c, s)) with its
+    # accelerating (motor torque tq_f less the friction) or braking (tq_r plus it) torque,
+    # and (z) its torque about the robot's centre.
+    cdef rot2_t fa = rot_cs(c, s)
+    cdef double tq, k, f
+    cdef vec3_t out
+    if accelerating:
+        tq = tq_f - g.torque_loss
+        k = 1.0
+        if v < 0.0:
+            fa = rot_plus(fa, HALF_TURN)
+    else:
+        tq = tq_r + g.torque_loss
+        k = -1.0
+        if v > 0.0:
+            fa = rot_plus(fa, HALF_TURN)
+    tq = jmin(tq, g.max_torque_friction)
+    f = tq / g.radius
+    out.x = f * k * fa.c
+    out.y = f * k * fa.s
+    out.z = 0.0
+    if not eps_eq(0.0, hypot(out.x, out.y)):
+        out.z = f * g.pd[m] * rot_minus(rot_xy(out.x, out.y), rot_cs(g.lc[m], g.ls[m])).s
+    return out
+
+
+cdef inline vec3_t chassis_acceleration(const generator_t* g, const limits_t* lim,
+                                        double fx, double fy, double torque) noexcept nogil:
+    # a = F / m, alpha = T / MOI, then PathConstraints' acceleration limits.
+    cdef vec3_t a
+    cdef double norm, k
+    a.x = fx / g.mass
+    a.y = fy / g.mass
+    a.z = torque / g.moi
+    if lim != NULL:
+        norm = hypot(a.x, a.y)
+        if norm > lim.max_a:
+            k = lim.max_a / norm
+            a.x = a.x * k
+            a.y = a.y * k
+        a.z = jmax(-lim.max_alpha, jmin(a.z, lim.max_alpha))
+    return a
+
+
+cdef inline double module_step(const generator_t* g, const limits_t* lim, Py_ssize_t m,
+                               double fx, double fy, double torque, double dt) noexcept nogil:
+    # Module m's largest speed change in dt under the chassis force (fx, fy) and torque.
+    cdef vec3_t a = chassis_acceleration(g, lim, fx, fy, torque)
+    return hypot(a.x - a.z * g.my[m], a.y + a.z * g.mx[m]) * dt
+
+
 cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt,
                    double voltage, const limits_t* lim, double* out) noexcept nogil:
     """One setpoint. ``prev`` holds the previous chassis velocities then n speeds, n
@@ -194,15 +248,19 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
     cdef double* ts = w + 14 * n
     cdef double* wfx = w + 15 * n   # wheel force vectors
     cdef double* wfy = w + 16 * n
+    cdef double* acl = w + 17 * n   # 1 where the module takes its accelerating torque
+    cdef double* ox = w + 18 * n    # its other torque's force less its own (default mode)
+    cdef double* oy = w + 19 * n
+    cdef double* ot = w + 20 * n    # ... and torque about the centre
     cdef double* rsp = out + 3      # the result's module speeds, angles
     cdef double* rc = out + 3 + n
     cdef double* rs = out + 3 + 2 * n
     cdef double* ff = out + 3 + 3 * n
     cdef double max_speed, k, norm, dx, dy, dth, min_s, step, s, cur, rcur, tq_f, tq_r
-    cdef double fcx, fcy, torque, ax, ay, alpha, x1, y1, fx, fy, tq, wd, applied, f
+    cdef double fcx, fcy, torque, x1, y1, fx, fy, tq, wd, applied, f, other
     cdef double r3[3]
-    cdef vec3_t d, ret
-    cdef rot2_t ph, dh, a, fa
+    cdef vec3_t d, ret, fo, fother, ca
+    cdef rot2_t ph, dh, a
     cdef bint steer = True, all_flip, accelerating
     cdef int attempt
 
@@ -309,6 +367,11 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
     # Drive torque: what each motor can give at its present speed on this voltage, less
     # (accelerating) or plus (braking) the module's friction, capped by wheel slip; the
     # forces give the chassis acceleration, and that each module's largest speed step.
+    # PathPlannerLib picks each module's torque by its desired speed (signed, once
+    # optimised); the default mode also computes the other torque's force (ox, oy, ot),
+    # so that a module can take its accelerating step up and its braking step down
+    # whatever the desired speed says (a module turned by more than 90° speeds up though
+    # its optimised desired speed is below its previous one).
     fcx = 0.0
     fcy = 0.0
     torque = 0.0
@@ -323,44 +386,27 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         if fabs(rot_radians(rot_minus(rot_cs(dc[m], ds[m]), rot_cs(pcs[m], psn[m])))
                 * (180.0 / M_PI)) > 90.0:
             s = -s
-        fa = rot_cs(pcs[m], psn[m])
         accelerating = (eps_eq(psp[m], 0.0) or (psp[m] > 0.0 and s >= psp[m])
                         or (psp[m] < 0.0 and s <= psp[m]))
-        if accelerating:
-            tq = tq_f - g.torque_loss
-            k = 1.0
-            if psp[m] < 0.0:
-                fa = rot_plus(fa, HALF_TURN)
-        else:
-            tq = tq_r + g.torque_loss
-            k = -1.0
-            if psp[m] > 0.0:
-                fa = rot_plus(fa, HALF_TURN)
-        tq = jmin(tq, g.max_torque_friction)
-        f = tq / g.radius
-        fx = f * k * fa.c
-        fy = f * k * fa.s
-        fcx = fcx + fx
-        fcy = fcy + fy
-        if not eps_eq(0.0, hypot(fx, fy)):
-            torque = torque + f * g.pd[m] * rot_minus(rot_xy(fx, fy), rot_cs(g.lc[m], g.ls[m])).s
-    ax = fcx / g.mass
-    ay = fcy / g.mass
-    alpha = torque / g.moi
-    if lim != NULL:
-        norm = hypot(ax, ay)
-        if norm > lim.max_a:
-            k = lim.max_a / norm
-            ax = ax * k
-            ay = ay * k
-        alpha = jmax(-lim.max_alpha, jmin(alpha, lim.max_alpha))
+        fo = module_force(g, m, psp[m], pcs[m], psn[m], tq_f, tq_r, accelerating)
+        fcx = fcx + fo.x
+        fcy = fcy + fo.y
+        torque = torque + fo.z
+        if not g.compat:
+            acl[m] = 1.0 if accelerating else 0.0
+            fother = module_force(g, m, psp[m], pcs[m], psn[m], tq_f, tq_r, not accelerating)
+            ox[m] = fother.x - fo.x
+            oy[m] = fother.y - fo.y
+            ot[m] = fother.z - fo.z
+    ca = chassis_acceleration(g, lim, fcx, fcy, torque)
     # A velocity conversion, as in PathPlannerLib: it updates the heading memory.
-    swerve_ik(n, g.mx, g.my, ax, ay, alpha, g.hc, g.hs, acc, tc, ts)
+    swerve_ik(n, g.mx, g.my, ca.x, ca.y, ca.z, g.hc, g.hs, acc, tc, ts)
 
     # Drive: search the segment the limits so far left, [prev, prev + min_s·Δ]. Its root
     # is relative to that segment, so the step is min_s·s (Team 254); PathPlannerLib takes
-    # s itself. The default mode also takes the first point where the module's speed leaves
-    # the band of one step around its previous speed on either side (band_exit).
+    # s itself. The default mode takes the first point where the module's speed leaves the
+    # band [|v0| − braking step, |v0| + accelerating step] (band_exit): the step of its
+    # torque above, the other from the chassis acceleration with its other torque.
     for m in range(n):
         if min_s == 0.0:
             break
@@ -374,7 +420,11 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         if g.compat:
             min_s = jmin(min_s, drive_max_s(pvx[m], pvy[m], x1, y1, step))
         else:
-            min_s = jmin(min_s, min_s * band_exit(pvx[m], pvy[m], x1, y1, step))
+            other = module_step(g, lim, m, fcx + ox[m], fcy + oy[m], torque + ot[m], dt)
+            if acl[m] != 0.0:
+                min_s = jmin(min_s, min_s * band_exit(pvx[m], pvy[m], x1, y1, step, other))
+            else:
+                min_s = jmin(min_s, min_s * band_exit(pvx[m], pvy[m], x1, y1, other, step))
 
     ret.x = prev[0] + min_s * dx
     ret.y = prev[1] + min_s * dy
