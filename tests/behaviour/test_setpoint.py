@@ -416,3 +416,36 @@ def test_all_modules_flip_stops_first():
         speeds.append(sp.robotRelativeVelocities.vx)
     assert all(b <= a + 1e-12 for a, b in zip(speeds, speeds[1:]))   # never speeds up forwards
     assert speeds[-1] == pytest.approx(-3.0)
+
+
+class _Meddling:
+    """Duck-typed constraints whose getter writes bad values into the call's arrays (NaN
+    rows, dt 0 and -1, an infinite voltage) and then gives a limit."""
+
+    def __init__(self, rows, dts, volts):
+        self.rows, self.dts, self.volts = rows, dts, volts
+        self.maxAccelerationMpsSq = 6.0
+        self.maxAngularVelocityRps = 5.0
+        self.maxAngularAccelerationRpsSq = 12.0
+
+    @property
+    def maxVelocityMps(self):
+        self.rows[:] = np.nan
+        self.dts[0], self.dts[1:] = 0.0, -1.0
+        self.volts[:] = np.inf
+        return 3.5
+
+
+def test_batch_reads_every_input_before_the_constraints_run_code():
+    rows = np.array([c for c in COMMANDS for _ in range(5)])
+    dts = np.linspace(0.01, 0.03, len(rows))
+    volts = np.full(len(rows), 11.0)
+    expect = batch.generateSetpoints(SwerveSetpointGenerator(_config(), 9.0), _zeros(),
+                                     rows.copy(), dts.copy(), volts.copy(),
+                                     PathConstraints(3.5, 6.0, 5.0, 12.0))
+    meddling = _Meddling(rows, dts, volts)
+    got = batch.generateSetpoints(SwerveSetpointGenerator(_config(), 9.0), _zeros(), rows,
+                                  dts, volts, meddling)
+    assert np.isnan(rows).all() and dts[0] == 0.0 and (volts == np.inf).all()   # it ran
+    for a, b in zip(got, expect):
+        assert np.array_equal(a, b) and np.isfinite(a).all()
