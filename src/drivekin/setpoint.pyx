@@ -198,7 +198,10 @@ cdef class DriveFeedforwards:
         if is_array(accelerationsMPSSq) or type(accelerationsMPSSq) in (list, tuple):
             n = len(accelerationsMPSSq)
         else:
-            read_row(accelerationsMPSSq, FEEDFORWARD_NAMES[0], 0, NULL)    # the TypeError
+            raise TypeError(f"accelerationsMPSSq must be a list or tuple of floats (one per "
+                            f"module) or a 1-D float64 array, got "
+                            f"{type_name(accelerationsMPSSq)} (list(...) makes a list of "
+                            f"another iterable)")
         if n < 1:
             raise ValueError("accelerationsMPSSq must hold one value per module, got none")
         cdef double* d = <double*>PyMem_Malloc(sizeof(double) * 5 * n)
