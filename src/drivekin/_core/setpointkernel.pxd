@@ -3,7 +3,7 @@
 from drivekin._core.types cimport vec3_t
 
 cdef enum:
-    SCRATCH = 21                 # arrays of n in generator_t.scratch
+    SCRATCH = 20                 # arrays of n in generator_t.scratch
     CONSTANTS = 5                # pd, lc, ls, kx, ky
     SAVED = 2                    # arrays of n in SetpointKernel.saved
 

@@ -214,10 +214,16 @@ cdef inline vec3_t chassis_acceleration(const generator_t* g, const limits_t* li
     return a
 
 
-cdef inline double module_step(const generator_t* g, const limits_t* lim, Py_ssize_t m,
-                               double fx, double fy, double torque, double dt) noexcept nogil:
-    # Module m's largest speed change in dt under the chassis force (fx, fy) and torque.
-    cdef vec3_t a = chassis_acceleration(g, lim, fx, fy, torque)
+cdef inline double other_step(const generator_t* g, const limits_t* lim, Py_ssize_t m,
+                              double v, double c, double s, double tq_f, double tq_r,
+                              bint accelerating, double fx, double fy, double torque,
+                              double dt) noexcept nogil:
+    # Module m's largest speed change in dt with its accelerating (or braking) torque in
+    # place of the other in the chassis force (fx, fy) and torque.
+    cdef vec3_t own = module_force(g, m, v, c, s, tq_f, tq_r, not accelerating)
+    cdef vec3_t alt = module_force(g, m, v, c, s, tq_f, tq_r, accelerating)
+    cdef vec3_t a = chassis_acceleration(g, lim, fx - own.x + alt.x, fy - own.y + alt.y,
+                                         torque - own.z + alt.z)
     return hypot(a.x - a.z * g.my[m], a.y + a.z * g.mx[m]) * dt
 
 
@@ -249,17 +255,16 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
     cdef double* wfx = w + 15 * n   # wheel force vectors
     cdef double* wfy = w + 16 * n
     cdef double* acl = w + 17 * n   # 1 where the module takes its accelerating torque
-    cdef double* ox = w + 18 * n    # its other torque's force less its own (default mode)
-    cdef double* oy = w + 19 * n
-    cdef double* ot = w + 20 * n    # ... and torque about the centre
+    cdef double* tqf = w + 18 * n   # its accelerating and braking motor torques, N·m
+    cdef double* tqr = w + 19 * n
     cdef double* rsp = out + 3      # the result's module speeds, angles
     cdef double* rc = out + 3 + n
     cdef double* rs = out + 3 + 2 * n
     cdef double* ff = out + 3 + 3 * n
     cdef double max_speed, k, norm, dx, dy, dth, min_s, step, s, cur, rcur, tq_f, tq_r
-    cdef double fcx, fcy, torque, x1, y1, fx, fy, tq, wd, applied, f, other
+    cdef double fcx, fcy, torque, x1, y1, fx, fy, tq, wd, applied, f, up, down
     cdef double r3[3]
-    cdef vec3_t d, ret, fo, fother, ca
+    cdef vec3_t d, ret, fo, ca
     cdef rot2_t ph, dh, a
     cdef bint steer = True, all_flip, accelerating
     cdef int attempt
@@ -368,10 +373,10 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
     # (accelerating) or plus (braking) the module's friction, capped by wheel slip; the
     # forces give the chassis acceleration, and that each module's largest speed step.
     # PathPlannerLib picks each module's torque by its desired speed (signed, once
-    # optimised); the default mode also computes the other torque's force (ox, oy, ot),
-    # so that a module can take its accelerating step up and its braking step down
-    # whatever the desired speed says (a module turned by more than 90° speeds up though
-    # its optimised desired speed is below its previous one).
+    # optimised); the default mode keeps both torques (tqf, tqr), so that a module can
+    # take its accelerating step up and its braking step down whatever the desired speed
+    # says (a module turned by more than 90° speeds up though its optimised desired speed
+    # is below its previous one).
     fcx = 0.0
     fcy = 0.0
     torque = 0.0
@@ -392,12 +397,9 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         fcx = fcx + fo.x
         fcy = fcy + fo.y
         torque = torque + fo.z
-        if not g.compat:
-            acl[m] = 1.0 if accelerating else 0.0
-            fother = module_force(g, m, psp[m], pcs[m], psn[m], tq_f, tq_r, not accelerating)
-            ox[m] = fother.x - fo.x
-            oy[m] = fother.y - fo.y
-            ot[m] = fother.z - fo.z
+        acl[m] = 1.0 if accelerating else 0.0
+        tqf[m] = tq_f
+        tqr[m] = tq_r
     ca = chassis_acceleration(g, lim, fcx, fcy, torque)
     # A velocity conversion, as in PathPlannerLib: it updates the heading memory.
     swerve_ik(n, g.mx, g.my, ca.x, ca.y, ca.z, g.hc, g.hs, acc, tc, ts)
@@ -406,7 +408,8 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
     # is relative to that segment, so the step is min_s·s (Team 254); PathPlannerLib takes
     # s itself. The default mode takes the first point where the module's speed leaves the
     # band [|v0| − braking step, |v0| + accelerating step] (band_exit): the step of its
-    # torque above, the other from the chassis acceleration with its other torque.
+    # torque above, the other from the chassis acceleration with its other torque
+    # (other_step).
     for m in range(n):
         if min_s == 0.0:
             break
@@ -420,11 +423,18 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         if g.compat:
             min_s = jmin(min_s, drive_max_s(pvx[m], pvy[m], x1, y1, step))
         else:
-            other = module_step(g, lim, m, fcx + ox[m], fcy + oy[m], torque + ot[m], dt)
+            # The other torque's step matters only where its bound can be crossed: below
+            # for a module whose speed starts falling, above for one that ends faster.
+            up = step
+            down = step
             if acl[m] != 0.0:
-                min_s = jmin(min_s, min_s * band_exit(pvx[m], pvy[m], x1, y1, step, other))
-            else:
-                min_s = jmin(min_s, min_s * band_exit(pvx[m], pvy[m], x1, y1, other, step))
+                if pvx[m] * (x1 - pvx[m]) + pvy[m] * (y1 - pvy[m]) < 0.0:
+                    down = other_step(g, lim, m, psp[m], pcs[m], psn[m], tqf[m], tqr[m],
+                                      False, fcx, fcy, torque, dt)
+            elif x1 * x1 + y1 * y1 > pvx[m] * pvx[m] + pvy[m] * pvy[m]:
+                up = other_step(g, lim, m, psp[m], pcs[m], psn[m], tqf[m], tqr[m], True,
+                                fcx, fcy, torque, dt)
+            min_s = jmin(min_s, min_s * band_exit(pvx[m], pvy[m], x1, y1, up, down))
 
     ret.x = prev[0] + min_s * dx
     ret.y = prev[1] + min_s * dy
