@@ -611,7 +611,7 @@ def generateSetpoints(generator, prevSetpoint, desiredVelocities, dt,
         has = g._load(prevSetpoint, constraints, &lim)
         for i in range(count):
             want.x, want.y, want.z = rows[3 * i], rows[3 * i + 1], rows[3 * i + 2]
-            check_step(want, dts[i], volts[i], f"sample {i}: ")
+            check_step(want, dts[i], volts[i], i)
         n = g.g.n
         chassis = np.empty((count, 3))
         modules = np.empty((count, n, 2))
@@ -624,7 +624,7 @@ def generateSetpoints(generator, prevSetpoint, desiredVelocities, dt,
         for i in range(count):
             want.x, want.y, want.z = rows[3 * i], rows[3 * i + 1], rows[3 * i + 2]
             generate(&g.g, g.prev, want, dts[i], volts[i], &lim if has else NULL, out)
-            check_output(g, f"sample {i}: ")
+            check_output(g, i)
             memcpy(g.prev, out, sizeof(double) * (3 + 3 * n))
             memcpy(oc + 3 * i, out, sizeof(double) * 3)
             memcpy(of + 5 * n * i, out + 3 + 3 * n, sizeof(double) * 5 * n)

@@ -613,12 +613,12 @@ cdef class SwerveSetpointGenerator(SetpointKernel):
         check_type(desiredRobotRelativeVelocities, ChassisVelocities,
                    "desiredRobotRelativeVelocities")
         cdef vec3_t want = (<ChassisVelocities>desiredRobotRelativeVelocities).v
-        check_step(want, dt, inputVoltage, "")
+        check_step(want, dt, inputVoltage, -1)
         cdef SwerveSetpoint r = new_setpoint(self.g.n)
         cdef int has = self._load(prevSetpoint, constraints, &lim)
         keep_headings(self)
         generate(&self.g, self.prev, want, dt, inputVoltage, &lim if has else NULL, self.out)
-        check_output(self, "")
+        check_output(self, -1)
         store_setpoint(r, self.out, self.g.n)
         return r
 
@@ -634,7 +634,7 @@ cdef class SwerveSetpointGenerator(SetpointKernel):
         check_type(desiredRobotRelativeVelocities, ChassisVelocities,
                    "desiredRobotRelativeVelocities")
         cdef vec3_t want = (<ChassisVelocities>desiredRobotRelativeVelocities).v
-        check_step(want, dt, inputVoltage, "")
+        check_step(want, dt, inputVoltage, -1)
         check_type(out, SwerveSetpoint, "out")
         (<SwerveSetpoint>out)._ready()
         if len((<SwerveSetpoint>out).modules) != self.g.n:
@@ -643,7 +643,7 @@ cdef class SwerveSetpointGenerator(SetpointKernel):
         cdef int has = self._load(prevSetpoint, constraints, &lim)
         keep_headings(self)
         generate(&self.g, self.prev, want, dt, inputVoltage, &lim if has else NULL, self.out)
-        check_output(self, "")
+        check_output(self, -1)
         store_setpoint(<SwerveSetpoint>out, self.out, self.g.n)
 
     def __reduce__(self):

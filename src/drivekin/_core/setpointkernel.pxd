@@ -37,7 +37,8 @@ cdef struct generator_t:
 cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt,
                    double voltage, const limits_t* lim, double* out) noexcept nogil
 
-cdef int check_step(vec3_t want, double dt, double voltage, str where) except -1
+# sample ≥ 0: the batch form's sample, named in the messages; -1 for the per-call form.
+cdef int check_step(vec3_t want, double dt, double voltage, Py_ssize_t sample) except -1
 
 
 # The generator's C state; drivekin.setpoint.SwerveSetpointGenerator derives from it and
@@ -56,4 +57,4 @@ cdef class SetpointKernel:
 # Around generate: keep_headings before the call (or the batch), check_output after each
 # step; an output that is not finite restores the kept heading memory and raises.
 cdef void keep_headings(SetpointKernel k) noexcept
-cdef int check_output(SetpointKernel k, str where) except -1
+cdef int check_output(SetpointKernel k, Py_ssize_t sample) except -1

@@ -481,21 +481,26 @@ cdef void generate(generator_t* g, const double* prev, vec3_t desired, double dt
         ff[4 * n + m] = wfy[m]
 
 
-cdef int check_step(vec3_t want, double dt, double voltage, str where) except -1:
+cdef str where(Py_ssize_t sample):
+    # The batch form's messages name the sample (built only for a message).
+    return "" if sample < 0 else f"sample {sample}: "
+
+
+cdef int check_step(vec3_t want, double dt, double voltage, Py_ssize_t sample) except -1:
     """The per-step arguments: desired velocities of at most LARGEST, dt from MIN_DT to
-    MAX_DT, a finite voltage or NaN (``where`` prefixes the message, for the batch form's
-    samples). Within these bounds (and the previous setpoint's, _load) the kernel's
+    MAX_DT, a finite voltage or NaN (``sample`` ≥ 0 names the batch form's sample in the
+    message). Within these bounds (and the previous setpoint's, _load) the kernel's
     products and quotients of them stay finite."""
     if not (fabs(want.x) <= LARGEST and fabs(want.y) <= LARGEST and fabs(want.z) <= LARGEST):
-        raise ValueError(f"{where}desiredRobotRelativeVelocities must be finite and at most "
-                         f"{LARGEST:g} (m/s, rad/s) in magnitude, got "
+        raise ValueError(f"{where(sample)}desiredRobotRelativeVelocities must be finite and "
+                         f"at most {LARGEST:g} (m/s, rad/s) in magnitude, got "
                          f"({want.x!r}, {want.y!r}, {want.z!r})")
     if not (MIN_DT <= dt <= MAX_DT):
-        raise ValueError(f"{where}dt must be a loop period from {MIN_DT:g} to {MAX_DT:g} s, "
-                         f"got {dt!r}")
+        raise ValueError(f"{where(sample)}dt must be a loop period from {MIN_DT:g} to "
+                         f"{MAX_DT:g} s, got {dt!r}")
     if not (isnan(voltage) or isfinite(voltage)):
-        raise ValueError(f"{where}inputVoltage must be a finite voltage in V (NaN for 12 V), "
-                         f"got {voltage!r}")
+        raise ValueError(f"{where(sample)}inputVoltage must be a finite voltage in V (NaN for "
+                         f"12 V), got {voltage!r}")
     return 0
 
 
@@ -504,7 +509,7 @@ cdef void keep_headings(SetpointKernel k) noexcept:
     memcpy(k.saved + k.g.n, k.g.hs, sizeof(double) * k.g.n)
 
 
-cdef int check_output(SetpointKernel k, str where) except -1:
+cdef int check_output(SetpointKernel k, Py_ssize_t sample) except -1:
     """Refuse a setpoint that is not finite, or whose velocities the next call would refuse
     as its previous setpoint (beyond LARGEST): within check_step's bounds only a robot
     whose own numbers are extreme gets there (module positions of 1e300 m). The heading
@@ -519,9 +524,9 @@ cdef int check_output(SetpointKernel k, str where) except -1:
         return 0
     memcpy(k.g.hc, k.saved, sizeof(double) * n)
     memcpy(k.g.hs, k.saved + n, sizeof(double) * n)
-    raise ValueError(f"{where}the setpoint overflowed: the generator's config holds numbers "
-                     f"too extreme for its model (module positions, wheel radius, top speed, "
-                     f"the motor's constants) at these velocities")
+    raise ValueError(f"{where(sample)}the setpoint overflowed: the generator's config holds "
+                     f"numbers too extreme for its model (module positions, wheel radius, top "
+                     f"speed, the motor's constants) at these velocities")
 
 cdef class SetpointKernel:
     """The generator's C state (setpointkernel.pxd): the robot's constants, the buffer
