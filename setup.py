@@ -54,7 +54,8 @@ compile_args = (["-O3", "-fno-math-errno", "-fno-trapping-math", "-ffp-contract=
 
 modules = ["geometry", "chassis", "swerve", "_core.wheels", "_core.drivetrain", "differential",
            "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "batch",
-           "_core.alloccount", "_core.wpilog", "motor", "setpoint"]
+           "_core.alloccount", "_core.wpilog", "motor", "robotconfig", "_core.setpointkernel",
+           "setpoint"]
 
 
 def link_args(system=sys.platform, machine=platform.machine()):

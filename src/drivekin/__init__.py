@@ -107,7 +107,8 @@ __all__ += [
     "DifferentialSwerveModuleVelocities",
     "DifferentialSwerveMotorVelocities",
 ]
-# PathPlannerLib's swerve setpoint generator (drivekin.setpoint).
+# PathPlannerLib's swerve setpoint generator (drivekin.setpoint; ModuleConfig and RobotConfig
+# live in drivekin.robotconfig, which drivekin.setpoint re-exports).
 __all__ += [
     "DriveFeedforwards",
     "ModuleConfig",

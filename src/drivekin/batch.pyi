@@ -185,8 +185,10 @@ def generateSetpoints(
     Returns ``(velocities, modules, feedforwards)``: ``(T, 3)`` chassis velocities,
     ``(T, N, 2)`` module ``[velocity m/s, angle rad]`` and ``(T, 5, N)`` feedforwards in
     :class:`DriveFeedforwards`' order. The same numbers as T calls, the generator's
-    heading memory included (it is left as the last call leaves it). Every row is checked
-    before any is computed; the GIL is held (the generator's scratch is shared)."""
+    heading memory included (it is left as the last call leaves it). Every input is copied
+    before any is checked (a constraints object's getters may run code), every row is
+    checked before any is computed, and a refused call leaves the generator as it was;
+    the GIL is held (the generator's scratch is shared)."""
 
 def toRobotRelative(
     chassisVectors: _Array,

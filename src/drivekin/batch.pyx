@@ -54,7 +54,8 @@ from drivekin.geometry cimport Translation2d
 from drivekin._core.drivetrain cimport Drivetrain
 from drivekin.odometry cimport _Odometry
 from drivekin.swerve cimport SwerveDriveKinematics, check_desaturated_discretize
-from drivekin.setpoint cimport (SwerveSetpointGenerator, check_step, generate, limits_t)
+from drivekin._core.setpointkernel cimport (SetpointKernel, check_output, check_step,
+                                            generate, keep_headings, limits_t)
 from drivekin._core.errors import type_name
 
 cnp.import_array()
@@ -576,38 +577,62 @@ def generateSetpoints(generator, prevSetpoint, desiredVelocities, dt,
     Returns ``(velocities, modules, feedforwards)``: ``(T, 3)`` chassis velocities,
     ``(T, N, 2)`` module ``[velocity m/s, angle rad]`` and ``(T, 5, N)`` feedforwards in
     :class:`DriveFeedforwards`' order. The same numbers as T calls, the generator's
-    heading memory included (it is left as the last call leaves it). Every row is checked
-    before any is computed; the GIL is held (the generator's scratch is shared)."""
-    if type(generator) is not SwerveSetpointGenerator:
+    heading memory included (it is left as the last call leaves it). Every input is copied
+    before any is checked (a constraints object's getters may run code), every row is
+    checked before any is computed, and a refused call leaves the generator as it was;
+    the GIL is held (the generator's scratch is shared)."""
+    if not isinstance(generator, SetpointKernel):
         raise TypeError(f"generateSetpoints takes a SwerveSetpointGenerator as its first "
                         f"argument, got {type_name(generator)}")
-    cdef SwerveSetpointGenerator g = <SwerveSetpointGenerator>generator
+    cdef SetpointKernel g = <SetpointKernel>generator
+    # Every input is read into private memory before any is validated: reading the next
+    # one (a duck-typed constraints object's getters, a number's conversion) can run Python
+    # code that writes into the arrays already read.
     cdef _Stack v = _stack(desiredVelocities, (3,), "desiredVelocities", False)
-    cdef _Stack t = _per_sample(dt, v.n, False, "dt")
-    cdef _Stack u = _per_sample(inputVoltage, v.n, False, "inputVoltage")
-    cdef Py_ssize_t i, m, count = v.n, n = g.g.n
+    cdef Py_ssize_t i, m, count = v.n, n
+    cdef double* rows = _scratch(5 * count)       # [vx, vy, ω] × count, dt, voltage
+    cdef double* dts = rows + 3 * count
+    cdef double* volts = rows + 4 * count
+    cdef double* oc
+    cdef double* om
+    cdef double* of
+    cdef double* out
     cdef vec3_t want
     cdef limits_t lim
-    for i in range(count):
-        want.x, want.y, want.z = v.data[3 * i], v.data[3 * i + 1], v.data[3 * i + 2]
-        check_step(want, t.data[i], u.data[i], f"sample {i}: ")
-    chassis = np.empty((count, 3))
-    modules = np.empty((count, n, 2))
-    feedforwards = np.empty((count, 5, n))
-    cdef double* oc = <double*>cnp.PyArray_DATA(chassis)
-    cdef double* om = <double*>cnp.PyArray_DATA(modules)
-    cdef double* of = <double*>cnp.PyArray_DATA(feedforwards)
-    cdef int has = g._load(prevSetpoint, constraints, &lim)
-    cdef double* out = g.out
-    for i in range(count):
-        want.x, want.y, want.z = v.data[3 * i], v.data[3 * i + 1], v.data[3 * i + 2]
-        generate(&g.g, g.prev, want, t.data[i], u.data[i], &lim if has else NULL, out)
-        memcpy(g.prev, out, sizeof(double) * (3 + 3 * n))
-        memcpy(oc + 3 * i, out, sizeof(double) * 3)
-        memcpy(of + 5 * n * i, out + 3 + 3 * n, sizeof(double) * 5 * n)
-        for m in range(n):
-            om[2 * (n * i + m)] = out[3 + m]
-            om[2 * (n * i + m) + 1] = atan2(out[3 + 2 * n + m], out[3 + n + m])
+    cdef _Stack t, u
+    cdef int has
+    try:
+        memcpy(rows, v.data, sizeof(double) * 3 * count)
+        t = _per_sample(dt, count, False, "dt")
+        memcpy(dts, t.data, sizeof(double) * count)
+        u = _per_sample(inputVoltage, count, False, "inputVoltage")
+        memcpy(volts, u.data, sizeof(double) * count)
+        # The previous setpoint is copied after the constraints' getters have run.
+        has = g._load(prevSetpoint, constraints, &lim)
+        for i in range(count):
+            want.x, want.y, want.z = rows[3 * i], rows[3 * i + 1], rows[3 * i + 2]
+            check_step(want, dts[i], volts[i], i)
+        n = g.g.n
+        chassis = np.empty((count, 3))
+        modules = np.empty((count, n, 2))
+        feedforwards = np.empty((count, 5, n))
+        oc = <double*>cnp.PyArray_DATA(chassis)
+        om = <double*>cnp.PyArray_DATA(modules)
+        of = <double*>cnp.PyArray_DATA(feedforwards)
+        out = g.out
+        keep_headings(g)                # a refused row restores the memory of before the call
+        for i in range(count):
+            want.x, want.y, want.z = rows[3 * i], rows[3 * i + 1], rows[3 * i + 2]
+            generate(&g.g, g.prev, want, dts[i], volts[i], &lim if has else NULL, out)
+            check_output(g, i)
+            memcpy(g.prev, out, sizeof(double) * (3 + 3 * n))
+            memcpy(oc + 3 * i, out, sizeof(double) * 3)
+            memcpy(of + 5 * n * i, out + 3 + 3 * n, sizeof(double) * 5 * n)
+            for m in range(n):
+                om[2 * (n * i + m)] = out[3 + m]
+                om[2 * (n * i + m) + 1] = atan2(out[3 + 2 * n + m], out[3 + n + m])
+    finally:
+        PyMem_Free(rows)
     return chassis, modules, feedforwards
 
 

@@ -215,12 +215,19 @@ cdef class DCMotor:
         divided by it, the currents unchanged. The reduction must be positive and
         finite."""
         cdef DCMotor m
+        cdef double ts, fs
         if not self.frozen:
             uninitialised()
         positive_finite(gearboxReduction, "gearboxReduction", "ratio")
+        ts = self.stall_torque * gearboxReduction
+        fs = self.free_speed / gearboxReduction
+        if not (isfinite(ts) and ts > 0.0 and isfinite(fs) and fs > 0.0):
+            # The ratio's fault, not the constants' (1e-320 made the free speed inf).
+            raise ValueError(f"gearboxReduction {gearboxReduction!r} is out of range for "
+                             f"this motor: it makes the stall torque {ts!r} N·m and the free "
+                             f"speed {fs!r} rad/s, which must be positive and finite")
         m = DCMotor.__new__(DCMotor)
-        set_constants(m, self.v, self.stall_torque * gearboxReduction, self.stall_current,
-                      self.free_current, self.free_speed / gearboxReduction, 1.0,
+        set_constants(m, self.v, ts, self.stall_current, self.free_current, fs, 1.0,
                       "gearboxReduction")
         return m
 

@@ -30,12 +30,12 @@ differences."""
 # either side.
 
 from collections.abc import Sequence
-from os import PathLike
 from typing import ClassVar, Literal, Protocol, final
 
+from drivekin._core.setpointkernel import SetpointKernel
 from drivekin.chassis import ChassisVelocities
-from drivekin.geometry import Translation2d
-from drivekin.motor import DCMotor
+from drivekin.robotconfig import ModuleConfig as ModuleConfig
+from drivekin.robotconfig import RobotConfig as RobotConfig
 from drivekin.swerve import SwerveModuleVelocity
 
 __all__ = ["DriveFeedforwards", "ModuleConfig", "PathConstraints", "RobotConfig",
@@ -51,99 +51,6 @@ class _Constraints(Protocol):
     def maxAngularVelocityRps(self) -> float: ...
     @property
     def maxAngularAccelerationRpsSq(self) -> float: ...
-
-@final
-class ModuleConfig:
-    """ModuleConfig(wheelRadiusMeters, maxDriveVelocityMPS, wheelCOF, driveMotor, driveCurrentLimit, numMotors=1)
-
-    One swerve module's drive: wheel radius (m), the top speed it reaches while driving
-    the robot at full output (m/s), the coefficient of friction between wheel and carpet
-    (1.0 if unsure), the drive gearbox as a :class:`DCMotor` with its reduction
-    (``DCMotor.getKrakenX60(1).withReduction(6.75)``), the current limit per motor (A)
-    and the number of drive motors per module.
-
-    As in PathPlannerLib, ``driveCurrentLimit`` reads back multiplied by ``numMotors``,
-    and ``torqueLoss`` is the torque the motor still makes at top speed on 12 V (limited
-    by the current limit), which models the module's friction. Every number must be
-    positive and finite (ValueError), ``driveMotor`` a drivekin DCMotor (TypeError).
-    Immutable; ``==`` compares every field."""
-
-    def __init__(self, wheelRadiusMeters: float, maxDriveVelocityMPS: float, wheelCOF: float,
-                 driveMotor: DCMotor, driveCurrentLimit: float, numMotors: int = 1) -> None: ...
-    @property
-    def wheelRadiusMeters(self) -> float:
-        """Drive wheel radius, m."""
-    @property
-    def maxDriveVelocityMPS(self) -> float:
-        """Top drive speed at full output, m/s."""
-    @property
-    def maxDriveVelocityRadPerSec(self) -> float:
-        """Top wheel speed, rad/s: ``maxDriveVelocityMPS / wheelRadiusMeters``."""
-    @property
-    def wheelCOF(self) -> float:
-        """Coefficient of friction between wheel and carpet."""
-    @property
-    def driveMotor(self) -> DCMotor:
-        """The drive gearbox (DCMotor, reduction included)."""
-    @property
-    def driveCurrentLimit(self) -> float:
-        """Current limit of the module's drive motors together, A (per motor × numMotors)."""
-    @property
-    def numMotors(self) -> int:
-        """Drive motors per module."""
-    @property
-    def torqueLoss(self) -> float:
-        """Torque lost to friction in the module, N·m."""
-    def __eq__(self, other: object, /) -> bool: ...
-    __hash__: ClassVar[None]  # type: ignore[assignment]
-
-@final
-class RobotConfig:
-    """RobotConfig(massKG, MOI, moduleConfig, moduleOffsets)
-
-    The robot as the setpoint generator sees it: mass including bumpers and battery (kg),
-    moment of inertia about its centre (kg·m²), the :class:`ModuleConfig` shared by its
-    modules, and the N ≥ 2 module positions (Translation2d, m, robot frame, none at the
-    centre) in the order the setpoints use. PathPlannerLib's derived values are
-    attributes: ``wheelFrictionForce = wheelCOF · (massKG / N) · 9.8`` (N) and
-    ``maxTorqueFriction = wheelFrictionForce · wheelRadiusMeters`` (N·m).
-    Immutable; ``==`` compares every field."""
-
-    def __init__(self, massKG: float, MOI: float, moduleConfig: ModuleConfig,
-                 moduleOffsets: Sequence[Translation2d]) -> None: ...
-    @staticmethod
-    def fromGUISettings(path: str | PathLike[str]) -> RobotConfig:
-        """Read PathPlanner's ``settings.json`` (``deploy/pathplanner/settings.json`` in a
-        robot project) at ``path`` into a RobotConfig: mass, MOI, wheel radius, gearing,
-        top speed, wheel COF, drive motor type and current limit, and the four module
-        positions. A file that is not a swerve (holonomic) robot's settings, lacks a key
-        or holds a value of the wrong kind raises ValueError naming it."""
-    @property
-    def massKG(self) -> float:
-        """Robot mass, kg."""
-    @property
-    def MOI(self) -> float:
-        """Moment of inertia about the robot's centre, kg·m²."""
-    @property
-    def moduleConfig(self) -> ModuleConfig:
-        """The ModuleConfig of every module."""
-    @property
-    def moduleLocations(self) -> tuple[Translation2d, ...]:
-        """Module positions (tuple of Translation2d, m, robot frame)."""
-    @property
-    def numModules(self) -> int:
-        """Number of modules."""
-    @property
-    def modulePivotDistance(self) -> tuple[float, ...]:
-        """Each module's distance from the robot's centre (tuple of floats, m)."""
-    @property
-    def wheelFrictionForce(self) -> float:
-        """Friction force one wheel can transmit, N: ``wheelCOF · (massKG / N) · 9.8``."""
-    @property
-    def maxTorqueFriction(self) -> float:
-        """Largest wheel torque before it slips, N·m."""
-    def __eq__(self, other: object, /) -> bool: ...
-    __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
 class PathConstraints:
@@ -244,7 +151,7 @@ class SwerveSetpoint:
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
 @final
-class SwerveSetpointGenerator:
+class SwerveSetpointGenerator(SetpointKernel):
     """SwerveSetpointGenerator(config, maxSteerVelocityRadPerSec, brownoutVoltage=6.75, compatibility=None)
 
     Limits setpoints to what the robot in ``config`` (:class:`RobotConfig`) can do with
@@ -281,7 +188,10 @@ class SwerveSetpointGenerator:
                          ) -> SwerveSetpoint:
         """Return the next :class:`SwerveSetpoint` from ``prevSetpoint`` (normally the
         previous call's result) towards ``desiredRobotRelativeVelocities`` (m/s, rad/s;
-        not discretized: the generator does that) over ``dt`` (s, > 0).
+        not discretized: the generator does that) over ``dt`` (s, from 1e-9 to 1e6).
+        Velocities (desired and previous) must be at most 1e100 in magnitude, so that
+        every setpoint is finite; one that still overflows (a robot whose own numbers
+        are extreme) raises ValueError.
 
         ``inputVoltage`` (V) is the drive motors' supply: NaN means 12 V, lower values
         are raised to ``brownoutVoltage``; the top speed scales by min(1, V/12).

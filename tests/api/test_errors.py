@@ -388,3 +388,29 @@ def test_non_finite_module_positions_are_rejected(bad):
     with raises(ValueError, "finite"):
         MecanumDriveKinematics(Translation2d(bad, 0.3), Translation2d(0.3, -0.3),
                                Translation2d(-0.3, 0.3), Translation2d(-0.3, -0.3))
+
+
+# ---- the setpoint generator's values (issue 27) -------------------------------------
+
+@pytest.mark.parametrize("make, given", [
+    (lambda: (x for x in [1.0]), "generator"), (lambda: {1.0}, "set"),
+    (lambda: iter([1.0]), "list_iterator"), (lambda: 1.0, "float"), (lambda: None, "NoneType"),
+])
+def test_drive_feedforwards_names_what_it_takes_and_what_it_got(make, given):
+    from drivekin import DriveFeedforwards
+    with pytest.raises(TypeError) as e:
+        DriveFeedforwards(make(), [1.0], [1.0], [1.0], [1.0])
+    message = str(e.value)
+    assert message.startswith("accelerationsMPSSq must be a list or tuple of floats (one per "
+                              "module) or a 1-D float64 array, got " + given)
+    assert "0 floats" not in message
+
+
+@pytest.mark.parametrize("ratio, grown", [(1e-320, "free speed inf"), (1e-310, "free speed inf"),
+                                          (1e308, "stall torque inf")])
+def test_with_reduction_blames_the_ratio(ratio, grown):
+    from drivekin import DCMotor
+    expected = re.escape(f"gearboxReduction {ratio!r} is out of range")
+    with pytest.raises(ValueError, match=expected) as e:
+        DCMotor.getKrakenX60(1).withReduction(ratio)
+    assert grown in str(e.value) and "must be positive and finite" in str(e.value)

@@ -379,3 +379,123 @@ def test_option_bounds_are_inclusive_where_documented():
                      "--max-omega=100", "--json")
     assert result.returncode == 0, result.stderr
     assert '"steps": 1' in result.stdout
+
+
+# ---------------------------------------------------------------------------------------
+# RobotConfig.fromGUISettings: only paths of small regular files, parsed without
+# recursing into hostile nesting; every number finite (issue 27)
+
+GUI_SETTINGS = {"holonomicMode": True, "robotMass": 61.0, "robotMOI": 6.2,
+                "driveWheelRadius": 0.048, "driveGearing": 5.9, "maxDriveSpeed": 4.7,
+                "wheelCOF": 1.3, "driveMotorType": "NEO", "driveCurrentLimit": 50,
+                "flModuleX": 0.28, "flModuleY": 0.26, "frModuleX": 0.28, "frModuleY": -0.26,
+                "blModuleX": -0.28, "blModuleY": 0.26, "brModuleX": -0.28,
+                "brModuleY": -0.26}
+
+
+def _settings_text(**change) -> str:
+    import json
+    return json.dumps({**GUI_SETTINGS, **change})
+
+
+@pytest.mark.parametrize("key, raw", [
+    ("robotMass", "1" + "0" * 400),             # float() of it: OverflowError
+    ("robotMOI", "1e400"),                      # json gives inf
+    ("flModuleX", "-1e400"),
+    ("wheelCOF", "NaN"),
+    ("maxDriveSpeed", "Infinity"),
+])
+def test_gui_settings_non_finite_numbers_name_the_field(tmp_path, key, raw):
+    p = tmp_path / "settings.json"
+    text = _settings_text(**{key: "@"}).replace('"@"', raw)
+    p.write_text(text)
+    with pytest.raises(ValueError, match=f"'{key}' in .* must be a finite number"):
+        drivekin.RobotConfig.fromGUISettings(p)
+
+
+@pytest.mark.parametrize("depth", [64, 100_000])
+def test_gui_settings_deep_nesting_is_refused_before_parsing(tmp_path, depth):
+    p = tmp_path / "settings.json"
+    p.write_text(_settings_text()[:-1] + ', "x": ' + "[" * depth + "]" * depth + "}")
+    with pytest.raises(ValueError, match="nests arrays or objects more than 64 deep"):
+        drivekin.RobotConfig.fromGUISettings(p)
+
+
+def test_gui_settings_nesting_inside_strings_does_not_count(tmp_path):
+    # Brackets (and escaped quotes) inside a string value are text, not nesting.
+    p = tmp_path / "settings.json"
+    p.write_text(_settings_text(notes='\\"[{' * 100))
+    assert drivekin.RobotConfig.fromGUISettings(p).massKG == 61.0
+    # 64 levels with the settings object itself.
+    p.write_text(_settings_text()[:-1] + ', "x": ' + "[" * 63 + "]" * 63 + "}")
+    assert drivekin.RobotConfig.fromGUISettings(p).massKG == 61.0
+
+
+@pytest.mark.parametrize("bad", [0, 1, -1, True, 3.0, b"settings.json", None])
+def test_gui_settings_takes_only_paths(bad):
+    # An int would be taken as an open file descriptor, read and closed.
+    with pytest.raises(TypeError, match="path must be a str or os.PathLike"):
+        drivekin.RobotConfig.fromGUISettings(bad)
+
+
+def test_gui_settings_leaves_file_descriptors_alone(tmp_path):
+    r, w = os.pipe()
+    try:
+        with pytest.raises(TypeError):
+            drivekin.RobotConfig.fromGUISettings(r)
+        os.fstat(r)                             # still open
+    finally:
+        os.close(r)
+        os.close(w)
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs here")
+def test_gui_settings_refuses_a_fifo_without_blocking(tmp_path):
+    fifo = tmp_path / "settings.json"
+    os.mkfifo(fifo)
+    # In a child process: a reader that opened the FIFO would wait for a writer for ever.
+    r = _python("-c", textwrap.dedent(f"""
+        import drivekin
+        try:
+            drivekin.RobotConfig.fromGUISettings({str(fifo)!r})
+        except ValueError as e:
+            print(e)
+        """), timeout=60)
+    assert r.returncode == 0, r.stderr
+    assert "is not a regular file" in r.stdout
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/zero"), reason="no /dev/zero")
+def test_gui_settings_refuses_a_device():
+    with pytest.raises(ValueError, match="is not a regular file"):
+        drivekin.RobotConfig.fromGUISettings("/dev/zero")
+
+
+def test_gui_settings_refuses_a_directory(tmp_path):
+    with pytest.raises(ValueError, match="is not a regular file"):
+        drivekin.RobotConfig.fromGUISettings(tmp_path)
+
+
+def test_gui_settings_size_bound(tmp_path):
+    # 1 MiB is accepted (padding in a string value), one byte more is not; a sparse
+    # multi-GB file is refused by its size, before a byte is read.
+    p = tmp_path / "settings.json"
+    text = _settings_text(pad="")
+    p.write_text(text.replace('"pad": ""', '"pad": "' + "x" * (2**20 - len(text)) + '"'))
+    assert p.stat().st_size == 2**20
+    assert drivekin.RobotConfig.fromGUISettings(p).massKG == 61.0
+    with open(p, "ab") as f:
+        f.write(b" ")
+    with pytest.raises(ValueError, match="1048577 bytes, more than the 1048576"):
+        drivekin.RobotConfig.fromGUISettings(p)
+    huge = tmp_path / "huge.json"
+    with open(huge, "wb") as f:
+        f.truncate(5 * 2**30)
+    tracemalloc.start()
+    try:
+        with pytest.raises(ValueError, match="more than the 1048576"):
+            drivekin.RobotConfig.fromGUISettings(huge)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 2**20

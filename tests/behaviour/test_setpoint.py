@@ -278,8 +278,80 @@ def test_prev_setpoint_must_be_finite():
     gen = SwerveSetpointGenerator(_config(), 10.0)
     sp = SwerveSetpoint(ChassisVelocities(math.inf, 0.0, 0.0),
                         [SwerveModuleVelocity() for _ in range(4)], DriveFeedforwards.zeros(4))
-    with pytest.raises(ValueError, match="prevSetpoint must be finite"):
+    with pytest.raises(ValueError, match="prevSetpoint's velocities must be finite"):
         gen.generateSetpoint(sp, ChassisVelocities(), 0.02)
+
+
+# Finite arguments whose arithmetic overflowed (NaN or inf setpoints): each is refused,
+# naming the argument, or computed finite, and the generator stays as it was.
+EXTREMES = [
+    (ChassisVelocities(2.0, 1.0, 1.0), 1.7e308, "dt must be a loop period from 1e-09 to 1e"),
+    (ChassisVelocities(2.0, 1.0, 1.0), 5e-324, "dt must be a loop period"),
+    (ChassisVelocities(1e308, 1e308, 1e308), 0.02, "desiredRobotRelativeVelocities must be "
+     "finite and at most 1e"),
+    (ChassisVelocities(0.0, 0.0, -1e101), 0.02, "desiredRobotRelativeVelocities"),
+]
+
+
+@pytest.mark.parametrize("compatibility", [None, "pathplanner"])
+@pytest.mark.parametrize("desired, dt, message", EXTREMES)
+def test_extreme_arguments_are_refused_and_change_nothing(compatibility, desired, dt, message):
+    gen, twin = (SwerveSetpointGenerator(_config(), 10.0, compatibility=compatibility)
+                 for _ in range(2))
+    sp = _moving(gen)
+    _moving(twin)
+    before = _state(sp)
+    with pytest.raises(ValueError, match=message):
+        gen.generateSetpoint(sp, desired, dt)
+    with pytest.raises(ValueError, match="sample 1: " + message):
+        batch.generateSetpoints(gen, sp, np.array([[1.0, 0.0, 0.0], [desired.vx, desired.vy,
+                                                                    desired.omega]]),
+                                np.array([0.02, dt]))
+    assert _state(sp) == before
+    cmd = ChassisVelocities(1.0, -0.5, 2.0)
+    assert _state(gen.generateSetpoint(sp, cmd, 0.02)) == _state(twin.generateSetpoint(sp, cmd, 0.02))
+
+
+@pytest.mark.parametrize("compatibility", [None, "pathplanner"])
+@pytest.mark.parametrize("desired, dt", [((1e100, -1e100, 1e100), 0.02), ((3.0, 1.0, 2.0), 1e6),
+                                         ((1e100, 0.0, -1e100), 1e6), ((3.0, 1.0, 2.0), 1e-9),
+                                         ((1e100, 1e100, 0.0), 1e-9)])
+def test_arguments_at_their_bounds_give_finite_setpoints(compatibility, desired, dt):
+    module = ModuleConfig(0.0508, 4.5, 1.2, MOTOR, 60.0, 1)
+    for config in (_config(), RobotConfig(1e100, 1e100, module, _config().moduleLocations)):
+        gen = SwerveSetpointGenerator(config, 10.0, compatibility=compatibility)
+        sp = _moving(gen)
+        for _ in range(3):
+            sp = gen.generateSetpoint(sp, ChassisVelocities(*desired), dt, 1e300)
+            assert all(math.isfinite(x) for part in _state(sp) for row in part
+                       for x in (row if isinstance(row, tuple) else (row,)))
+
+
+@pytest.mark.parametrize("args, message", [((1e308, 6.0), "massKG must be at most 1e100"),
+                                           ((60.0, 1e308), "MOI must be at most 1e100")])
+def test_robot_config_refuses_mass_and_moi_that_overflow_the_feedforwards(args, message):
+    # RobotConfig(MOI=1e308) gave ±inf torque feedforwards.
+    with pytest.raises(ValueError, match=message):
+        RobotConfig(*args, ModuleConfig(0.05, 4.0, 1.0, MOTOR, 40.0),
+                    [Translation2d(0.3, 0.3), Translation2d(-0.3, -0.3)])
+
+
+def test_an_overflowing_setpoint_is_refused_and_changes_nothing():
+    # Module positions of 1e300 m: the PathPlanner mode's inverse kinematics of a turning
+    # command overflows. Nothing may come out, and the heading memory stays.
+    offsets = [Translation2d(1e300 * x, 1e300 * y) for x, y in ((1, 1), (1, -1), (-1, 1))]
+    config = RobotConfig(60.0, 6.0, ModuleConfig(0.05, 4.0, 1.0, MOTOR, 40.0), offsets)
+    gen, twin = (SwerveSetpointGenerator(config, 10.0, compatibility="pathplanner")
+                 for _ in range(2))
+    sp = _zeros(3)
+    for g in (gen, twin):
+        g.generateSetpoint(sp, ChassisVelocities(1.0, 1.0, 0.0), 0.02)
+    with pytest.raises(ValueError, match="the setpoint overflowed"):
+        gen.generateSetpoint(sp, ChassisVelocities(0.0, 0.0, 1e10), 0.02)
+    with pytest.raises(ValueError, match="sample 1: the setpoint overflowed"):
+        batch.generateSetpoints(gen, sp, np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1e10]]), 0.02)
+    cmd = ChassisVelocities(-1.0, 0.5, 0.0)
+    assert _state(gen.generateSetpoint(sp, cmd, 0.02)) == _state(twin.generateSetpoint(sp, cmd, 0.02))
 
 
 # ---- the three forms give the same numbers ------------------------------------------
@@ -344,3 +416,36 @@ def test_all_modules_flip_stops_first():
         speeds.append(sp.robotRelativeVelocities.vx)
     assert all(b <= a + 1e-12 for a, b in zip(speeds, speeds[1:]))   # never speeds up forwards
     assert speeds[-1] == pytest.approx(-3.0)
+
+
+class _Meddling:
+    """Duck-typed constraints whose getter writes bad values into the call's arrays (NaN
+    rows, dt 0 and -1, an infinite voltage) and then gives a limit."""
+
+    def __init__(self, rows, dts, volts):
+        self.rows, self.dts, self.volts = rows, dts, volts
+        self.maxAccelerationMpsSq = 6.0
+        self.maxAngularVelocityRps = 5.0
+        self.maxAngularAccelerationRpsSq = 12.0
+
+    @property
+    def maxVelocityMps(self):
+        self.rows[:] = np.nan
+        self.dts[0], self.dts[1:] = 0.0, -1.0
+        self.volts[:] = np.inf
+        return 3.5
+
+
+def test_batch_reads_every_input_before_the_constraints_run_code():
+    rows = np.array([c for c in COMMANDS for _ in range(5)])
+    dts = np.linspace(0.01, 0.03, len(rows))
+    volts = np.full(len(rows), 11.0)
+    expect = batch.generateSetpoints(SwerveSetpointGenerator(_config(), 9.0), _zeros(),
+                                     rows.copy(), dts.copy(), volts.copy(),
+                                     PathConstraints(3.5, 6.0, 5.0, 12.0))
+    meddling = _Meddling(rows, dts, volts)
+    got = batch.generateSetpoints(SwerveSetpointGenerator(_config(), 9.0), _zeros(), rows,
+                                  dts, volts, meddling)
+    assert np.isnan(rows).all() and dts[0] == 0.0 and (volts == np.inf).all()   # it ran
+    for a, b in zip(got, expect):
+        assert np.array_equal(a, b) and np.isfinite(a).all()

@@ -101,6 +101,16 @@ cdef inline int positive_finite(double x, str name, str unit) except -1:
     return 0
 
 
+cdef inline long long count_arg(object x, str name, long long low) except -1:
+    # A count (motors, modules): an exact int from low to Java's int max.
+    if not PyLong_CheckExact(x):
+        from drivekin._core.errors import type_name
+        raise TypeError(f"{name} must be an int, got {type_name(x)}")
+    if not low <= x <= 2147483647:
+        raise ValueError(f"{name} must be an int from {low} to 2147483647, got {x!r}")
+    return <long long>x
+
+
 cdef inline bint is_number(object x) noexcept:
     # A float (numpy.float64 included) or an exact int: what robotpy converts implicitly
     # to a Rotation2d in radians (never a bool, a str or an object with __float__).

@@ -536,7 +536,8 @@ ENTRIES: tuple[Entry, ...] = (
     Entry(DCMotor, "value",
           peer=Peer("system.plant", ("DCMotor",), _motor_to, _motor_from),
           example=lambda: DCMotor.getNEO(2)),
-    # PathPlannerLib's setpoint generator and what it takes and gives (drivekin.setpoint)
+    # PathPlannerLib's setpoint generator and what it takes and gives (drivekin.setpoint,
+    # the robot description from drivekin.robotconfig)
     Entry(_dk.ModuleConfig, "value", no_peer=_PATHPLANNER,
           example=lambda: _robot_config().moduleConfig),
     Entry(_dk.RobotConfig, "value", no_peer=_PATHPLANNER, example=_robot_config),
