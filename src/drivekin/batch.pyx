@@ -524,7 +524,7 @@ def discretize(chassisVelocities, dt, out=None):
             sincos_n(kk, th, s, c)
             for i in range(kk):
                 x = v.data + 3 * (i0 + i)
-                d = chassis_discretize_cs(x[0], x[1], t.data[i0 + i], th[i], c[i], s[i])
+                d = chassis_discretize_cs(x[0], x[1], x[2], t.data[i0 + i], th[i], c[i], s[i])
                 o.data[3 * (i0 + i)] = d.x
                 o.data[3 * (i0 + i) + 1] = d.y
                 o.data[3 * (i0 + i) + 2] = d.z
