@@ -17,6 +17,9 @@ cdef class ChassisAccelerations(_ChassisVector):
     pass
 
 
+cdef int check_discretize_fits(vec3_t v, double dt) except -1
+
+
 cdef inline ChassisVelocities new_chassis_velocities(double vx, double vy, double omega):
     cdef ChassisVelocities o = ChassisVelocities.__new__(ChassisVelocities)
     o.v.x = vx

@@ -14,7 +14,7 @@ from cpython.ref cimport Py_INCREF, PyObject
 from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
-from libc.math cimport M_PI, fabs, isfinite, signbit
+from libc.math cimport INFINITY, M_PI, fabs, isfinite, signbit
 from drivekin._core.dkmath cimport atan2_n, sincos_n
 from libc.string cimport memcpy
 
@@ -28,7 +28,8 @@ from drivekin._core.kernels cimport (
     rot_rad, rot_radians, swerve_ik, swerve_ik_accel, vec, vec_eq,
 )
 from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
-from drivekin.chassis cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+from drivekin.chassis cimport (ChassisAccelerations, ChassisVelocities, check_discretize_fits,
+                              new_chassis_velocities)
 from drivekin._core.errors import refuse_delete, type_name
 from drivekin._core.format import f2
 
@@ -931,6 +932,8 @@ cdef int check_desaturated_discretize(vec3_t v, double dt, double limit) except 
     if not (limit >= 0.0):
         raise ValueError(f"attainableMaxModuleVelocity must be >= 0 m/s (inf for no "
                          f"limit), got {limit!r}")
+    if limit == INFINITY:       # no scaling: the plain discretize, which may not fit
+        check_discretize_fits(v, dt)
     return 0
 
 
