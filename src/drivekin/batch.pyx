@@ -54,7 +54,7 @@ from drivekin.geometry cimport Translation2d
 from drivekin._core.drivetrain cimport Drivetrain
 from drivekin.odometry cimport _Odometry
 from drivekin.swerve cimport SwerveDriveKinematics, check_desaturated_discretize
-from drivekin.chassis cimport check_discretize_fits
+from drivekin.chassis cimport check_discretize_fits, discretize_is_large
 from drivekin.setpoint cimport (SwerveSetpointGenerator, check_step, generate, limits_t)
 from drivekin._core.errors import type_name
 
@@ -518,11 +518,12 @@ def discretize(chassisVelocities, dt, out=None):
     cdef double s[CHUNK]
     for i in range(count):
         x = v.data + 3 * i
-        d.x, d.y, d.z = x[0], x[1], x[2]
-        try:
-            check_discretize_fits(d, t.data[i])
-        except ValueError as e:
-            raise ValueError(f"sample {i}: {e}") from None
+        if discretize_is_large(x[0], x[1], x[2]):
+            d.x, d.y, d.z = x[0], x[1], x[2]
+            try:
+                check_discretize_fits(d, t.data[i])
+            except ValueError as e:
+                raise ValueError(f"sample {i}: {e}") from None
     with nogil:
         for ch in range((count + CHUNK - 1) // CHUNK):
             i0 = ch * CHUNK

@@ -4,7 +4,7 @@ Units: m/s, m/s², rad/s, rad/s², s. Robot frame: x forward, y left, CCW positi
 conversion has an object-returning form and an allocation-free ``...Into`` form.
 """
 cimport cython
-from libc.math cimport fabs, isfinite
+from libc.math cimport isfinite
 
 from drivekin._core.types cimport rot2_t, vec2_t, vec3_t
 from drivekin._core.kernels cimport chassis_discretize, feet_to_meters, java_equals, rot_neg, vec, vec_rotate
@@ -141,11 +141,9 @@ cdef class _ChassisVector:
 
 
 cdef int check_discretize_fits(vec3_t v, double dt) except -1:
-    # discretize's result is (k·vx + h·vy, −h·vx + k·vy, ω or φ/dt) with 0 ≤ k ≤ 1,
-    # |h| ≤ π/2 and |φ/dt| ≤ |ω| to rounding: finite for finite input unless a component
-    # is above 1e307, where it is computed to see. Shared by every discretize form.
+    # ValueError where finite input's discretize exceeds the doubles (every form).
     cdef vec3_t d
-    if not (fabs(v.x) > 1e307 or fabs(v.y) > 1e307 or fabs(v.z) > 1e307):
+    if not discretize_is_large(v.x, v.y, v.z):
         return 0
     if not (isfinite(v.x) and isfinite(v.y) and isfinite(v.z) and isfinite(dt)) or dt == 0.0:
         return 0
