@@ -1,5 +1,6 @@
-"""mpmath's exact values of drivekin's own math functions (sin, cos, atan2, hypot) and
-errors in ulps of them, for the accuracy tests in tests/reference/.
+"""mpmath's exact values of drivekin's own math functions (sin, cos, atan2, hypot),
+errors in ulps of them, and arguments spread over the binades, for the accuracy and corpus
+tests in tests/reference/.
 
 Under emulation (DRIVEKIN_EMULATED=1) and ASan (DRIVEKIN_ASAN=1) the tests use a
 two-hundredth of their points (``SCALE``): ASan's allocator makes mpmath about twenty
@@ -10,7 +11,6 @@ from __future__ import annotations
 import os
 from concurrent.futures import ProcessPoolExecutor
 
-import mpmath as mp
 import numpy as np
 
 SLOW = os.environ.get("DRIVEKIN_EMULATED") == "1" or os.environ.get("DRIVEKIN_ASAN") == "1"
@@ -20,6 +20,7 @@ PREC = 160
 
 def _exact(job):
     """Each value of fn at the arguments as (double, rest) pairs of the exact result."""
+    import mpmath as mp    # here: the corpus test uses magnitudes() where mpmath may be absent
     name, args = job
     mp.mp.prec = PREC
     fn = {"sin": mp.sin, "cos": mp.cos, "atan2": mp.atan2, "hypot": mp.hypot}[name]
@@ -54,3 +55,9 @@ def ulp_errors(ours, hi, lo):
     spacing = np.where(below, spacing / 2, spacing)
     spacing = np.maximum(spacing, 2.0 ** -1074)
     return np.abs((ours - hi) - lo) / spacing
+
+
+def magnitudes(rng, n, lo, hi):
+    """n doubles spread over the binades 2^lo .. 2^hi, built exactly (ldexp of uniform
+    draws): numpy's exp could round differently on another platform."""
+    return np.ldexp(rng.uniform(1.0, 2.0, n), rng.integers(lo, hi, n))

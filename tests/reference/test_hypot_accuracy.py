@@ -17,13 +17,9 @@ import pytest
 mp = pytest.importorskip("mpmath")
 
 from drivekin import Rotation2d, Translation2d                        # noqa: E402
-from tests._support.mp_oracle import SCALE, exact, ulp_errors         # noqa: E402
+from tests._support.mp_oracle import SCALE, exact, magnitudes, ulp_errors   # noqa: E402
 
 BOUND = 1.0                 # ulps: the documented bound (strictly below)
-
-
-def magnitudes(rng, n, lo, hi):
-    return np.ldexp(rng.uniform(1.0, 2.0, n), rng.integers(lo, hi, n))
 
 
 def arguments():

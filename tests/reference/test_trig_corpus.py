@@ -23,14 +23,9 @@ import numpy as np
 from drivekin import (ChassisVelocities, DifferentialDriveOdometry, Pose2d, Rotation2d,
                       SwerveDriveKinematics, Translation2d, Twist2d)
 import drivekin.batch as batch
+from tests._support.mp_oracle import magnitudes
 
 EXPECTED = "0e7d6bb472b5d4f1cc913be6499b341f3f58c6c985b469f9d4cf4d1063ecaa00"
-
-
-def magnitudes(rng, n, lo, hi):
-    """n doubles spread over the binades 2^lo .. 2^hi, built exactly (ldexp of uniform
-    draws): numpy's exp could round differently on another platform."""
-    return np.ldexp(rng.uniform(1.0, 2.0, n), rng.integers(lo, hi, n))
 
 
 def corpus() -> bytes:
