@@ -258,8 +258,9 @@ cdef inline vec3_t chassis_discretize_cs(double vx, double vy, double omega, dou
     h = 0.5 * phi
     k = log_k(phi, ct, st)
     if fabs(vx) > 1e300 or fabs(vy) > 1e300:
-        # k·vx + h·vy can overflow in the product although the sum fits (|h| < 2):
-        # a sixteenth, exact for such magnitudes, then scaled back.
+        # h·vy can overflow although the sum fits (|h| < 2): a sixteenth, then scaled
+        # back; exact for the large component, and a small one loses only bits far below
+        # the result's last.
         vx = vx * 0.0625
         vy = vy * 0.0625
         back = 16.0
