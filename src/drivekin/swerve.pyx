@@ -667,7 +667,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
         the commanded direction, and unlike desaturating before discretizing, no module
         ends above the limit. k is exact to 1e-14 relative; with no saturation the result
         is ``chassisVelocities.discretize(dt)``. Every input must be finite (the limit
-        may be +inf) and the limit ≥ 0."""
+        may be +inf) and the limit ≥ 0; with no limit, a result beyond the largest double
+        is a ValueError."""
         cdef vec3_t d
         check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
         self._desaturated_discretize((<ChassisVelocities>chassisVelocities).v, dt,
