@@ -238,7 +238,7 @@ cdef inline vec3_t chassis_discretize_cs(double vx, double vy, double omega, dou
     # k = h·cot h (so 0 ≤ k ≤ 1, |h| ≤ π/2). Neither v·dt nor any quotient by dt is formed,
     # so finite input gives a finite result unless that result exceeds the doubles.
     cdef vec3_t out
-    cdef double phi, h, k, back = 1.0
+    cdef double phi, h, k
     if dt == 0.0:
         # WPILib divides the log (0, 0, 0) by dt unguarded: 0/0 in every field.
         out.x = out.y = out.z = 0.0 / dt
@@ -263,9 +263,11 @@ cdef inline vec3_t chassis_discretize_cs(double vx, double vy, double omega, dou
         # the result's last.
         vx = vx * 0.0625
         vy = vy * 0.0625
-        back = 16.0
-    out.x = (k * vx + h * vy) * back
-    out.y = (-h * vx + k * vy) * back
+        out.x = (k * vx + h * vy) * 16.0
+        out.y = (-h * vx + k * vy) * 16.0
+    else:
+        out.x = k * vx + h * vy
+        out.y = -h * vx + k * vy
     return out
 
 # ---------------------------------------------------------------------------------------
