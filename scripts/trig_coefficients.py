@@ -160,11 +160,13 @@ def block() -> str:
     lines.append(f"#define DK_PIO4_B {hexd(b)}")
     lines.append(f"#define DK_TWO_OVER_PI {hexd(2 / mp.pi)}")
     lines.append(f"#define DK_TAN_PI_8 {hexd(mp.tan(mp.pi / 8))}")
-    words = two_over_pi_words(38)
+    # 70 words reach exponent 2047: the largest double's, and that of a product of two
+    # doubles (dk_sincos_scaled, for omega*dt in discretize).
+    words = two_over_pi_words(70)
     lines.append("/* The fraction bits of 2/pi, 32 to a word, after two zero words (Payne-Hanek). */")
-    lines.append("static const uint32_t dk_two_over_pi_bits[40] = {")
+    lines.append("static const uint32_t dk_two_over_pi_bits[72] = {")
     padded = [0, 0] + words
-    for i in range(0, 40, 6):
+    for i in range(0, 72, 6):
         lines.append("    " + ", ".join(f"0x{w:08x}u" for w in padded[i:i + 6]) + ",")
     lines.append("};")
     lines.append(END)

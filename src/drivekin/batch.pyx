@@ -54,6 +54,7 @@ from drivekin.geometry cimport Translation2d
 from drivekin._core.drivetrain cimport Drivetrain
 from drivekin.odometry cimport _Odometry
 from drivekin.swerve cimport SwerveDriveKinematics, check_desaturated_discretize
+from drivekin.chassis cimport check_discretize_fits, discretize_is_large
 from drivekin._core.setpointkernel cimport (SetpointKernel, check_output, check_step,
                                             generate, keep_headings, limits_t)
 from drivekin._core.errors import type_name
@@ -516,6 +517,14 @@ def discretize(chassisVelocities, dt, out=None):
     cdef double th[CHUNK]
     cdef double c[CHUNK]
     cdef double s[CHUNK]
+    for i in range(count):
+        x = v.data + 3 * i
+        if discretize_is_large(x[0], x[1], x[2]):
+            d.x, d.y, d.z = x[0], x[1], x[2]
+            try:
+                check_discretize_fits(d, t.data[i])
+            except ValueError as e:
+                raise ValueError(f"sample {i}: {e}") from None
     with nogil:
         for ch in range((count + CHUNK - 1) // CHUNK):
             i0 = ch * CHUNK
@@ -525,7 +534,7 @@ def discretize(chassisVelocities, dt, out=None):
             sincos_n(kk, th, s, c)
             for i in range(kk):
                 x = v.data + 3 * (i0 + i)
-                d = chassis_discretize_cs(x[0], x[1], t.data[i0 + i], th[i], c[i], s[i])
+                d = chassis_discretize_cs(x[0], x[1], x[2], t.data[i0 + i], th[i], c[i], s[i])
                 o.data[3 * (i0 + i)] = d.x
                 o.data[3 * (i0 + i) + 1] = d.y
                 o.data[3 * (i0 + i) + 2] = d.z

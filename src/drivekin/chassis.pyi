@@ -110,8 +110,9 @@ class ChassisVelocities(_ChassisVector):
 
         This removes the drift of swerve/mecanum drives that translate while turning.
         ``omega·dt`` passes through a Rotation2d, so it is wrapped to [−π, π]
-        (omega = 4, dt = 1 gives omega' = 4 − 2π); ``dt = 0`` divides by zero (NaN/inf),
-        as in WPILib."""
+        (omega = 4, dt = 1 gives omega' = 4 − 2π); ``dt = 0`` divides by zero (NaN),
+        as in WPILib. Finite input gives a finite result at any magnitude (ValueError if
+        that result is beyond the largest double)."""
 
     def discretizeInto(self, dt: float, out: ChassisVelocities) -> None:
         """Allocation-free :meth:`discretize`: write the result into ``out`` (may be self)."""

@@ -4,6 +4,7 @@ Units: m/s, m/s², rad/s, rad/s², s. Robot frame: x forward, y left, CCW positi
 conversion has an object-returning form and an allocation-free ``...Into`` form.
 """
 cimport cython
+from libc.math cimport isfinite
 
 from drivekin._core.types cimport rot2_t, vec2_t, vec3_t
 from drivekin._core.kernels cimport chassis_discretize, feet_to_meters, java_equals, rot_neg, vec, vec_rotate
@@ -139,6 +140,21 @@ cdef class _ChassisVector:
         refuse_delete(self, name)
 
 
+cdef int check_discretize_fits(vec3_t v, double dt) except -1:
+    # ValueError where finite input's discretize exceeds the doubles (every form).
+    cdef vec3_t d
+    if not discretize_is_large(v.x, v.y, v.z):
+        return 0
+    if not (isfinite(v.x) and isfinite(v.y) and isfinite(v.z) and isfinite(dt)) or dt == 0.0:
+        return 0
+    d = chassis_discretize(v.x, v.y, v.z, dt)
+    if isfinite(d.x) and isfinite(d.y) and isfinite(d.z):
+        return 0
+    raise ValueError(f"chassisVelocities ({v.x!r}, {v.y!r}, {v.z!r}) discretized over dt = "
+                     f"{dt!r} s exceed the largest double ({d.x!r}, {d.y!r}, {d.z!r}); "
+                     "scale them down")
+
+
 cdef class ChassisVelocities(_ChassisVector):
     """ChassisVelocities(vx=0.0, vy=0.0, omega=0.0)
 
@@ -198,14 +214,17 @@ cdef class ChassisVelocities(_ChassisVector):
 
         This removes the drift of swerve/mecanum drives that translate while turning.
         ``omega·dt`` passes through a Rotation2d, so it is wrapped to [−π, π]
-        (omega = 4, dt = 1 gives omega' = 4 − 2π); ``dt = 0`` divides by zero (NaN/inf),
-        as in WPILib."""
+        (omega = 4, dt = 1 gives omega' = 4 − 2π); ``dt = 0`` divides by zero (NaN),
+        as in WPILib. Finite input gives a finite result at any magnitude (ValueError if
+        that result is beyond the largest double)."""
+        check_discretize_fits(self.v, dt)
         cdef vec3_t d = chassis_discretize(self.v.x, self.v.y, self.v.z, dt)
         return new_chassis_velocities(d.x, d.y, d.z)
 
     def discretizeInto(self, double dt, out: ChassisVelocities):
         """Allocation-free :meth:`discretize`: write the result into ``out`` (may be self)."""
         check_type(out, ChassisVelocities, "out")
+        check_discretize_fits(self.v, dt)
         (<ChassisVelocities>out).v = chassis_discretize(self.v.x, self.v.y, self.v.z, dt)
 
     def __eq__(self, other):

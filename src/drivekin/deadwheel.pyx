@@ -21,7 +21,7 @@ from cpython.ref cimport Py_INCREF
 from cpython.float cimport PyFloat_FromDouble
 from cpython.tuple cimport PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, fabs, isfinite
-from drivekin._core.dkmath cimport atan2
+from drivekin._core.dkmath cimport atan2, hypot
 
 import numpy as np
 
@@ -123,7 +123,7 @@ cdef class DeadWheelKinematics(Drivetrain):
         # neither the choice of metres nor a small robot decides observability. Lever arms
         # that vanish on that scale (every wheel line through one point) leave rotation
         # about that point unobservable.
-        size = max(float(np.hypot((<Pose2d>p).p.t.x, (<Pose2d>p).p.t.y)) for p in poses)
+        size = max(hypot((<Pose2d>p).p.t.x, (<Pose2d>p).p.t.y) for p in poses)
         scaled = rows.copy()
         if size > 0.0:
             scaled[:, 2] /= size

@@ -6,7 +6,8 @@ All classes except :class:`Twist2d` are immutable. Equality uses WPILib's tolera
 (1e-9), so the immutable classes are deliberately unhashable.
 """
 cimport cython
-from libc.math cimport M_PI, fabs, hypot
+from libc.math cimport M_PI, fabs
+from drivekin._core.dkmath cimport hypot
 
 import numpy as np
 

@@ -5,7 +5,8 @@ from code or from the PathPlanner GUI's ``settings.json`` (:meth:`RobotConfig.fr
 Units: m, m/s, kg, kg·m², N, N·m, A. Robot frame: x forward, y left. docs/setpoints.md
 gives the PathPlanner → drivekin names; :mod:`drivekin.setpoint` exports these classes
 too."""
-from libc.math cimport hypot, isfinite
+from libc.math cimport isfinite
+from drivekin._core.dkmath cimport hypot
 
 from drivekin._core.args cimport check_type, count_arg, positive_finite, snapshot
 from drivekin._core.kernels cimport jmax, jmin

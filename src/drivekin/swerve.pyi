@@ -204,7 +204,8 @@ class SwerveDriveKinematics(Drivetrain):
         the commanded direction, and unlike desaturating before discretizing, no module
         ends above the limit. k is exact to 1e-14 relative; with no saturation the result
         is ``chassisVelocities.discretize(dt)``. Every input must be finite (the limit
-        may be +inf) and the limit ≥ 0."""
+        may be +inf) and the limit ≥ 0; with no limit, a result beyond the largest double
+        is a ValueError."""
     def desaturatedDiscretizeInto(
         self,
         chassisVelocities: ChassisVelocities,

@@ -14,7 +14,7 @@ from cpython.ref cimport Py_INCREF, PyObject
 from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
-from libc.math cimport M_PI, fabs, isfinite, signbit
+from libc.math cimport INFINITY, M_PI, fabs, isfinite, signbit
 from drivekin._core.dkmath cimport atan2_n, sincos_n
 from libc.string cimport memcpy
 
@@ -28,7 +28,8 @@ from drivekin._core.kernels cimport (
     rot_rad, rot_radians, swerve_ik, swerve_ik_accel, vec, vec_eq,
 )
 from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
-from drivekin.chassis cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+from drivekin.chassis cimport (ChassisAccelerations, ChassisVelocities, check_discretize_fits,
+                              new_chassis_velocities)
 from drivekin._core.errors import refuse_delete, type_name
 from drivekin._core.format import f2
 
@@ -666,7 +667,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
         the commanded direction, and unlike desaturating before discretizing, no module
         ends above the limit. k is exact to 1e-14 relative; with no saturation the result
         is ``chassisVelocities.discretize(dt)``. Every input must be finite (the limit
-        may be +inf) and the limit ≥ 0."""
+        may be +inf) and the limit ≥ 0; with no limit, a result beyond the largest double
+        is a ValueError."""
         cdef vec3_t d
         check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
         self._desaturated_discretize((<ChassisVelocities>chassisVelocities).v, dt,
@@ -931,6 +933,8 @@ cdef int check_desaturated_discretize(vec3_t v, double dt, double limit) except 
     if not (limit >= 0.0):
         raise ValueError(f"attainableMaxModuleVelocity must be >= 0 m/s (inf for no "
                          f"limit), got {limit!r}")
+    if limit == INFINITY:       # no scaling: the plain discretize, which may not fit
+        check_discretize_fits(v, dt)
     return 0
 
 

@@ -12,70 +12,25 @@ The same functions run through drivekin.batch's vectorised loops and through the
 scalar path; both are measured here and must agree bit for bit (on every instruction set
 this machine offers), and scripts/trig_coefficients.py must reproduce the header's
 constants. Under emulation (DRIVEKIN_EMULATED=1) and ASan (DRIVEKIN_ASAN=1) the point
-counts are a two-hundredth; DRIVEKIN_TRIG_FRACTION=N takes a 1/N-th anywhere
-(scripts/wheel_tests.sh, on wheels whose C the whole run has already measured).
+counts are a two-hundredth (tests/_support/mp_oracle.py, DRIVEKIN_TRIG_FRACTION).
 """
 from __future__ import annotations
 
 import math
-import os
 import pathlib
 import subprocess
 import sys
-from concurrent.futures import ProcessPoolExecutor
 
 import numpy as np
 import pytest
 
-mp = pytest.importorskip("mpmath")
+pytest.importorskip("mpmath")
 batch = pytest.importorskip("drivekin.batch")
 
-# Under emulation, and under ASan (whose allocator makes mpmath about twenty times slower;
-# what ASan checks here is the array loops' memory, which any size exercises), a
-# two-hundredth of the points.
-SLOW = os.environ.get("DRIVEKIN_EMULATED") == "1" or os.environ.get("DRIVEKIN_ASAN") == "1"
-SCALE = int(os.environ.get("DRIVEKIN_TRIG_FRACTION", 200 if SLOW else 1))
+from tests._support.mp_oracle import SCALE, SLOW, exact, ulp_errors   # noqa: E402
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-PREC = 160
 BOUND = 1.0                 # ulps: the documented bound
-
-
-def _exact(job):
-    """Each value of fn at the arguments as (double, rest) pairs of the exact result."""
-    name, args = job
-    mp.mp.prec = PREC
-    fn = {"sin": mp.sin, "cos": mp.cos, "atan2": mp.atan2}[name]
-    hi = np.empty(len(args[0]))
-    lo = np.empty(len(args[0]))
-    for i, a in enumerate(zip(*args)):
-        v = fn(*(mp.mpf(float(t)) for t in a))
-        h = float(v)
-        hi[i] = h
-        lo[i] = float(v - h)
-    return hi, lo
-
-
-def exact(name, *args):
-    """mpmath's values of name at args, computed on every core."""
-    n = len(args[0])
-    if SLOW:  # few points, and no process pool inside a root filesystem
-        return _exact((name, list(args)))
-    workers = max(1, min(os.cpu_count() or 1, 8))
-    step = -(-n // (4 * workers)) or 1
-    jobs = [(name, [a[i:i + step] for a in args]) for i in range(0, n, step)]
-    with ProcessPoolExecutor(workers) as pool:
-        parts = list(pool.map(_exact, jobs))
-    return np.concatenate([p[0] for p in parts]), np.concatenate([p[1] for p in parts])
-
-
-def ulp_errors(ours, hi, lo):
-    """|ours - exact| in ulps of the exact value (hi + lo)."""
-    spacing = np.spacing(np.abs(hi))
-    # Just below a power of two the ulp is half the spacing above it.
-    below = (np.frexp(np.abs(hi))[0] == 0.5) & (np.sign(lo) == -np.sign(hi))
-    spacing = np.where(below, spacing / 2, spacing)
-    spacing = np.maximum(spacing, 2.0 ** -1074)
-    return np.abs((ours - hi) - lo) / spacing
 
 
 def sin_cos_arguments():

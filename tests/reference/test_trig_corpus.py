@@ -3,8 +3,9 @@
 The corpus is drivekin's own sin/cos/atan2 on a fixed set of arguments (seeded numpy
 draws and exact operations on them, the same doubles on every platform, plus the special
 values), then the batch functions built on them (swerve inverse kinematics, discretize,
-exp, log, a differential odometry replay) and per-call results (Rotation2d from an
-angle, Pose2d.exp, SwerveDriveKinematics). CI runs this file natively (x86_64, every
+exp, log, a differential odometry replay), per-call results (Rotation2d from an angle,
+Pose2d.exp, SwerveDriveKinematics), drivekin's hypot with Rotation2d(x, y), and discretize
+at magnitudes where v·dt and ω·dt overflow. CI runs this file natively (x86_64, every
 CPython and every instruction set the CPU has) and on the aarch64 CPython 3.14 wheel under
 qemu-user
 (scripts/wheel_tests.sh); every run must produce EXPECTED. A change that moves any bit
@@ -22,14 +23,9 @@ import numpy as np
 from drivekin import (ChassisVelocities, DifferentialDriveOdometry, Pose2d, Rotation2d,
                       SwerveDriveKinematics, Translation2d, Twist2d)
 import drivekin.batch as batch
+from tests._support.mp_oracle import magnitudes
 
-EXPECTED = "c5338145a87910a747a65e69c3f16858a192c44333dba73c6b14c9c1ad7b9489"
-
-
-def magnitudes(rng, n, lo, hi):
-    """n doubles spread over the binades 2^lo .. 2^hi, built exactly (ldexp of uniform
-    draws): numpy's exp could round differently on another platform."""
-    return np.ldexp(rng.uniform(1.0, 2.0, n), rng.integers(lo, hi, n))
+EXPECTED = "0e7d6bb472b5d4f1cc913be6499b341f3f58c6c985b469f9d4cf4d1063ecaa00"
 
 
 def corpus() -> bytes:
@@ -76,6 +72,29 @@ def corpus() -> bytes:
         for m in k.toSwerveModuleVelocities(ChassisVelocities(vx, vy, w)):
             per_call += [m.velocity, m.angle.getRadians()]
     parts.append(np.array(per_call))
+
+    # hypot (Translation2d.getNorm is dkmath's, called once) and Rotation2d(x, y) over every
+    # magnitude, the subnormals and the overflowing norms; the special values for hypot
+    # only (+inf, or a NaN argument as it came: no arithmetic makes them), since x/inf in
+    # Rotation2d(inf, y) makes the hardware's NaN.
+    a = rng.choice([-1.0, 1.0], 6000) * np.concatenate(
+        [magnitudes(rng, 4000, -1074, 1024), magnitudes(rng, 2000, 1020, 1024)])
+    b = rng.choice([-1.0, 1.0], 6000) * np.concatenate(
+        [magnitudes(rng, 2000, -1074, 1024), np.ldexp(a[2000:4000], -rng.integers(0, 60, 2000)),
+         magnitudes(rng, 2000, 1020, 1024)])
+    norms, turns = [], []
+    for x, y in zip(a, b):
+        norms.append(Translation2d(float(x), float(y)).getNorm())
+        r = Rotation2d(float(x), float(y))
+        turns += [r.getCos(), r.getSin()]
+    special = [0.0, -0.0, math.inf, -math.inf, math.nan, 5e-324, 1.7976931348623157e308]
+    norms += [Translation2d(x, y).getNorm() for x in special for y in special]
+    parts += [np.array(norms), np.array(turns)]
+    # discretize where v·dt and ω·dt overflow (ω·dt reduced from its 53 bits, dkmath's
+    # dk_sincos_product) or underflow.
+    big = np.column_stack([a[:2000] * 1e-8, b[:2000] * 1e-8, b[2000:4000] * 1e-8])
+    dts = magnitudes(rng, 2000, -1000, 1000)
+    parts.append(batch.discretize(big, dts))
     return b"".join(np.ascontiguousarray(p, dtype="<f8").tobytes() for p in parts)
 
 

@@ -139,9 +139,10 @@ def qualified(obj: object) -> str:
 
 
 def _check_unit(c: float, s: float, r: object, where: str) -> None:
-    # A rotation is a unit (cos, sin) pair, or the NaN pair of a non-finite angle. Both
-    # libraries store (0, 0) for Rotation2d(x, y) when hypot(x, y) overflows (x/inf);
-    # that is no rotation, and neither side can rebuild it from its pair.
+    # A rotation is a unit (cos, sin) pair, or the NaN pair of a non-finite angle.
+    # robotpy-wpimath stores (0, 0) for Rotation2d(x, y) when hypot(x, y) overflows
+    # (x/inf; drivekin scales the vector first): that is no rotation, and neither side
+    # can rebuild it from its pair.
     if not (c != c and s != s) and not abs((c * c + s * s) - 1.0) <= 1e-9:
         raise ValueError(f"{where}: this {qualified(r)} stores (cos, sin) = ({c!r}, {s!r}), "
                          "which is not a unit vector")

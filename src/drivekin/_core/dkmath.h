@@ -1,5 +1,5 @@
-/* drivekin's own sin, cos, sincos and atan2: the same bits on every platform and in every
- * path (per-call kernels and drivekin.batch's vectorised loops).
+/* drivekin's own sin, cos, sincos, atan2 and hypot: the same bits on every platform and in
+ * every path (per-call kernels and drivekin.batch's vectorised loops).
  *
  * Why not libm: libm's results differ by an ulp between platforms (glibc on x86_64 and on
  * aarch64, macOS, musl), and a call to it cannot be vectorised, so the batch loops would
@@ -20,11 +20,14 @@
  *   atan2: |y|/|x| or its inverse (an octant), reduced by atan t = pi/4 + atan((t-1)/(t+1))
  *     above tan(pi/8), the quotient carried as a double-double (Dekker's exact products),
  *     a minimax polynomial, and the octant's multiple of pi/4 added as a double-double.
+ *   hypot: an exactly scaled sqrt(x^2 + y^2) corrected by Dekker's exact squares (at the
+ *     end of this file).
  * The constants come from scripts/trig_coefficients.py (mpmath Remez exchange).
  *
- * Accuracy: at most 1 ulp (measured: tests/reference/test_trig_accuracy.py, against mpmath;
- * docs/DESIGN.md gives the figures). sin(+-0) = +-0, NaN and infinities give NaN as in
- * libm; atan2 follows C99 Annex F for signed zeros, infinities and NaN.
+ * Accuracy: at most 1 ulp (measured: tests/reference/test_trig_accuracy.py and
+ * test_hypot_accuracy.py, against mpmath; docs/DESIGN.md gives the figures).
+ * sin(+-0) = +-0, NaN and infinities give NaN as in libm; atan2 and hypot follow C99
+ * Annex F for signed zeros, infinities and NaN.
  *
  * The dk_*_core functions are branch-free (selections only), so loops over them vectorise
  * (trig_arrays.h); dk_sincos and dk_atan2, the scalar forms, branch around work whose
@@ -88,14 +91,19 @@
 #define DK_TWO_OVER_PI 0x1.45f306dc9c883p-1
 #define DK_TAN_PI_8 0x1.a827999fcef32p-2
 /* The fraction bits of 2/pi, 32 to a word, after two zero words (Payne-Hanek). */
-static const uint32_t dk_two_over_pi_bits[40] = {
+static const uint32_t dk_two_over_pi_bits[72] = {
     0x00000000u, 0x00000000u, 0xa2f9836eu, 0x4e441529u, 0xfc2757d1u, 0xf534ddc0u,
     0xdb629599u, 0x3c439041u, 0xfe5163abu, 0xdebbc561u, 0xb7246e3au, 0x424dd2e0u,
     0x06492eeau, 0x09d1921cu, 0xfe1deb1cu, 0xb129a73eu, 0xe88235f5u, 0x2ebb4484u,
     0xe99c7026u, 0xb45f7e41u, 0x3991d639u, 0x835339f4u, 0x9c845f8bu, 0xbdf9283bu,
     0x1ff897ffu, 0xde05980fu, 0xef2f118bu, 0x5a0a6d1fu, 0x6d367ecfu, 0x27cb09b7u,
     0x4f463f66u, 0x9e5fea2du, 0x7527bac7u, 0xebe5f17bu, 0x3d0739f7u, 0x8a5292eau,
-    0x6bfb5fb1u, 0x1f8d5d08u, 0x56033046u, 0xfc7b6babu,
+    0x6bfb5fb1u, 0x1f8d5d08u, 0x56033046u, 0xfc7b6babu, 0xf0cfbc20u, 0x9af4361du,
+    0xa9e39161u, 0x5ee61b08u, 0x6599855fu, 0x14a06840u, 0x8dffd880u, 0x4d732731u,
+    0x06061556u, 0xca73a8c9u, 0x60e27bc0u, 0x8c6b47c4u, 0x19c367cdu, 0xdce8092au,
+    0x8359c476u, 0x8b961ca6u, 0xddaf44d1u, 0x5719053eu, 0xa5ff0705u, 0x3f7e33e8u,
+    0x32c2de4fu, 0x98327dbbu, 0xc33d26efu, 0x6b1e5ef8u, 0x9f3a1f35u, 0xcaf27f1du,
+    0x87f12190u, 0x7c7c246au, 0xfa6ed577u, 0x2d30433bu, 0x15c614b5u, 0x9d19c3c2u,
 };
 /* END trig_coefficients.py */
 
@@ -217,19 +225,18 @@ static inline void dk_sincos_core(double x, double* s, double* c) {
     *s = fabs(x) < 0x1p-27 ? x : sx;
 }
 
-/* Payne-Hanek: x = k pi/2 + rh + rl for finite |x| >= 2^20, k mod 4 returned. The 192
- * bits of 2/pi that matter for x (those of weight 2^(52 - e - 1) and below, e being x's
- * exponent; earlier ones add multiples of 4 to x 2/pi) multiply x's 53-bit integer
- * significand exactly in 32-bit limbs. The bits after the window change x 2/pi by less
- * than 2^-137, and the fraction is at least 2^-62 away from an integer for every double,
- * so r keeps about 75 correct bits. */
-static inline uint64_t dk_reduce_huge(double x, double* rh, double* rl) {
+/* Payne-Hanek: x = k pi/2 + rh + rl for x = +-m 2^(e - 52) (m a 53-bit integer
+ * significand, 20 <= e <= 2047: past the largest double, for a product of two), k mod 4
+ * returned. The 192 bits of 2/pi that matter for x (those of weight 2^(52 - e - 1) and
+ * below; earlier ones add multiples of 4 to x 2/pi) multiply m exactly in 32-bit limbs.
+ * The bits after the window change x 2/pi by less than 2^-137, and the fraction is at
+ * least 2^-62 away from an integer for every double, so r keeps about 75 correct bits. */
+static inline uint64_t dk_reduce_huge_me(uint64_t m, int e, int neg, double* rh, double* rl) {
     const uint64_t m32 = 0xffffffffu;
-    uint64_t u = dk_bits(x), m, p[6], q[6], f0, f1, f2, carry = 0, sum, quad;
+    uint64_t p[6], q[6], f0, f1, f2, carry = 0, sum, quad;
     uint32_t r[6];
-    int e = (int)((u >> 52) & 0x7ff) - 1023, pos, w, sh, k, shift = 0, negate;
+    int pos, w, sh, k, shift = 0, negate;
     double hi, lo, fh, fl, ph, pl;
-    m = (u & 0xfffffffffffffu) | ((uint64_t)1 << 52);
     /* The bit of 2/pi of weight 2^-(e - 53) sits at index e + 10 of the padded table. */
     pos = e + 10;
     w = pos >> 5;
@@ -294,12 +301,19 @@ static inline uint64_t dk_reduce_huge(double x, double* rh, double* rl) {
             *rl = -*rl;
         }
     }
-    if (x < 0) {
+    if (neg) {
         quad = 0 - quad;
         *rh = -*rh;
         *rl = -*rl;
     }
     return quad & 3;
+}
+
+/* dk_reduce_huge_me for a finite double, |x| >= 2^20. */
+static inline uint64_t dk_reduce_huge(double x, double* rh, double* rl) {
+    uint64_t u = dk_bits(x);
+    return dk_reduce_huge_me((u & 0xfffffffffffffu) | ((uint64_t)1 << 52),
+                             (int)((u >> 52) & 0x7ff) - 1023, x < 0, rh, rl);
 }
 
 /* sin x and cos x for |x| >= 2^20, infinities and NaN (which give NaN). */
@@ -369,6 +383,20 @@ static inline void dk_sincos(double x, double* s, double* c) {
     } else {
         dk_sincos_far(x, s, c);
     }
+}
+
+/* sin and cos of a b rounded to a double's 53 bits but not to its exponent range, for
+ * finite a and b whose product overflows (omega dt in discretize): the angle wrapped as a
+ * representable one would be. frexp and the products of its fractions are exact. */
+DK_CALL static void dk_sincos_product(double a, double b, double* s, double* c) {
+    double rh, rl, p;
+    int ea, eb;
+    uint64_t u, q;
+    p = frexp(a, &ea) * frexp(b, &eb); /* |p| in [1/4, 1): a b = p 2^(ea + eb), rounded */
+    u = dk_bits(p);
+    q = dk_reduce_huge_me((u & 0xfffffffffffffu) | ((uint64_t)1 << 52),
+                          (int)((u >> 52) & 0x7ff) - 1023 + ea + eb, p < 0, &rh, &rl);
+    dk_quadrant(q, dk_sin_kernel(rh, rl), dk_cos_kernel(rh, rl), s, c);
 }
 
 /* ---------------------------------------------------------------------------------------
@@ -456,6 +484,51 @@ DK_CALL static double dk_atan2(double y, double x) {
         return dk_atan2_finish(y, sgn, m + sgn, ahi, alo, bhi, blo, ahi / bhi);
     }
     return dk_atan2_finish(y, sgn, m, num, 0.0, den, 0.0, num / den);
+}
+
+/* ---------------------------------------------------------------------------------------
+ * hypot
+ *
+ * sqrt(x^2 + y^2) with Borges's correction ("An Improved Algorithm for hypot(a, b)",
+ * 2019), here without a fused multiply-add: h = sqrt(a^2 + b^2) rounded, then
+ * h - (h^2 - a^2 - b^2) / 2h with the three squares exact (Dekker), which leaves about
+ * half an ulp. The larger magnitude is first brought into [2^-300, 2^300] by a power of
+ * two (exact, but for a smaller operand so much smaller that it cannot change the
+ * result), so that no square overflows or underflows, and the result is scaled back:
+ * that rounds a second time only when it is subnormal. C99 Annex F: an infinity gives
+ * +inf even with a NaN; otherwise a NaN argument comes back as itself (x's if both are). */
+DK_CALL static double dk_hypot(double x, double y) {
+    double a = fabs(x), b = fabs(y), t, back = 1.0, h, hh, hl, ah, al, bh, bl, d;
+    if (a == INFINITY || b == INFINITY)
+        return INFINITY;
+    if (x != x)
+        return x;
+    if (y != y)
+        return y;
+    if (a < b) {
+        t = a;
+        a = b;
+        b = t;
+    }
+    if (b == 0.0)
+        return a;
+    if (a > 0x1p300) {
+        a *= 0x1p-600;
+        b *= 0x1p-600;
+        back = 0x1p600;
+    } else if (a < 0x1p-300) {
+        a *= 0x1p600;
+        b *= 0x1p600;
+        back = 0x1p-600;
+    }
+    h = sqrt(a * a + b * b);
+    hh = dk_two_sqr(h, &hl);
+    ah = dk_two_sqr(a, &al);
+    bh = dk_two_sqr(b, &bl);
+    /* hh - ah and then - bh cancel exactly (Sterbenz: hh is within [ah, 2 ah] to
+     * rounding); the rest are the squares' rounding errors. */
+    d = ((hh - ah) - bh) + ((hl - al) - bl);
+    return (h - d / (2.0 * h)) * back;
 }
 
 #endif

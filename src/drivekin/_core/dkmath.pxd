@@ -1,10 +1,13 @@
-# drivekin's own sincos and atan2 (_core/dkmath.h): the same bits on every
+# drivekin's own sincos, atan2 and hypot (_core/dkmath.h): the same bits on every
 # platform and in every path, per-call and batch. Kernels cimport these names instead of
-# libc.math's; nothing in drivekin calls libm's trigonometry.
+# libc.math's; nothing in drivekin calls libm's trigonometry or hypot.
 
 cdef extern from "_core/dkmath.h" nogil:
     void sincos "dk_sincos"(double x, double* s, double* c)
     double atan2 "dk_atan2"(double y, double x)
+    double hypot "dk_hypot"(double x, double y)
+    # sin and cos of a*b where that product overflows (its 53 bits, any exponent).
+    void sincos_product "dk_sincos_product"(double a, double b, double* s, double* c)
 
 # The array forms (_core/trig_arrays.h): vectorised, the same bits as the scalar forms
 # element by element; outputs must not overlap inputs.

@@ -4,8 +4,8 @@
 # (docs/DESIGN.md says where drivekin's numbers differ); the comments say where the
 # formulas are subtle.
 
-from libc.math cimport fabs, hypot, signbit, sqrt
-from drivekin._core.dkmath cimport atan2, sincos
+from libc.math cimport INFINITY, fabs, signbit, sqrt
+from drivekin._core.dkmath cimport atan2, hypot, sincos, sincos_product
 from drivekin._core.types cimport desat_t, dswerve_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 
 # ---------------------------------------------------------------------------------------
@@ -36,9 +36,10 @@ cdef inline double clamp01(double t) noexcept nogil:
     return jmax(0.0, jmin(t, 1.0))
 
 cdef inline double fhypot(double x, double y) noexcept nogil:
-    # sqrt(x² + y²) inlines (-fno-math-errno) and is within an ulp of libm's hypot, a call
-    # that costs more than the rest of a module's inverse kinematics. hypot is kept where
-    # squaring could overflow or underflow and for non-finite input (hypot(inf, nan) = inf).
+    # sqrt(x² + y²) inlines (-fno-math-errno) and is within an ulp of hypot, a call that
+    # costs more than the rest of a module's inverse kinematics. hypot (dkmath's) is kept
+    # where squaring could overflow or underflow and for non-finite input (hypot(inf, nan)
+    # = inf).
     cdef double r = sqrt(x * x + y * y)
     if 1e-150 < r < 1e150:
         return r
@@ -65,8 +66,16 @@ cdef inline rot2_t rot_scaled(double x, double y, double m) noexcept nogil:
     return r
 
 cdef inline rot2_t rot_xy(double x, double y) noexcept nogil:
-    # Rotation2d(x, y) for arbitrary (user) vectors.
-    return rot_scaled(x, y, hypot(x, y))
+    # Rotation2d(x, y) for arbitrary (user) vectors. Where |(x, y)| overflows although x
+    # and y are finite (x/inf would make the pair (0, 0)), (x/4, y/4) has the same
+    # direction: exactly, as a component that large is, and the other can lose only bits
+    # far below the quotient's last.
+    cdef double m = hypot(x, y)
+    if m == INFINITY and fabs(x) < INFINITY and fabs(y) < INFINITY:
+        x = 0.25 * x
+        y = 0.25 * y
+        m = hypot(x, y)
+    return rot_scaled(x, y, m)
 
 cdef inline rot2_t rot_unit(double x, double y) noexcept nogil:
     # Re-normalising products of rotations (unit length up to rounding): sqrt(x² + y²)
@@ -174,20 +183,23 @@ cdef inline pose2_t twist_exp_cs(double dx, double dy, double dtheta,
         c = (st * st / (1.0 + ct) if ct > 0.0 else 1.0 - ct) / dtheta
     return pose(vec(dx * s - dy * c, dx * c + dy * s), rot_unit(ct, st))
 
+cdef inline double log_k(double theta, double c, double s) noexcept nogil:
+    # k = (θ/2)·cot(θ/2) for θ = atan2(s, c). WPILib computes (θ/2)·sin θ / (cos θ − 1),
+    # whose cos θ − 1 cancels (relative error ε/|cos θ − 1|: 1e-7 at θ = 5e-5). For
+    # cos θ > 0 the same value is (θ/2)(1 + cos θ)/sin θ, with no subtraction; elsewhere
+    # cos θ − 1 ≤ −1 is harmless.
+    cdef double h = 0.5 * theta
+    if fabs(theta) < 1e-9:
+        return 1.0 - theta * theta / 12.0
+    if c > 0.0:
+        return h * (1.0 + c) / s
+    return -(h * s) / (c - 1.0)
+
 cdef inline twist2_t transform_log_angle(pose2_t tr, double theta) noexcept nogil:
     # theta must equal atan2(tr.r.s, tr.r.c); callers that already know it skip the atan2.
     cdef twist2_t tw
     cdef double h = 0.5 * theta
-    cdef double k
-    # k = (θ/2)·cot(θ/2). WPILib computes (θ/2)·sin θ / (cos θ − 1), whose cos θ − 1 cancels
-    # (relative error ε/|cos θ − 1|: 1e-7 at θ = 5e-5). For cos θ > 0 the same value is
-    # (θ/2)(1 + cos θ)/sin θ, with no subtraction; elsewhere cos θ − 1 ≤ −1 is harmless.
-    if fabs(theta) < 1e-9:
-        k = 1.0 - theta * theta / 12.0
-    elif tr.r.c > 0.0:
-        k = h * (1.0 + tr.r.c) / tr.r.s
-    else:
-        k = -(h * tr.r.s) / (tr.r.c - 1.0)
+    cdef double k = log_k(theta, tr.r.c, tr.r.s)
     # WPILib rotates by the normalised (k, -h) and rescales by hypot(k, h); that is the
     # linear map below up to rounding (k >= 0 here, so the normalisation never degenerates).
     tw.dx = k * tr.t.x + h * tr.t.y
@@ -215,22 +227,47 @@ cdef inline pose2_t pose_interpolate(pose2_t a, pose2_t b, double t) noexcept no
 cdef inline vec3_t chassis_discretize(double vx, double vy, double omega, double dt) noexcept nogil:
     cdef double theta = omega * dt, c, s
     sincos(theta, &s, &c)
-    return chassis_discretize_cs(vx, vy, dt, theta, c, s)
+    return chassis_discretize_cs(vx, vy, omega, dt, theta, c, s)
 
-cdef inline vec3_t chassis_discretize_cs(double vx, double vy, double dt, double theta,
-                                         double ct, double st) noexcept nogil:
+cdef inline vec3_t chassis_discretize_cs(double vx, double vy, double omega, double dt,
+                                         double theta, double ct, double st) noexcept nogil:
     # chassis_discretize with theta = omega*dt and its cos and sin already known (the batch
     # module computes those four at a time).
-    # omega*dt goes through a Rotation2d, so it is wrapped; dt = 0 divides by zero (as WPILib).
+    # WPILib's Transform2d.log of (vx·dt, vy·dt, Rotation2d(θ)) over dt, with dt cancelled:
+    # (k·vx + h·vy, −h·vx + k·vy, φ/dt), φ = θ wrapped by the Rotation2d, h = φ/2,
+    # k = h·cot h (so 0 ≤ k ≤ 1, |h| ≤ π/2). Neither v·dt nor any quotient by dt is formed,
+    # so finite input gives a finite result unless that result exceeds the doubles.
     cdef vec3_t out
-    cdef pose2_t tr = pose(vec(vx * dt, vy * dt), rot_cs(ct, st))
-    # atan2(sin θ, cos θ) returns θ itself (to rounding) inside (−π, π); only outside it
-    # does the wrap change anything, so the atan2 is paid only there.
-    cdef twist2_t tw = transform_log_angle(
-        tr, theta if fabs(theta) < 3.0 else rot_radians(tr.r))
-    out.x = tw.dx / dt
-    out.y = tw.dy / dt
-    out.z = tw.dtheta / dt
+    cdef double phi, h, k
+    if dt == 0.0:
+        # WPILib divides the log (0, 0, 0) by dt unguarded: 0/0 in every field.
+        out.x = out.y = out.z = 0.0 / dt
+        return out
+    if fabs(theta) < 3.0:
+        # atan2(sin θ, cos θ) returns θ (to rounding) inside (−π, π), so no wrap: ω itself
+        # (θ/dt to rounding, and still ω where θ underflowed).
+        phi = theta
+        out.z = omega
+    else:
+        if theta == INFINITY or theta == -INFINITY:
+            if fabs(omega) < INFINITY and fabs(dt) < INFINITY:
+                # θ overflowed: its 53 bits with a wider exponent, wrapped as any angle.
+                sincos_product(omega, dt, &st, &ct)
+        phi = atan2(st, ct)
+        out.z = phi / dt
+    h = 0.5 * phi
+    k = log_k(phi, ct, st)
+    if fabs(vx) > 1e300 or fabs(vy) > 1e300:
+        # h·vy can overflow although the sum fits (|h| < 2): a sixteenth, then scaled
+        # back; exact for the large component, and a small one loses only bits far below
+        # the result's last.
+        vx = vx * 0.0625
+        vy = vy * 0.0625
+        out.x = (k * vx + h * vy) * 16.0
+        out.y = (-h * vx + k * vy) * 16.0
+    else:
+        out.x = k * vx + h * vy
+        out.y = -h * vx + k * vy
     return out
 
 # ---------------------------------------------------------------------------------------
@@ -362,7 +399,7 @@ cdef inline double desaturated_discretize_scale(Py_ssize_t n, const double* mx,
     cdef double lo, hi, mid, glo, ghi, gm
     cdef int j, side = 0
     ghi = swerve_top_speed(n, mx, my, chassis_discretize(vx, vy, omega, dt)) - limit
-    if ghi <= 0.0:
+    if ghi <= 0.0 or limit == INFINITY:     # (an overflowing top speed minus inf is NaN)
         return 1.0
     lo = 0.0
     glo = -limit

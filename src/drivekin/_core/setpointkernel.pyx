@@ -6,7 +6,8 @@ drivekin.batch.generateSetpoints both run ``generate`` on a SetpointKernel's buf
 Angles go through drivekin's Rotation2d arithmetic (WPILib's), so the branches
 PathPlannerLib takes on angle comparisons come out the same."""
 from libc.float cimport DBL_MAX
-from libc.math cimport M_PI, fabs, hypot, isfinite, isnan, sqrt
+from libc.math cimport M_PI, fabs, isfinite, isnan, sqrt
+from drivekin._core.dkmath cimport hypot
 from libc.string cimport memcpy
 from cpython.mem cimport PyMem_Free
 
