@@ -11,6 +11,7 @@ import sys
 import numpy
 from Cython.Build import cythonize
 from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
 
 debug = os.environ.get("DRIVEKIN_CYTHON_DEBUG") == "1"
 trace = os.environ.get("DRIVEKIN_CYTHON_TRACE") == "1"
@@ -97,5 +98,16 @@ def extensions(numpy_include=None, system=sys.platform, machine=platform.machine
 # setuptools runs this file as __main__ (pip, build, cibuildwheel, setup.py commands);
 # scripts/cross_build.py imports it for the extension list.
 if __name__ == "__main__":
-    # Compile the modules in parallel (pip and cibuildwheel pass no -j).
-    setup(ext_modules=extensions(), options={"build_ext": {"parallel": os.cpu_count() or 1}})
+    class BuildExt(build_ext):
+        """Cythonizes when the extensions are built, not whenever setup.py runs: writing
+        the sdist or the metadata (pip asks for it before every build) needs only the
+        module names, and translating every module took a minute there."""
+
+        def finalize_options(self):
+            self.distribution.ext_modules = extensions()
+            super().finalize_options()
+
+    setup(ext_modules=[Extension(f"drivekin.{name}", []) for name in modules],
+          cmdclass={"build_ext": BuildExt},
+          # Compile the modules in parallel (pip and cibuildwheel pass no -j).
+          options={"build_ext": {"parallel": os.cpu_count() or 1}})
