@@ -41,8 +41,8 @@ from drivekin._core.types cimport rot2_t, vec3_t
 from drivekin.chassis cimport ChassisVelocities, new_chassis_velocities
 from drivekin.geometry cimport Translation2d
 from drivekin.motor cimport DCMotor, motor_current
-from drivekin.swerve cimport (SwerveDriveKinematics, SwerveModuleVelocity, _ModuleVector,
-                              new_module_velocity)
+from drivekin.swerve cimport SwerveDriveKinematics
+from drivekin.swervemodule cimport SwerveModuleVelocity, _ModuleVector, new_module_velocity
 from drivekin._core.errors import refuse_delete, type_name
 cimport numpy as cnp
 
