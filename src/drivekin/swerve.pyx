@@ -10,7 +10,7 @@ WPILib); every method runs with the GIL held, so a call is never interleaved."""
 from drivekin._core.drivetrain cimport Drivetrain
 cimport numpy as cnp
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from cpython.ref cimport Py_INCREF, PyObject
+from cpython.ref cimport PyObject
 from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
 from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
@@ -27,7 +27,7 @@ from drivekin._core.kernels cimport (
     jmax, max_abs, swerve_ik, swerve_ik_accel, vec, vec_eq,
 )
 from drivekin.swervemodule cimport (SwerveModuleAcceleration, SwerveModulePosition,
-                                    SwerveModuleVelocity, _ModuleVector)
+                                    SwerveModuleVelocity, _ModuleVector, new_modules)
 from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
 from drivekin.chassis cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
 from drivekin._core.errors import refuse_delete, type_name
@@ -66,27 +66,11 @@ cdef inline _ModuleVector item(PyObject** items, Py_ssize_t i, type cls, str wha
     return <_ModuleVector>items[i]
 
 
-# Results are stored in two steps: the destination is built or validated first (which may
-# allocate or run Python code), then the kernel runs and store_modules copies its output
-# with nothing in between that could run a finalizer, another thread or a re-entrant call
-# on the shared scratch, and nothing changes if the destination is rejected.
-
-cdef object new_modules(Py_ssize_t n, type cls):
-    """Return a tuple of n new module values (from the freelists), to be filled."""
-    cdef object t = PyTuple_New(n)
-    cdef _ModuleVector o
-    cdef Py_ssize_t i
-    for i in range(n):
-        if cls is SwerveModuleVelocity:
-            o = SwerveModuleVelocity.__new__(SwerveModuleVelocity)
-        elif cls is SwerveModulePosition:
-            o = SwerveModulePosition.__new__(SwerveModulePosition)
-        else:
-            o = SwerveModuleAcceleration.__new__(SwerveModuleAcceleration)
-        Py_INCREF(o)
-        PyTuple_SET_ITEM(t, i, o)
-    return t
-
+# Results are stored in two steps: the destination is built (swervemodule's new_modules)
+# or validated first (which may allocate or run Python code), then the kernel runs and
+# store_modules copies its output with nothing in between that could run a finalizer,
+# another thread or a re-entrant call on the shared scratch, and nothing changes if the
+# destination is rejected.
 
 cdef object out_modules(object out, Py_ssize_t n, type cls, str what, double** data):
     """Validate a caller's ``out``: return the list/tuple of its n ``cls`` objects, or None

@@ -35,3 +35,5 @@ cdef inline SwerveModulePosition new_module_position(double d, rot2_t a):
     o.a = a
     return o
 
+
+cdef object new_modules(Py_ssize_t n, type cls)

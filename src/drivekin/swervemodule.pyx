@@ -7,6 +7,8 @@ The values hold C doubles (the angle as a cos/sin pair), so :mod:`drivekin.swerv
 kinematics reads and writes them without creating Python objects; they are importable
 from :mod:`drivekin.swerve` too."""
 cimport cython
+from cpython.ref cimport Py_INCREF
+from cpython.tuple cimport PyTuple_New, PyTuple_SET_ITEM
 from libc.math cimport M_PI, fabs, signbit
 
 from drivekin._core.types cimport rot2_t
@@ -247,3 +249,22 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
         # WPILib's toString says "Accelerations" (plural); kept for identical logs.
         return (f"SwerveModuleAccelerations(Acceleration: {f2(self.m)} m/s², "
                 f"Angle: {new_rotation(self.a)})")
+
+
+# Built here, where each class's allocator (and its freelist) is a direct call, not a
+# call through the type object as in the modules that cimport the classes.
+cdef object new_modules(Py_ssize_t n, type cls):
+    """Return a tuple of n new module values (from the freelists), to be filled."""
+    cdef object t = PyTuple_New(n)
+    cdef _ModuleVector o
+    cdef Py_ssize_t i
+    for i in range(n):
+        if cls is SwerveModuleVelocity:
+            o = SwerveModuleVelocity.__new__(SwerveModuleVelocity)
+        elif cls is SwerveModulePosition:
+            o = SwerveModulePosition.__new__(SwerveModulePosition)
+        else:
+            o = SwerveModuleAcceleration.__new__(SwerveModuleAcceleration)
+        Py_INCREF(o)
+        PyTuple_SET_ITEM(t, i, o)
+    return t
