@@ -39,8 +39,8 @@ from drivekin.setpoint import (
     SwerveSetpointGenerator,
 )
 from drivekin.chassis import ChassisAccelerations, ChassisVelocities
-from drivekin.swerve import (
-    SwerveDriveKinematics,
+from drivekin.swerve import SwerveDriveKinematics
+from drivekin.swervemodule import (
     SwerveModuleAcceleration,
     SwerveModulePosition,
     SwerveModuleVelocity,

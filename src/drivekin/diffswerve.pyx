@@ -29,8 +29,8 @@ from drivekin._core.args cimport (as_fast, check_type, float64_data, is_array,
 from drivekin._core.kernels cimport (clamp01, dswerve_desaturate, dswerve_drive_factor,
                                      dswerve_module, dswerve_motors, rot_rad)
 from drivekin.geometry cimport Rotation2d, new_rotation
-from drivekin.swerve cimport (SwerveModulePosition, SwerveModuleVelocity, _ModuleVector,
-                              new_module_position)
+from drivekin.swervemodule cimport (SwerveModulePosition, SwerveModuleVelocity, _ModuleVector,
+                                    new_module_position)
 from drivekin._core.errors import type_name
 from drivekin._core.format import f2
 

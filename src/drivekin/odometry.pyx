@@ -19,7 +19,8 @@ from drivekin._core.kernels cimport (deadwheel_solve, forward_solve, forward_sol
                                 odometry_move, odometry_move_cs, odometry_step, pose,
                                 rot_radians, rot_xy, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
-from drivekin.swerve cimport SwerveDriveKinematics, SwerveModulePosition
+from drivekin.swerve cimport SwerveDriveKinematics
+from drivekin.swervemodule cimport SwerveModulePosition
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
 from drivekin.deadwheel cimport DeadWheelKinematics
 from drivekin.chassis cimport new_chassis_velocities

@@ -37,8 +37,8 @@ from drivekin._core.setpointkernel cimport (CONSTANTS, SAVED, SCRATCH, SetpointK
 from drivekin._core.types cimport rot2_t, vec3_t
 from drivekin.chassis cimport ChassisVelocities, new_chassis_velocities
 from drivekin cimport robotconfig
-from drivekin.swerve cimport (SwerveDriveKinematics, SwerveModuleVelocity, _ModuleVector,
-                              new_module_velocity)
+from drivekin.swerve cimport SwerveDriveKinematics
+from drivekin.swervemodule cimport SwerveModuleVelocity, _ModuleVector, new_module_velocity
 from drivekin._core.errors import refuse_delete, type_name
 # The robot description lives in drivekin.robotconfig; this module exports it too.
 from drivekin.robotconfig import ModuleConfig, RobotConfig

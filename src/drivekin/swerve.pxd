@@ -1,43 +1,9 @@
-# Swerve module values and SwerveDriveKinematics. The module values hold C doubles by
-# value (the angle is a rot2_t, not a Rotation2d object), so results can be written in
-# place without creating Python objects.
+# SwerveDriveKinematics; the module values it reads and writes are drivekin.swervemodule's.
 cimport cython
 from drivekin._core.drivetrain cimport Drivetrain
-from drivekin._core.types cimport vec3_t, rot2_t, vec2_t
+from drivekin._core.types cimport vec2_t, vec3_t
 from drivekin.chassis cimport ChassisVelocities
 from drivekin.geometry cimport Translation2d
-
-
-cdef class _ModuleVector:
-    cdef double m                # velocity m/s, distance m or acceleration m/s^2
-    cdef rot2_t a                # module angle
-    cdef _ModuleVector _new(self, double m, rot2_t a)
-    cdef _ModuleVector _lerp(self, _ModuleVector end, double t)
-
-@cython.final
-cdef class SwerveModuleVelocity(_ModuleVector):
-    pass
-
-@cython.final
-cdef class SwerveModulePosition(_ModuleVector):
-    pass
-
-@cython.final
-cdef class SwerveModuleAcceleration(_ModuleVector):
-    pass
-
-
-cdef inline SwerveModuleVelocity new_module_velocity(double v, rot2_t a):
-    cdef SwerveModuleVelocity o = SwerveModuleVelocity.__new__(SwerveModuleVelocity)
-    o.m = v
-    o.a = a
-    return o
-
-cdef inline SwerveModulePosition new_module_position(double d, rot2_t a):
-    cdef SwerveModulePosition o = SwerveModulePosition.__new__(SwerveModulePosition)
-    o.m = d
-    o.a = a
-    return o
 
 
 @cython.final

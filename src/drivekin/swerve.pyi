@@ -1,4 +1,5 @@
-"""Swerve module values and N-module swerve kinematics (WPILib 2027).
+"""N-module swerve kinematics (WPILib 2027). The swerve module values it takes and returns
+are :mod:`drivekin.swervemodule`'s, importable from here too.
 
 Units: m, m/s, m/s², rad, rad/s, rad/s², s. Robot frame: x forward, y left, CCW positive.
 
@@ -14,119 +15,25 @@ WPILib); every method runs with the GIL held, so a call is never interleaved.
 # tests/api/test_stubs.py checks that they match and that no public name is missing on
 # either side.
 #
-# As at runtime, the three swerve module values derive from the private base
-# _ModuleVector, and SwerveDriveKinematics from drivekin._core.drivetrain.Drivetrain
-# (_core/drivetrain.pyi); each class declares only the members it defines itself
-# (inherited ones are typed with Self).
+# As at runtime, SwerveDriveKinematics derives from drivekin._core.drivetrain.Drivetrain
+# (_core/drivetrain.pyi) and declares only the members it defines itself. The module
+# values are drivekin.swervemodule's (swervemodule.pyi), re-exported here.
 
-from collections.abc import Iterable, Iterator, Sequence
-from typing import ClassVar, final, overload
+from collections.abc import Iterable, Sequence
+from typing import final, overload
 
 import numpy as np
 import numpy.typing as npt
-from typing_extensions import Self, disjoint_base
 
 from drivekin._core.drivetrain import Drivetrain
 from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.geometry import Rotation2d, Translation2d, Twist2d
+from drivekin.swervemodule import SwerveModuleAcceleration as SwerveModuleAcceleration
+from drivekin.swervemodule import SwerveModulePosition as SwerveModulePosition
+from drivekin.swervemodule import SwerveModuleVelocity as SwerveModuleVelocity
 
 __all__ = ["SwerveDriveKinematics", "SwerveModuleAcceleration", "SwerveModulePosition",
            "SwerveModuleVelocity"]
-
-@disjoint_base
-class _ModuleVector:
-    """Shared behaviour of the swerve module values: a scalar and an angle."""
-
-    @property
-    def angle(self) -> Rotation2d:
-        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
-
-    @angle.setter
-    def angle(self, value: Rotation2d) -> None: ...
-    def compareTo(self, other: Self) -> int:
-        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
-        must be of the same class."""
-
-    def __eq__(self, other: object, /) -> bool: ...
-    __hash__: ClassVar[None]  # type: ignore[assignment]
-    def __iter__(self) -> Iterator[float | Rotation2d]: ...
-
-@final
-class SwerveModuleVelocity(_ModuleVector):
-    """SwerveModuleVelocity(velocity=0.0, angle=Rotation2d())
-
-    The velocity of one swerve module: wheel ``velocity`` in m/s (may be negative) and the
-    module ``angle``. Mutable; ``==`` compares velocity within 1e-9 m/s and the angle
-    within 1e-9. (WPILib 2026: ``SwerveModuleState(speed, angle)``.)
-    """
-
-    def __init__(self, velocity: float = 0.0, angle: Rotation2d | float | None = None) -> None: ...
-    @property
-    def velocity(self) -> float:
-        """Wheel velocity, m/s."""
-
-    @velocity.setter
-    def velocity(self, value: float) -> None: ...
-    def optimize(self, currentAngle: Rotation2d) -> SwerveModuleVelocity:
-        """Return the equivalent velocity that turns the module by at most 90°.
-
-        If the target angle is more than 90° from ``currentAngle``, the result drives the
-        wheel backwards at the angle + 180°. Returns a new object (2027)."""
-
-    def optimizeInPlace(self, currentAngle: Rotation2d) -> None:
-        """Allocation-free :meth:`optimize`: update this object (the WPILib 2026
-        behaviour). Returns None."""
-
-    def cosineScale(self, currentAngle: Rotation2d) -> SwerveModuleVelocity:
-        """Return the velocity scaled by cos(angle − currentAngle), so a module that is
-        still turning does not push sideways. Returns a new object (2027)."""
-
-    def cosineScaleInPlace(self, currentAngle: Rotation2d) -> None:
-        """Allocation-free :meth:`cosineScale`: update this object. Returns None."""
-
-    def interpolate(self, endValue: SwerveModuleVelocity, t: float) -> SwerveModuleVelocity:
-        """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
-        [0, 1]."""
-
-@final
-class SwerveModulePosition(_ModuleVector):
-    """SwerveModulePosition(distance=0.0, angle=Rotation2d())
-
-    The position of one swerve module: distance driven by the wheel in m and the module
-    ``angle``. Mutable; ``==`` compares distance within 1e-9 m and the angle within 1e-9.
-    """
-
-    def __init__(self, distance: float = 0.0, angle: Rotation2d | float | None = None) -> None: ...
-    @property
-    def distance(self) -> float:
-        """Distance driven by the wheel, m."""
-
-    @distance.setter
-    def distance(self, value: float) -> None: ...
-    def copy(self) -> SwerveModulePosition:
-        """Return an independent copy."""
-
-    def interpolate(self, endValue: SwerveModulePosition, t: float) -> SwerveModulePosition:
-        """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
-
-@final
-class SwerveModuleAcceleration(_ModuleVector):
-    """SwerveModuleAcceleration(acceleration=0.0, angle=Rotation2d())
-
-    The acceleration of one swerve module: magnitude in m/s² and the direction ``angle``
-    of the acceleration vector. Mutable; ``==`` compares within 1e-9.
-    """
-
-    def __init__(self, acceleration: float = 0.0, angle: Rotation2d | float | None = None) -> None: ...
-    @property
-    def acceleration(self) -> float:
-        """Acceleration magnitude, m/s²."""
-
-    @acceleration.setter
-    def acceleration(self, value: float) -> None: ...
-    def interpolate(self, endValue: SwerveModuleAcceleration, t: float) -> SwerveModuleAcceleration:
-        """Interpolate the magnitude linearly and the angle the short way; ``t`` is
-        clamped to [0, 1]."""
 
 @final
 class SwerveDriveKinematics(Drivetrain):

@@ -1,4 +1,5 @@
-"""Swerve module values and N-module swerve kinematics (WPILib 2027).
+"""N-module swerve kinematics (WPILib 2027). The swerve module values it takes and returns
+are :mod:`drivekin.swervemodule`'s, importable from here too.
 
 Units: m, m/s, m/s², rad, rad/s, rad/s², s. Robot frame: x forward, y left, CCW positive.
 
@@ -6,274 +7,46 @@ Every hot operation has two forms: an object-returning façade with WPILib's nam
 allocation-free ``...Into`` / ``...InPlace`` form that writes into caller-owned objects or
 numpy buffers. Kinematics objects carry heading memory and are not thread-safe (as in
 WPILib); every method runs with the GIL held, so a call is never interleaved."""
-cimport cython
 from drivekin._core.drivetrain cimport Drivetrain
 cimport numpy as cnp
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from cpython.ref cimport Py_INCREF, PyObject
+from cpython.ref cimport PyObject
 from cpython.sequence cimport PySequence_Fast_GET_SIZE, PySequence_Fast_ITEMS
 from cpython.list cimport PyList_CheckExact
-from cpython.tuple cimport PyTuple_CheckExact, PyTuple_New, PyTuple_SET_ITEM
-from libc.math cimport INFINITY, M_PI, fabs, isfinite, signbit
+from cpython.tuple cimport PyTuple_CheckExact
+from libc.math cimport INFINITY, fabs, isfinite
 from drivekin._core.dkmath cimport atan2_n, sincos_n
 from libc.string cimport memcpy
 
 import numpy as np
 
 from drivekin._core.types cimport desat_t, rot2_t, vec2_t, vec3_t
-from drivekin._core.args cimport as_fast, check_type, exact_type, float64_data, is_number, snapshot
+from drivekin._core.args cimport as_fast, check_type, exact_type, float64_data, snapshot
 from drivekin._core.kernels cimport (
-    chassis_discretize, clamp01, desaturate_factors, desaturated_discretize_scale,
-    forward_solve, java_equals, jmax, max_abs, rot_eq, rot_interp, rot_minus, rot_plus,
-    rot_rad, rot_radians, swerve_ik, swerve_ik_accel, vec, vec_eq,
+    chassis_discretize, desaturate_factors, desaturated_discretize_scale, forward_solve,
+    jmax, max_abs, swerve_ik, swerve_ik_accel, vec, vec_eq,
 )
+from drivekin.swervemodule cimport (SwerveModuleAcceleration, SwerveModulePosition,
+                                    SwerveModuleVelocity, _ModuleVector, new_modules)
 from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
 from drivekin.chassis cimport (ChassisAccelerations, ChassisVelocities, check_discretize_fits,
                               new_chassis_velocities)
-from drivekin._core.errors import refuse_delete, type_name
-from drivekin._core.format import f2
+from drivekin._core.errors import type_name
 
 cnp.import_array()
+
+# An import statement does not bind a name this module cimports, so the module values are
+# bound through the module dict: their names stay importable from here.
+from drivekin import swervemodule as _swervemodule
+globals().update({name: getattr(_swervemodule, name) for name in _swervemodule.__all__})
 
 __all__ = ["SwerveDriveKinematics", "SwerveModuleAcceleration", "SwerveModulePosition",
            "SwerveModuleVelocity"]
 
-cdef rot2_t IDENTITY
-IDENTITY.c = 1.0
-IDENTITY.s = 0.0
 cdef Translation2d ORIGIN = Translation2d()
 # Module counts up to this are handled in stack memory by the static desaturation façade.
 cdef enum:
     STACK_MODULES = 16
-
-
-# ---------------------------------------------------------------------------------------
-# Module values: one scalar plus an angle
-
-cdef rot2_t _angle_arg(object angle) except *:
-    if angle is None:
-        return IDENTITY
-    if isinstance(angle, Rotation2d):
-        return (<Rotation2d>angle).r
-    if is_number(angle):                   # robotpy's implicit Rotation2d(radians)
-        return rot_rad(angle)
-    raise TypeError(f"angle must be a Rotation2d or a float (rad), got {type_name(angle)}")
-
-
-cdef inline void optimize_into(_ModuleVector v, rot2_t current, _ModuleVector out) noexcept:
-    # Turn at most 90°: beyond that, drive backwards at the angle + 180°.
-    if fabs(rot_radians(rot_minus(v.a, current)) * (180.0 / M_PI)) > 90.0:
-        out.m = -v.m
-        out.a = rot_plus(v.a, rot_rad(M_PI))
-    else:
-        out.m = v.m
-        out.a = v.a
-
-
-@cython.freelist(128)
-cdef class _ModuleVector:
-    """Shared behaviour of the swerve module values: a scalar and an angle."""
-
-    cdef _ModuleVector _new(self, double m, rot2_t a):
-        raise TypeError("_ModuleVector is an abstract base; use a SwerveModule... class")
-
-    @property
-    def angle(self):
-        """Module angle (Rotation2d). Stored by value: assigning copies the rotation."""
-        return new_rotation(self.a)
-
-    @angle.setter
-    def angle(self, value: Rotation2d):
-        check_type(value, Rotation2d, "angle")
-        self.a = (<Rotation2d>value).r
-
-    def compareTo(self, other: _ModuleVector):
-        """Compare the scalar only, like Java ``Double.compare``: −1, 0 or 1. ``other``
-        must be of the same class."""
-        check_type(other, type(self), "other")
-        cdef double a = self.m, b = (<_ModuleVector>other).m
-        if a < b:
-            return -1
-        if a > b:
-            return 1
-        if java_equals(a, b):
-            return 0
-        # Double.compare orders -0.0 before 0.0 and NaN after everything.
-        if a != a:
-            return 1
-        if b != b:
-            return -1
-        return -1 if signbit(a) else 1
-
-    cdef _ModuleVector _lerp(self, _ModuleVector end, double t):
-        if type(end) is not type(self):
-            raise TypeError(f"expected a {type(self).__name__}, got {type_name(end)}")
-        return self._new(self.m + (end.m - self.m) * t, rot_interp(self.a, end.a, t))
-
-    def __eq__(self, other):
-        cdef _ModuleVector o
-        if type(other) is type(self):
-            o = <_ModuleVector>other
-            return fabs(self.m - o.m) < 1e-9 and rot_eq(self.a, o.a)
-        return NotImplemented
-
-    __hash__ = None  # mutable, tolerant equality
-
-    def __reduce__(self):
-        return (type(self), (self.m, new_rotation(self.a)))
-
-    def __delattr__(self, name):
-        refuse_delete(self, name)
-
-    def __iter__(self):
-        yield self.m
-        yield new_rotation(self.a)
-
-
-cdef class SwerveModuleVelocity(_ModuleVector):
-    """SwerveModuleVelocity(velocity=0.0, angle=Rotation2d())
-
-    The velocity of one swerve module: wheel ``velocity`` in m/s (may be negative) and the
-    module ``angle``. Mutable; ``==`` compares velocity within 1e-9 m/s and the angle
-    within 1e-9. (WPILib 2026: ``SwerveModuleState(speed, angle)``.)
-    """
-
-    def __init__(self, double velocity=0.0, angle=None):
-        self.a = _angle_arg(angle)
-        self.m = velocity
-
-    cdef _ModuleVector _new(self, double m, rot2_t a):
-        return new_module_velocity(m, a)
-
-    @property
-    def velocity(self):
-        """Wheel velocity, m/s."""
-        return self.m
-
-    @velocity.setter
-    def velocity(self, double value):
-        self.m = value
-
-    def optimize(self, currentAngle: Rotation2d):
-        """Return the equivalent velocity that turns the module by at most 90°.
-
-        If the target angle is more than 90° from ``currentAngle``, the result drives the
-        wheel backwards at the angle + 180°. Returns a new object (2027)."""
-        check_type(currentAngle, Rotation2d, "currentAngle")
-        cdef SwerveModuleVelocity out = new_module_velocity(self.m, self.a)
-        optimize_into(self, (<Rotation2d>currentAngle).r, out)
-        return out
-
-    def optimizeInPlace(self, currentAngle: Rotation2d):
-        """Allocation-free :meth:`optimize`: update this object (the WPILib 2026
-        behaviour). Returns None."""
-        check_type(currentAngle, Rotation2d, "currentAngle")
-        optimize_into(self, (<Rotation2d>currentAngle).r, self)
-
-    def cosineScale(self, currentAngle: Rotation2d):
-        """Return the velocity scaled by cos(angle − currentAngle), so a module that is
-        still turning does not push sideways. Returns a new object (2027)."""
-        check_type(currentAngle, Rotation2d, "currentAngle")
-        return new_module_velocity(self.m * rot_minus(self.a, (<Rotation2d>currentAngle).r).c,
-                                   self.a)
-
-    def cosineScaleInPlace(self, currentAngle: Rotation2d):
-        """Allocation-free :meth:`cosineScale`: update this object. Returns None."""
-        check_type(currentAngle, Rotation2d, "currentAngle")
-        self.m = self.m * rot_minus(self.a, (<Rotation2d>currentAngle).r).c
-
-    def interpolate(self, endValue: SwerveModuleVelocity, double t):
-        """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
-        [0, 1]."""
-        check_type(endValue, SwerveModuleVelocity, "endValue")
-        return self._lerp(<_ModuleVector>endValue, clamp01(t))
-
-    def __repr__(self):
-        return f"SwerveModuleVelocity({self.m!r}, {new_rotation(self.a)!r})"
-
-    def __str__(self):
-        return f"SwerveModuleVelocity(Velocity: {f2(self.m)} m/s, Angle: {new_rotation(self.a)})"
-
-
-cdef class SwerveModulePosition(_ModuleVector):
-    """SwerveModulePosition(distance=0.0, angle=Rotation2d())
-
-    The position of one swerve module: distance driven by the wheel in m and the module
-    ``angle``. Mutable; ``==`` compares distance within 1e-9 m and the angle within 1e-9.
-    """
-
-    def __init__(self, double distance=0.0, angle=None):
-        self.a = _angle_arg(angle)
-        self.m = distance
-
-    cdef _ModuleVector _new(self, double m, rot2_t a):
-        return new_module_position(m, a)
-
-    @property
-    def distance(self):
-        """Distance driven by the wheel, m."""
-        return self.m
-
-    @distance.setter
-    def distance(self, double value):
-        self.m = value
-
-    def copy(self):
-        """Return an independent copy."""
-        return new_module_position(self.m, self.a)
-
-    def interpolate(self, endValue: SwerveModulePosition, double t):
-        """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
-        check_type(endValue, SwerveModulePosition, "endValue")
-        return self._lerp(<_ModuleVector>endValue, t)
-
-    def __repr__(self):
-        return f"SwerveModulePosition({self.m!r}, {new_rotation(self.a)!r})"
-
-    def __str__(self):
-        return f"SwerveModulePosition(Distance: {f2(self.m)} m, Angle: {new_rotation(self.a)})"
-
-
-cdef class SwerveModuleAcceleration(_ModuleVector):
-    """SwerveModuleAcceleration(acceleration=0.0, angle=Rotation2d())
-
-    The acceleration of one swerve module: magnitude in m/s² and the direction ``angle``
-    of the acceleration vector. Mutable; ``==`` compares within 1e-9.
-    """
-
-    def __init__(self, double acceleration=0.0, angle=None):
-        self.a = _angle_arg(angle)
-        self.m = acceleration
-
-    cdef _ModuleVector _new(self, double m, rot2_t a):
-        cdef SwerveModuleAcceleration o = SwerveModuleAcceleration.__new__(SwerveModuleAcceleration)
-        o.m = m
-        o.a = a
-        return o
-
-    @property
-    def acceleration(self):
-        """Acceleration magnitude, m/s²."""
-        return self.m
-
-    @acceleration.setter
-    def acceleration(self, double value):
-        self.m = value
-
-    def interpolate(self, endValue: SwerveModuleAcceleration, double t):
-        """Interpolate the magnitude linearly and the angle the short way; ``t`` is
-        clamped to [0, 1]."""
-        check_type(endValue, SwerveModuleAcceleration, "endValue")
-        return self._lerp(<_ModuleVector>endValue, clamp01(t))
-
-    def __repr__(self):
-        return f"SwerveModuleAcceleration({self.m!r}, {new_rotation(self.a)!r})"
-
-    def __str__(self):
-        # WPILib's toString says "Accelerations" (plural); kept for identical logs.
-        return (f"SwerveModuleAccelerations(Acceleration: {f2(self.m)} m/s², "
-                f"Angle: {new_rotation(self.a)})")
-
 
 
 # ---------------------------------------------------------------------------------------
@@ -294,27 +67,11 @@ cdef inline _ModuleVector item(PyObject** items, Py_ssize_t i, type cls, str wha
     return <_ModuleVector>items[i]
 
 
-# Results are stored in two steps: the destination is built or validated first (which may
-# allocate or run Python code), then the kernel runs and store_modules copies its output
-# with nothing in between that could run a finalizer, another thread or a re-entrant call
-# on the shared scratch, and nothing changes if the destination is rejected.
-
-cdef object new_modules(Py_ssize_t n, type cls):
-    """Return a tuple of n new module values (from the freelists), to be filled."""
-    cdef object t = PyTuple_New(n)
-    cdef _ModuleVector o
-    cdef Py_ssize_t i
-    for i in range(n):
-        if cls is SwerveModuleVelocity:
-            o = SwerveModuleVelocity.__new__(SwerveModuleVelocity)
-        elif cls is SwerveModulePosition:
-            o = SwerveModulePosition.__new__(SwerveModulePosition)
-        else:
-            o = SwerveModuleAcceleration.__new__(SwerveModuleAcceleration)
-        Py_INCREF(o)
-        PyTuple_SET_ITEM(t, i, o)
-    return t
-
+# Results are stored in two steps: the destination is built (swervemodule's new_modules)
+# or validated first (which may allocate or run Python code), then the kernel runs and
+# store_modules copies its output with nothing in between that could run a finalizer,
+# another thread or a re-entrant call on the shared scratch, and nothing changes if the
+# destination is rejected.
 
 cdef object out_modules(object out, Py_ssize_t n, type cls, str what, double** data):
     """Validate a caller's ``out``: return the list/tuple of its n ``cls`` objects, or None

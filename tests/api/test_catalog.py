@@ -40,9 +40,9 @@ KINDS = {"value", "kinematics", "odometry", "estimator", "helper", "warning"}
 # are still checked.
 LOG_TOOLS = {"drivekin.datalog", "drivekin.replay", "drivekin.calibrate"}
 # The modules the issue names: discovery must find every one of them.
-EXPECTED_MODULES = {"chassis", "swerve", "geometry", "mecanum", "differential", "deadwheel",
-                    "diffswerve", "odometry", "estimator", "interpolation", "units",
-                    "kinematics", "batch", "wpistruct", "protobuf", "interop"}
+EXPECTED_MODULES = {"chassis", "swervemodule", "swerve", "geometry", "mecanum", "differential",
+                    "deadwheel", "diffswerve", "odometry", "estimator", "interpolation",
+                    "units", "kinematics", "batch", "wpistruct", "protobuf", "interop"}
 # Kinematics entries that do not implement the drivetrain contract, and why.
 NOT_A_DRIVETRAIN = {
     drivekin.DifferentialSwerveModuleKinematics:

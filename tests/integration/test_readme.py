@@ -87,9 +87,13 @@ def test_readme_test_command_is_the_ci_command():
     ci = ROOT / ".ci" / "run"
     if not ci.exists():
         pytest.skip(".ci/run is not next to the tests (installed from an sdist?)")
-    command = 'pip install ".[test]" && python -m pytest'
-    assert f"```sh\n{command}\n```" in README.read_text(encoding="utf-8")
-    assert f"\npython -m {command}\n" in ci.read_text(encoding="utf-8")
+    install, test = 'pip install ".[test]"', "python -m pytest"
+    assert f"```sh\n{install} && {test}\n```" in README.read_text(encoding="utf-8")
+    # CI runs the two halves as two steps of its step table, in this order (under
+    # `set -e`, as `&&` would); reporting options come through PYTEST_ADDOPTS.
+    lines = ci.read_text(encoding="utf-8").splitlines()
+    assert f"python -m {install}" in lines and test in lines
+    assert lines.index(f"python -m {install}") < lines.index(test)
 
 
 # -- examples in docstrings (the API reference of the docs site shows them) ---------------

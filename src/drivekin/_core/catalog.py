@@ -45,8 +45,8 @@ from drivekin.mecanum import (
     MecanumDriveWheelPositions,
     MecanumDriveWheelVelocities,
 )
-from drivekin.swerve import (
-    SwerveDriveKinematics,
+from drivekin.swerve import SwerveDriveKinematics
+from drivekin.swervemodule import (
     SwerveModuleAcceleration,
     SwerveModulePosition,
     SwerveModuleVelocity,
