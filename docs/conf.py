@@ -44,14 +44,12 @@ autoapi_keep_files = True     # docs/api/ (ignored by git): to read what was gen
 autoapi_root = "api"
 autoapi_add_toctree_entry = False
 
-# The guides link to files outside docs/ as GitHub shows them; on the site those are
-# pages (the README is the home page, the changelog a page) or, for files that are not
-# pages, the repository on GitHub.
-REPOSITORY = "https://github.com/drivekin/drivekin/blob/main/"
+# The guides link to the README and the changelog as a checkout shows them; on the site
+# those are pages (the README is the home page). Files that are not pages are named, not
+# linked (tests/integration/test_doc_links.py).
 LINKS = [
     (re.compile(r"\]\(\.\./README\.md"), "](index.md"),
     (re.compile(r"\]\((?:\.\./)?CHANGELOG\.md"), "](changelog.md"),
-    (re.compile(r"\]\(\.\./((?:scripts|benchmarks|tests|src)/[^)]*)\)"), rf"]({REPOSITORY}\1)"),
 ]
 
 
