@@ -42,8 +42,8 @@ for part in "${parts[@]}"; do
     case $part in native|emulated) ;; *) echo "unknown part $part (native, emulated)" >&2; exit 2;; esac
 done
 # What the installed wheels' tests need beyond drivekin (the test extra, for the whole
-# suite; the subsets need fewer).
-SUBSET_DEPS=(pytest hypothesis)
+# suite; the subsets need fewer: mpmath for the reference suite's accuracy checks).
+SUBSET_DEPS=(pytest hypothesis mpmath)
 VERSION=$(ls "$OUT"/drivekin-*.tar.gz | sed 's/.*drivekin-\(.*\)\.tar\.gz/\1/')
 
 
@@ -113,7 +113,7 @@ run_emulated() {
         in_sysroot "$rootfs_aarch64" sh -c "
         uname -m && python3.14 -m venv /venv && . /venv/bin/activate &&
         pip install -q --only-binary :all: --find-links /wheelhouse 'drivekin==$VERSION' \
-            ${SUBSET_DEPS[*]} robotpy-wpimath==2026.2.2 robotpy-wpiutil==2026.2.2 mpmath &&
+            ${SUBSET_DEPS[*]} robotpy-wpimath==2026.2.2 robotpy-wpiutil==2026.2.2 &&
         cd /src && python -m pytest -q -p no:cacheprovider ${EMULATED_TESTS[*]}"
 }
 
