@@ -52,7 +52,7 @@ settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "dev"))
 #: whole suite's (tests/README.md gives both figures and how to measure them again). A kind,
 #: not a list of files: a new class's tests join the selection by the folder they are in,
 #: and the adversarial registry attacks every public callable the catalog lists.
-MEMORY_SAFETY_KINDS = ("safety", "behaviour", "reference")
+MEMORY_SAFETY_KINDS = ("safety", "behaviour", "reference", "api")
 
 
 def pytest_addoption(parser):
