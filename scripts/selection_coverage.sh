@@ -6,7 +6,7 @@
 # coverage.py with Cython's plugin into its own data file, and lets
 # scripts/selection_coverage.py compare the union of every folder with the union of the
 # selection's. Needs coverage>=7.10 besides the build requirements and the test extra;
-# about 25 minutes on 2 cores (tracing makes the suite several times slower, and tests
+# about 15 minutes on 2 cores (tracing makes the suite several times slower, and tests
 # that count allocations or time themselves fail under it: only the lines they reach
 # matter here). Two cuts keep it that short without changing a line reached: the mpmath
 # accuracy checks take a two-hundredth of their points (the trig itself is C, which the
