@@ -76,10 +76,17 @@ in_sysroot() {
         ${IN_SYSROOT_ENV:-} /usr/sbin/chroot "$rootfs" "$@"
 }
 
-# release_sysroot ROOTFS: undo in_sysroot's mounts.
+# release_sysroot ROOTFS: undo in_sysroot's mounts. A process the tests started can still
+# be exiting inside the root filesystem when they end ("target is busy", seen once in a CI
+# dry run): a few tries, then a lazy unmount, which the kernel completes once it is gone.
 release_sysroot() {
-    local rootfs=$1 m
+    local rootfs=$1 m try
     for m in "$rootfs/src" "$rootfs/dev" "$rootfs/proc"; do
-        if mountpoint -q "$m"; then umount "$m"; fi
+        for try in 1 2 3 4 5; do
+            mountpoint -q "$m" || break
+            umount "$m" 2>/dev/null && break
+            sleep 1
+        done
+        if mountpoint -q "$m"; then umount -l "$m"; fi
     done
 }
