@@ -187,15 +187,23 @@ def _decorators(node: ast.FunctionDef | ast.AsyncFunctionDef) -> set[str]:
 DESCRIPTORS = (property, types.GetSetDescriptorType, types.MemberDescriptorType)
 
 
+def _robotpy_spellings(cls: type) -> dict[str, str]:
+    from drivekin._core import pynames
+    return pynames.spellings(cls)
+
+
 def _function_targets(body: list[ast.stmt], owner: object, embeds: bool,
                       where: str) -> list[Target]:
     """Targets of the public functions defined in ``body`` (a class body when ``owner``
     is a class, the module body when it is the module)."""
     groups: dict[str, list[ast.FunctionDef | ast.AsyncFunctionDef]] = {}
     targets = []
+    # robotpy 2027's spellings of properties (scripts/stub_aliases.py) share the Java
+    # name's docstring, which the stub carries once.
+    spellings = _robotpy_spellings(owner) if isinstance(owner, type) else {}
     for node in body:
         if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) or not public(
-                node.name):
+                node.name) or node.name in spellings:
             continue
         if {"setter", "deleter"} & _decorators(node):
             targets.append(Target(node, None, where=f"{where}{node.name} (setter)"))

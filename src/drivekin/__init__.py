@@ -5,6 +5,7 @@ Units are SI throughout (m, m/s, m/s², rad, rad/s, rad/s², s); x forward, y le
 angles counter-clockwise positive.
 """
 from importlib import metadata as _metadata
+from typing import TYPE_CHECKING
 
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.differential import (
@@ -127,3 +128,42 @@ from drivekin._core import renames as _renames
 
 _renames.install(globals())
 del _renames
+
+# robotpy 2027's spellings: snake_case names on every class (the Java ones stay the
+# documented ones) and robotpy's class names (SwerveDrive4Kinematics, ...).
+from drivekin._core import pynames as _pynames
+
+__all__ += _pynames.install(globals())
+del _pynames
+
+if TYPE_CHECKING:
+    # For type checkers, which cannot see the names install() adds: what each one builds
+    # (tests/api/test_robotpy_names.py checks this list against them).
+    from typing import Callable, Optional
+
+    SwerveDrive2Kinematics = SwerveDrive3Kinematics = SwerveDriveKinematics
+    SwerveDrive4Kinematics = SwerveDrive6Kinematics = SwerveDriveKinematics
+    SwerveDrive2Odometry = SwerveDrive3Odometry = SwerveDriveOdometry
+    SwerveDrive4Odometry = SwerveDrive6Odometry = SwerveDriveOdometry
+    SwerveDrive2PoseEstimator = SwerveDrive3PoseEstimator = SwerveDrivePoseEstimator
+    SwerveDrive4PoseEstimator = SwerveDrive6PoseEstimator = SwerveDrivePoseEstimator
+
+    class TimeInterpolatablePose2dBuffer(TimeInterpolatableBuffer[Pose2d]):
+        def __init__(self, history_size: float,
+                     func: Optional[Callable[[Pose2d, Pose2d, float], Pose2d]] = None
+                     ) -> None: ...
+
+    class TimeInterpolatableRotation2dBuffer(TimeInterpolatableBuffer[Rotation2d]):
+        def __init__(self, history_size: float,
+                     func: Optional[Callable[[Rotation2d, Rotation2d, float], Rotation2d]]
+                     = None) -> None: ...
+
+    class TimeInterpolatableTranslation2dBuffer(TimeInterpolatableBuffer[Translation2d]):
+        def __init__(self, history_size: float,
+                     func: Optional[Callable[[Translation2d, Translation2d, float],
+                                             Translation2d]] = None) -> None: ...
+
+    class TimeInterpolatableFloatBuffer(TimeInterpolatableBuffer[float]):
+        def __init__(self, history_size: float,
+                     func: Optional[Callable[[float, float, float], float]] = None
+                     ) -> None: ...

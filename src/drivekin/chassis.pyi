@@ -69,6 +69,13 @@ class _ChassisVector:
     def __rmul__(self, other: float, /) -> Self: ...
     def __truediv__(self, other: float, /) -> Self: ...
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    to_field_relative = toFieldRelative
+    to_field_relative_into = toFieldRelativeInto
+    to_robot_relative = toRobotRelative
+    to_robot_relative_into = toRobotRelativeInto
+    unary_minus = unaryMinus
+
 @final
 class ChassisVelocities(_ChassisVector):
     """ChassisVelocities(vx=0.0, vy=0.0, omega=0.0)
@@ -119,6 +126,11 @@ class ChassisVelocities(_ChassisVector):
 
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    discretize_into = discretizeInto
+    from_feet = fromFeet
+    to_twist2d = toTwist2d
 
 @final
 class ChassisAccelerations(_ChassisVector):

@@ -119,3 +119,16 @@ class DeadWheelKinematics(Drivetrain):
         self, chassisAccelerations: ChassisAccelerations
     ) -> tuple[float, ...]:
         """Return each wheel's surface acceleration (tuple of floats, m/s²)."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    from_road_runner = fromRoadRunner
+    from_road_runner_two_wheel = fromRoadRunnerTwoWheel
+    get_wheel_poses = getWheelPoses
+    requires_gyro = requiresGyro
+    to_chassis_accelerations = toChassisAccelerations
+    to_chassis_velocities = toChassisVelocities
+    to_chassis_velocities_into = toChassisVelocitiesInto
+    to_twist2d = toTwist2d
+    to_wheel_accelerations = toWheelAccelerations
+    to_wheel_velocities = toWheelVelocities
+    to_wheel_velocities_into = toWheelVelocitiesInto

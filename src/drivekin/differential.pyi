@@ -63,6 +63,10 @@ class DifferentialDriveWheelVelocities(_Wheel2):
     ) -> DifferentialDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    desaturate_in_place = desaturateInPlace
+    from_feet = fromFeet
+
 @final
 class DifferentialDriveWheelPositions(_Wheel2):
     """DifferentialDriveWheelPositions(left, right)
@@ -168,3 +172,13 @@ class DifferentialDriveKinematics(Drivetrain):
         self, positions: DifferentialDriveWheelPositions, output: DifferentialDriveWheelPositions
     ) -> None:
         """Copy ``positions`` into ``output``."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    copy_into = copyInto
+    to_chassis_accelerations = toChassisAccelerations
+    to_chassis_velocities = toChassisVelocities
+    to_chassis_velocities_into = toChassisVelocitiesInto
+    to_twist2d = toTwist2d
+    to_wheel_accelerations = toWheelAccelerations
+    to_wheel_velocities = toWheelVelocities
+    to_wheel_velocities_into = toWheelVelocitiesInto

@@ -96,6 +96,16 @@ class DifferentialSwerveModuleVelocities(_WheelValues):
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    @property
+    def azimuth_velocity(self) -> float: ...
+    @azimuth_velocity.setter
+    def azimuth_velocity(self, value: float) -> None: ...
+    @property
+    def wheel_velocity(self) -> float: ...
+    @wheel_velocity.setter
+    def wheel_velocity(self, value: float) -> None: ...
+
 @final
 class DifferentialSwerveModuleKinematics:
     """``DifferentialSwerveModuleKinematics(azimuthGearRatio, wheelGearRatio, wheelRadius, *, motor2Inverted=False)``
@@ -247,3 +257,23 @@ class DifferentialSwerveModuleKinematics:
         disables the scaling (k = 1), as a NaN wheel speed does in WPILib's
         desaturation. Up to rounding (a few ulps), the motors of the scaled targets are
         within the limit."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    @property
+    def azimuth_gear_ratio(self) -> float: ...
+    desaturate_module_velocities_in_place = desaturateModuleVelocitiesInPlace
+    desaturate_motor_velocities = desaturateMotorVelocities
+    desaturate_motor_velocities_in_place = desaturateMotorVelocitiesInPlace
+    @property
+    def motor2_inverted(self) -> bool: ...
+    reset_module_position = resetModulePosition
+    to_module_position = toModulePosition
+    to_module_position_into = toModulePositionInto
+    to_module_velocities = toModuleVelocities
+    to_module_velocities_into = toModuleVelocitiesInto
+    to_motor_velocities = toMotorVelocities
+    to_motor_velocities_into = toMotorVelocitiesInto
+    @property
+    def wheel_gear_ratio(self) -> float: ...
+    @property
+    def wheel_radius(self) -> float: ...

@@ -66,6 +66,10 @@ class MathSharedStore:
         restores ``time.monotonic``. Use it to run estimators on simulated or recorded
         time."""
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    get_timestamp = getTimestamp
+    set_timestamp_source = setTimestampSource
+
 @disjoint_base
 class _PoseEstimator:
     """Everything but the drivetrain: the pose history, the vision records and the four
@@ -115,6 +119,15 @@ class _PoseEstimator:
         """Reset the heading, keeping the position and the latest vision correction of
         the position; the history is cleared."""
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    add_vision_measurement = addVisionMeasurement
+    get_estimated_position = getEstimatedPosition
+    reset_pose = resetPose
+    reset_rotation = resetRotation
+    reset_translation = resetTranslation
+    sample_at = sampleAt
+    set_vision_measurement_std_devs = setVisionMeasurementStdDevs
+
 @final
 class SwerveDrivePoseEstimator(_PoseEstimator):
     """SwerveDrivePoseEstimator(kinematics, gyroAngle, modulePositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
@@ -148,6 +161,10 @@ class SwerveDrivePoseEstimator(_PoseEstimator):
         """Reset the odometry (gyro and module baselines, pose) and forget the history
         and every vision correction."""
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
+    update_with_time = updateWithTime
+
 @final
 class MecanumDrivePoseEstimator(_PoseEstimator):
     """MecanumDrivePoseEstimator(kinematics, gyroAngle, wheelPositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.45, 0.45, 0.45))
@@ -178,6 +195,10 @@ class MecanumDrivePoseEstimator(_PoseEstimator):
         self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions, pose: Pose2d
     ) -> None:
         """Reset the odometry and forget the history and every vision correction."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
+    update_with_time = updateWithTime
 
 @final
 class DifferentialDrivePoseEstimator(_PoseEstimator):
@@ -234,6 +255,10 @@ class DifferentialDrivePoseEstimator(_PoseEstimator):
         rightDistance: Pose2d,
     ) -> None: ...
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
+    update_with_time = updateWithTime
+
 @final
 class TwoDeadWheelPoseEstimator(_PoseEstimator):
     """TwoDeadWheelPoseEstimator(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
@@ -266,6 +291,10 @@ class TwoDeadWheelPoseEstimator(_PoseEstimator):
         self, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d, pose: Pose2d
     ) -> None:
         """Reset the odometry and forget the history and every vision correction."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
+    update_with_time = updateWithTime
 
 @final
 class DeadWheelPoseEstimator(_PoseEstimator):
@@ -303,4 +332,8 @@ class DeadWheelPoseEstimator(_PoseEstimator):
     ) -> None:
         """Reset the odometry (``gyroAngle`` None without a gyro) and forget the history
         and every vision correction."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
+    update_with_time = updateWithTime
 

@@ -130,6 +130,18 @@ class Translation2d:
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float]: ...
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    angle = getAngle
+    distance = getDistance
+    from_feet = fromFeet
+    norm = getNorm
+    rotate_around = rotateAround
+    rotate_by = rotateBy
+    squared_distance = getSquaredDistance
+    squared_norm = getSquaredNorm
+    to_vector = toVector
+    unary_minus = unaryMinus
+
 @final
 class Rotation2d:
     """Rotation2d(value=0.0) or Rotation2d(x, y) or Rotation2d(matrix)
@@ -226,6 +238,21 @@ class Rotation2d:
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    cos = getCos
+    degrees = getDegrees
+    from_degrees = fromDegrees
+    from_radians = fromRadians
+    from_rotations = fromRotations
+    radians = getRadians
+    relative_to = relativeTo
+    rotate_by = rotateBy
+    rotations = getRotations
+    sin = getSin
+    tan = getTan
+    to_matrix = toMatrix
+    unary_minus = unaryMinus
+
 @disjoint_base
 class _Frame2d:
     """Shared accessors of Pose2d and Transform2d (a translation in m and a rotation)."""
@@ -264,6 +291,11 @@ class _Frame2d:
     def __truediv__(self, other: float, /) -> Self: ...
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    rotation = getRotation
+    to_matrix = toMatrix
+    translation = getTranslation
 
 @final
 class Pose2d(_Frame2d):
@@ -327,6 +359,13 @@ class Pose2d(_Frame2d):
     def __add__(self, other: Transform2d, /) -> Pose2d: ...
     def __sub__(self, other: Pose2d, /) -> Transform2d: ...
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    from_feet = fromFeet
+    relative_to = relativeTo
+    rotate_around = rotateAround
+    rotate_by = rotateBy
+    transform_by = transformBy
+
 @final
 class Transform2d(_Frame2d):
     """Transform2d() or Transform2d(translation, rotation) or Transform2d(x, y, rotation)
@@ -366,6 +405,9 @@ class Transform2d(_Frame2d):
         robotpy-wpimath's ``Transform2d.fromFeet`` (1 ft = 0.3048 m, same bits)."""
 
     def __add__(self, other: Transform2d, /) -> Transform2d: ...
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    from_feet = fromFeet
 
 @final
 class Twist2d:
@@ -408,3 +450,6 @@ class Twist2d:
 
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    from_feet = fromFeet

@@ -58,6 +58,24 @@ class _Wheel4(_WheelValues):
     @rearRight.setter
     def rearRight(self, value: float) -> None: ...
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    @property
+    def front_left(self) -> float: ...
+    @front_left.setter
+    def front_left(self, value: float) -> None: ...
+    @property
+    def front_right(self) -> float: ...
+    @front_right.setter
+    def front_right(self, value: float) -> None: ...
+    @property
+    def rear_left(self) -> float: ...
+    @rear_left.setter
+    def rear_left(self, value: float) -> None: ...
+    @property
+    def rear_right(self) -> float: ...
+    @rear_right.setter
+    def rear_right(self, value: float) -> None: ...
+
 @final
 class MecanumDriveWheelVelocities(_Wheel4):
     """MecanumDriveWheelVelocities(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
@@ -83,6 +101,10 @@ class MecanumDriveWheelVelocities(_Wheel4):
         self, endValue: MecanumDriveWheelVelocities, t: float
     ) -> MecanumDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    desaturate_in_place = desaturateInPlace
+    from_feet = fromFeet
 
 @final
 class MecanumDriveWheelPositions(_Wheel4):
@@ -202,3 +224,17 @@ class MecanumDriveKinematics(Drivetrain):
         self, positions: MecanumDriveWheelPositions, output: MecanumDriveWheelPositions
     ) -> None:
         """Copy ``positions`` into ``output``."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    copy_into = copyInto
+    get_front_left = getFrontLeft
+    get_front_right = getFrontRight
+    get_rear_left = getRearLeft
+    get_rear_right = getRearRight
+    to_chassis_accelerations = toChassisAccelerations
+    to_chassis_velocities = toChassisVelocities
+    to_chassis_velocities_into = toChassisVelocitiesInto
+    to_twist2d = toTwist2d
+    to_wheel_accelerations = toWheelAccelerations
+    to_wheel_velocities = toWheelVelocities
+    to_wheel_velocities_into = toWheelVelocitiesInto

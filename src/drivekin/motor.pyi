@@ -197,3 +197,45 @@ class DCMotor:
     def getNeoVortex(numMotors: int = 1) -> DCMotor:
         """Return a gearbox of ``numMotors`` NEO Vortex motors (12 V, 3.60 N·m, 211 A,
         3.6 A, 6784 rpm)."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    andymark9015 = getAndymark9015
+    bag = getBag
+    banebots_rs550 = getBanebotsRs550
+    banebots_rs775 = getBanebotsRs775
+    cim = getCIM
+    current = getCurrent
+    falcon500 = getFalcon500
+    falcon500_foc = getFalcon500Foc
+    @property
+    def free_current(self) -> float: ...
+    @property
+    def free_speed(self) -> float: ...
+    kraken_x44 = getKrakenX44
+    kraken_x44_foc = getKrakenX44Foc
+    kraken_x60 = getKrakenX60
+    kraken_x60_foc = getKrakenX60Foc
+    @property
+    def kt(self) -> float: ...
+    @property
+    def kv(self) -> float: ...
+    mini_cim = getMiniCIM
+    minion = getMinion
+    neo = getNEO
+    neo550 = getNeo550
+    neo_vortex = getNeoVortex
+    @property
+    def nominal_voltage(self) -> float: ...
+    @property
+    def r(self) -> float: ...
+    romi_built_in = getRomiBuiltIn
+    rs775_125 = getAndymarkRs775_125
+    @property
+    def stall_current(self) -> float: ...
+    @property
+    def stall_torque(self) -> float: ...
+    torque = getTorque
+    velocity = getVelocity
+    vex775_pro = getVex775Pro
+    voltage = getVoltage
+    with_reduction = withReduction

@@ -47,6 +47,12 @@ class _Odometry:
         """Set the heading and keep the position. (robotpy-wpimath 2026 has a sign bug
         here that makes the next update report a wrong heading; drivekin does not.)"""
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    get_pose = getPose
+    reset_pose = resetPose
+    reset_rotation = resetRotation
+    reset_translation = resetTranslation
+
 @final
 class SwerveDriveOdometry(_Odometry):
     """SwerveDriveOdometry(kinematics, gyroAngle, modulePositions, initialPose=Pose2d())
@@ -78,6 +84,9 @@ class SwerveDriveOdometry(_Odometry):
         """Integrate the module-distance changes since the last call (at the current module
         angles) and the gyro change; return the new pose."""
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
+
 @final
 class MecanumDriveOdometry(_Odometry):
     """MecanumDriveOdometry(kinematics, gyroAngle, wheelPositions, initialPose=Pose2d())
@@ -100,6 +109,9 @@ class MecanumDriveOdometry(_Odometry):
     def update(self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions) -> Pose2d:
         """Integrate the wheel-distance changes since the last call and the gyro change;
         return the new pose."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
 
 @final
 class DifferentialDriveOdometry(_Odometry):
@@ -124,6 +136,9 @@ class DifferentialDriveOdometry(_Odometry):
     def update(self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float) -> Pose2d:
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
 
 @final
 class TwoDeadWheelOdometry(_Odometry):
@@ -161,6 +176,10 @@ class TwoDeadWheelOdometry(_Odometry):
         velocities ``vx``, ``vy`` (m/s) and the gyro rate ``omega`` (rad/s):
         (vx + omega·xWheelYPos, vy − omega·yWheelXPos, omega)."""
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
+    to_chassis_velocities = toChassisVelocities
+
 @final
 class DeadWheelOdometry(_Odometry):
     """DeadWheelOdometry(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d())
@@ -197,4 +216,7 @@ class DeadWheelOdometry(_Odometry):
     ) -> Pose2d:
         """Integrate the wheel-distance changes (m) since the last call (and the gyro
         change, with a gyro); return the new pose."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    reset_position = resetPosition
 

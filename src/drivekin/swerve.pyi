@@ -271,3 +271,23 @@ class SwerveDriveKinematics(Drivetrain):
         attainableMaxTranslationalSpeed: float,
         attainableMaxRotationalVelocity: float,
     ) -> None: ...
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    copy_into = copyInto
+    desaturate_wheel_velocities = desaturateWheelVelocities
+    desaturate_wheel_velocities_in_place = desaturateWheelVelocitiesInPlace
+    desaturated_discretize = desaturatedDiscretize
+    desaturated_discretize_into = desaturatedDiscretizeInto
+    get_modules = getModules
+    get_num_modules = getNumModules
+    reset_headings = resetHeadings
+    to_chassis_accelerations = toChassisAccelerations
+    to_chassis_velocities = toChassisVelocities
+    to_chassis_velocities_into = toChassisVelocitiesInto
+    to_swerve_module_accelerations = toSwerveModuleAccelerations
+    to_swerve_module_velocities = toSwerveModuleVelocities
+    to_swerve_module_velocities_into = toSwerveModuleVelocitiesInto
+    to_twist2d = toTwist2d
+    to_twist2d_into = toTwist2dInto
+    to_wheel_accelerations = toWheelAccelerations
+    to_wheel_velocities = toWheelVelocities

@@ -44,6 +44,9 @@ class _ModuleVector:
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float | Rotation2d]: ...
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    compare_to = compareTo
+
 @final
 class SwerveModuleVelocity(_ModuleVector):
     """SwerveModuleVelocity(velocity=0.0, angle=Rotation2d())
@@ -80,6 +83,11 @@ class SwerveModuleVelocity(_ModuleVector):
     def interpolate(self, endValue: SwerveModuleVelocity, t: float) -> SwerveModuleVelocity:
         """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
         [0, 1]."""
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    cosine_scale = cosineScale
+    cosine_scale_in_place = cosineScaleInPlace
+    optimize_in_place = optimizeInPlace
 
 @final
 class SwerveModulePosition(_ModuleVector):

@@ -125,6 +125,9 @@ class Entry:
     # One typical valid instance (None: the class has no instances); the test registries
     # (adversarial suite, allocation tests, leak check, benchmarks) and tools use it.
     example: Callable[[], Any] | None = None
+    # The class has robotpy 2027's snake_case names (_core/pynames): every class but
+    # PathPlannerLib's, whose Python port keeps the Java spelling.
+    robotpy_names: bool = True
 
 
 # ---------------------------------------------------------------------------------------
@@ -539,21 +542,23 @@ ENTRIES: tuple[Entry, ...] = (
           example=lambda: DCMotor.getNEO(2)),
     # PathPlannerLib's setpoint generator and what it takes and gives (drivekin.setpoint,
     # the robot description from drivekin.robotconfig)
-    Entry(_dk.ModuleConfig, "value", no_peer=_PATHPLANNER,
+    Entry(_dk.ModuleConfig, "value", robotpy_names=False, no_peer=_PATHPLANNER,
           example=lambda: _robot_config().moduleConfig),
-    Entry(_dk.RobotConfig, "value", no_peer=_PATHPLANNER, example=_robot_config),
-    Entry(_dk.PathConstraints, "value", no_peer=_PATHPLANNER,
+    Entry(_dk.RobotConfig, "value", robotpy_names=False, no_peer=_PATHPLANNER,
+          example=_robot_config),
+    Entry(_dk.PathConstraints, "value", robotpy_names=False, no_peer=_PATHPLANNER,
           example=lambda: _dk.PathConstraints(3.0, 4.0, 5.0, 6.0)),
-    Entry(_dk.DriveFeedforwards, "value", no_peer=_PATHPLANNER,
+    Entry(_dk.DriveFeedforwards, "value", robotpy_names=False, no_peer=_PATHPLANNER,
           example=lambda: _setpoint().feedforwards),
-    Entry(_dk.SwerveSetpoint, "value", no_peer=_PATHPLANNER, example=_setpoint),
-    Entry(_dk.SwerveSetpointGenerator, "helper",
+    Entry(_dk.SwerveSetpoint, "value", robotpy_names=False, no_peer=_PATHPLANNER,
+          example=_setpoint),
+    Entry(_dk.SwerveSetpointGenerator, "helper", robotpy_names=False,
           example=lambda: _dk.SwerveSetpointGenerator(_robot_config(), 10.0)),
     # Helpers (Units has static methods only and refuses instances: no example)
     Entry(_dk.MathSharedStore, "helper", example=_dk.MathSharedStore),
     Entry(_dk.TimeInterpolatableBuffer, "helper", example=_double_buffer),
     Entry(_dk.Units, "helper"),
-    Entry(_dk.ClockMismatchWarning, "warning",
+    Entry(_dk.ClockMismatchWarning, "warning", robotpy_names=False,
           example=lambda: _dk.ClockMismatchWarning("vision timestamp off the clock")),
 )
 

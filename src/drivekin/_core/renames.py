@@ -3,7 +3,9 @@ for all of them. Using one raises an AttributeError that names the WPILib 2027
 replacement, from an instance or from the class (``ChassisVelocities.
 fromFieldRelativeSpeeds``). None is an alias: several 2026 names mean something else in
 2027 (2026's ``optimize`` mutates, 2027's returns a new object), so working on would hide
-the change. The names live in the type dictionaries as descriptors that raise, so the
+the change. The 2026 names robotpy 2027 spells alike (``Rotation2d.degrees``,
+``DCMotor.current``, ...) are not here: they are robotpy 2027 names (_core/pynames), with
+2027's meaning. The names live in the type dictionaries as descriptors that raise, so the
 classes' own attribute lookups cost nothing more.
 """
 from __future__ import annotations
@@ -30,26 +32,24 @@ RENAMES: dict[str, dict[str, str]] = {
                                     "toChassisSpeeds": "toChassisVelocities",
                                     "trackWidth": "trackwidth"},
     "SwerveModuleVelocity": {"speed": "velocity"},
-    "Rotation2d": {"radians": "getRadians()", "degrees": "getDegrees()",
-                   "cos": "getCos()", "sin": "getSin()", "tan": "getTan()"},
-    "Translation2d": {"norm": "getNorm()", "angle": "getAngle()",
-                      "distance": "getDistance(other)", "X": "getX() or .x",
-                      "Y": "getY() or .y"},
-    "Pose2d": {"rotation": "getRotation()", "translation": "getTranslation()",
-               "X": "getX() or .x", "Y": "getY() or .y"},
-    "Transform2d": {"rotation": "getRotation()", "translation": "getTranslation()",
-                    "X": "getX() or .x", "Y": "getY() or .y"},
+    "Translation2d": {"X": "getX() or .x", "Y": "getY() or .y"},
+    "Pose2d": {"X": "getX() or .x", "Y": "getY() or .y"},
+    "Transform2d": {"X": "getX() or .x", "Y": "getY() or .y"},
     "DCMotor": {
-        "current": "getCurrent", "torque": "getTorque", "voltage": "getVoltage",
-        "speed": "getVelocity", "CIM": "getCIM", "miniCIM": "getMiniCIM", "bag": "getBag",
-        "vex775Pro": "getVex775Pro", "RS775_125": "getAndymarkRs775_125",
-        "banebotsRS775": "getBanebotsRs775", "andymark9015": "getAndymark9015",
-        "banebotsRS550": "getBanebotsRs550", "NEO": "getNEO", "NEO550": "getNeo550",
-        "falcon500": "getFalcon500", "falcon500FOC": "getFalcon500Foc",
-        "romiBuiltIn": "getRomiBuiltIn", "krakenX60": "getKrakenX60",
-        "krakenX60FOC": "getKrakenX60Foc", "krakenX44": "getKrakenX44",
-        "krakenX44FOC": "getKrakenX44Foc", "minion": "getMinion",
-        "neoVortex": "getNeoVortex",
+        "speed": "getVelocity (robotpy 2027: velocity)", "CIM": "getCIM (robotpy 2027: cim)",
+        "miniCIM": "getMiniCIM (robotpy 2027: mini_cim)",
+        "vex775Pro": "getVex775Pro (robotpy 2027: vex775_pro)",
+        "RS775_125": "getAndymarkRs775_125 (robotpy 2027: rs775_125)",
+        "banebotsRS775": "getBanebotsRs775 (robotpy 2027: banebots_rs775)",
+        "banebotsRS550": "getBanebotsRs550 (robotpy 2027: banebots_rs550)",
+        "NEO": "getNEO (robotpy 2027: neo)", "NEO550": "getNeo550 (robotpy 2027: neo550)",
+        "falcon500FOC": "getFalcon500Foc (robotpy 2027: falcon500_foc)",
+        "romiBuiltIn": "getRomiBuiltIn (robotpy 2027: romi_built_in)",
+        "krakenX60": "getKrakenX60 (robotpy 2027: kraken_x60)",
+        "krakenX60FOC": "getKrakenX60Foc (robotpy 2027: kraken_x60_foc)",
+        "krakenX44": "getKrakenX44 (robotpy 2027: kraken_x44)",
+        "krakenX44FOC": "getKrakenX44Foc (robotpy 2027: kraken_x44_foc)",
+        "neoVortex": "getNeoVortex (robotpy 2027: neo_vortex)",
     },
 }
 

@@ -41,6 +41,9 @@ class _WheelValues:
     def __truediv__(self, other: float, /) -> Self: ...
     def __iter__(self) -> Iterator[float]: ...
 
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    unary_minus = unaryMinus
+
 def set_type_attr(cls: type, name: str, value: object) -> None:
     """Put ``value`` into the dictionary of the extension type ``cls`` under ``name`` (what
     Python code cannot assign on a static type): the 2026 names of _core.renames."""

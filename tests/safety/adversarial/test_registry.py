@@ -14,7 +14,7 @@ import drivekin.wpistruct as wpistruct
 import pytest
 
 from drivekin._core.renames import Renamed
-from drivekin._core import catalog
+from drivekin._core import catalog, pynames
 
 from tests.safety.adversarial import registry as reg
 from tests.safety.adversarial import support
@@ -24,8 +24,10 @@ from tests.safety.adversarial import support
 ATTACKED = [e for e in catalog.ENTRIES if e.kind != "warning"]
 
 def _public_members(cls):
-    # robotpy-wpimath 2026 names only raise (drivekin._core.renames): not members.
-    names = {n for n in dir(cls) if not n.startswith("_")
+    # robotpy-wpimath 2026 names only raise (drivekin._core.renames), and robotpy 2027's
+    # spellings are the Java members themselves (drivekin._core.pynames): not members.
+    aliases = pynames.spellings(cls)
+    names = {n for n in dir(cls) if not n.startswith("_") and n not in aliases
              and not isinstance(inspect.getattr_static(cls, n), Renamed)}
     # Protocol dunders count when drivekin defines them (on the class or a private base).
     names |= {n for n in reg.DUNDERS
