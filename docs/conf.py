@@ -8,9 +8,16 @@ sphinx-autoapi reading the ``.pyi`` stubs (before the ``.py`` files), so the com
 modules' signatures, with their types, come from the stubs, and their docstrings are the
 compiled modules' own (scripts/stub_docstrings.py copies them; a test keeps them equal).
 Nothing is imported, so the site builds without compiling drivekin.
+
+Each member is documented once, under its Java name; robotpy 2027's spelling of it (the
+alias block at the end of each stub class, written by scripts/stub_aliases.py) is a line
+at the top of that entry, and the alias itself is not listed. robotpy's class names
+(``SwerveDrive4Kinematics``, ...; the ``TYPE_CHECKING`` block of ``drivekin/__init__.py``)
+are named in the entry of the class they build.
 """
 from __future__ import annotations
 
+import ast
 import re
 import tomllib
 from pathlib import Path
@@ -58,6 +65,112 @@ def _site_links(app, docname, source, *included):
         source[0] = pattern.sub(replacement, source[0])
 
 
+# -- robotpy 2027's spellings ------------------------------------------------------------
+# Read from the stubs' text, as autoapi reads them: importing drivekin would need the
+# compiled modules.
+SRC = ROOT / "src"
+STUB_MARKER = "# robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)"
+
+
+def _words(name):
+    return name.replace("_", "").lower()
+
+
+def _java_of_property(alias, java_names, where):
+    """The Java member a property alias (``def stall_torque``) stands for: the stub
+    writes no reference to it, so match the spelling (stallTorque, R, getX)."""
+    found = [j for j in java_names if _words(j) == _words(alias)] or \
+        [j for j in java_names if j.startswith("get") and _words(j[3:]) == _words(alias)]
+    if len(found) != 1:
+        raise ValueError(f"{where}: robotpy property {alias!r} matches Java {found}")
+    return found[0]
+
+
+def _stub_spellings():
+    """{full name of the stub class that defines the Java members: {Java name: robotpy
+    2027 name}}, from each class's block after STUB_MARKER."""
+    out = {}
+    for path in sorted((SRC / "drivekin").rglob("*.pyi")):
+        text = path.read_text(encoding="utf-8")
+        lines = text.splitlines()
+        module = ".".join(path.relative_to(SRC).with_suffix("").parts)
+        for node in ast.parse(text).body:
+            if not isinstance(node, ast.ClassDef):
+                continue
+            marker = next((i + 1 for i in range(node.lineno, node.end_lineno)
+                           if lines[i].strip() == STUB_MARKER), None)
+            if marker is None:
+                continue
+            java_names = {m.name for m in node.body
+                          if isinstance(m, ast.FunctionDef) and m.lineno < marker}
+            spelled = {}
+            for item in node.body:
+                if item.lineno < marker:
+                    continue
+                if isinstance(item, ast.Assign):          # radians = getRadians
+                    spelled[item.value.id] = item.targets[0].id
+                elif "property" in {ast.unparse(d) for d in item.decorator_list}:
+                    spelled[_java_of_property(item.name, java_names,
+                                              f"{module}.{node.name}")] = item.name
+            out[f"{module}.{node.name}"] = spelled
+    return out
+
+
+def _robotpy_class_names():
+    """{drivekin class name: the sentence naming robotpy 2027's class names that build
+    it}, from the declarations for type checkers in drivekin/__init__.py."""
+    tree = ast.parse((SRC / "drivekin" / "__init__.py").read_text(encoding="utf-8"))
+    block = next(n for n in tree.body if isinstance(n, ast.If)
+                 and ast.unparse(n.test) == "TYPE_CHECKING")
+    names, calls = {}, {}
+    for item in block.body:
+        if isinstance(item, ast.Assign):                  # SwerveDrive4Kinematics = ...
+            names.setdefault(item.value.id, []).extend(t.id for t in item.targets)
+        elif isinstance(item, ast.ClassDef):              # TimeInterpolatablePose2dBuffer
+            base = ast.unparse(item.bases[0].value)
+            names.setdefault(base, []).append(item.name)
+            init = next(f for f in item.body if isinstance(f, ast.FunctionDef)).args
+            params = [a.arg for a in init.args[1:]]
+            defaults = [None] * (len(params) - len(init.defaults)) + init.defaults
+            calls[base] = ", ".join(p if d is None else f"{p}={ast.unparse(d)}"
+                                    for p, d in zip(params, defaults))
+    return {cls: "robotpy 2027's names for this class: "
+            + ", ".join(f"``{n}``" for n in found)
+            + (f", each called as ``({calls[cls]})``." if cls in calls else ".")
+            for cls, found in names.items()}
+
+
+SPELLINGS = _stub_spellings()
+CLASS_NAMES = _robotpy_class_names()
+
+
+def _robotpy_spellings(app, what, name, obj, skip, options):
+    """autoapi-skip-member: hide the robotpy aliases; name them in their Java member's
+    entry (a line above its text) and robotpy's class names in the class's entry (after
+    its first paragraph, which stays the summary in the module's table). The one
+    autoapi event that sees every documented object, inherited members included, before
+    it is written out; ``docstring`` is the text autoapi's templates render."""
+    owner, _, member = name.rpartition(".")
+    if what == "class":
+        line = CLASS_NAMES.get(member)
+        if line and line not in obj.docstring:
+            first, sep, rest = obj.docstring.partition("\n\n")
+            obj.docstring = f"{first}\n\n{line}{sep}{rest}"
+        return None
+    # An inherited member is documented from the class that defines it (_Frame2d).
+    owner = obj.obj.get("inherited_from", {}).get("full_name", owner)
+    spelled = SPELLINGS.get(owner, {})
+    if member in spelled.values():
+        return True
+    py = spelled.get(member)
+    if py is not None:
+        line = f"robotpy 2027: ``{py}{'' if what == 'property' else '()'}``"
+        if not obj.docstring.startswith(line):
+            obj.docstring = f"{line}\n\n{obj.docstring}"
+    return None
+
+
 def setup(app):
+    app.connect("autoapi-skip-member", _robotpy_spellings)
     app.connect("source-read", _site_links)
     app.connect("include-read", lambda app, path, parent, content: _site_links(app, parent, content))
