@@ -90,7 +90,10 @@ def _stub_spellings():
     """{full name of the stub class that defines the Java members: {Java name: robotpy
     2027 name}}, from each class's block after STUB_MARKER."""
     out = {}
-    for path in sorted((SRC / "drivekin").rglob("*.pyi")):
+    pkg = SRC / "drivekin"
+    # A class written in Python has its block in its source, under ``if TYPE_CHECKING:``.
+    sources = sorted(p for p in pkg.glob("*.py") if not p.with_suffix(".pyi").exists())
+    for path in sorted(pkg.rglob("*.pyi")) + sources:
         text = path.read_text(encoding="utf-8")
         lines = text.splitlines()
         module = ".".join(path.relative_to(SRC).with_suffix("").parts)
@@ -104,9 +107,8 @@ def _stub_spellings():
             java_names = {m.name for m in node.body
                           if isinstance(m, ast.FunctionDef) and m.lineno < marker}
             spelled = {}
-            for item in node.body:
-                if item.lineno < marker:
-                    continue
+            block = [i for i in node.body if i.lineno >= marker]
+            for item in [x for i in block for x in (i.body if isinstance(i, ast.If) else [i])]:
                 if isinstance(item, ast.Assign):          # radians = getRadians
                     spelled[item.value.id] = item.targets[0].id
                 elif "property" in {ast.unparse(d) for d in item.decorator_list}:

@@ -3,7 +3,8 @@
 
 drivekin/_core/pynames.py gives every catalog class its robotpy 2027 names at import, as
 the Java members themselves. For type checkers, each stub class that defines a Java member
-gets, at the end of its body, one line per robotpy name: ``radians = getRadians`` for a
+(or, for a class written in Python, its source under ``if TYPE_CHECKING:``) gets, at
+the end of its body, one line per robotpy name: ``radians = getRadians`` for a
 method or static method (so the alias carries the Java member's signature and
 overloads), and a ``@property`` with the getter's type for a property. The block starts
 with a marker comment; a second run changes nothing.
@@ -27,7 +28,11 @@ MARKER = "    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_a
 
 
 def _stubs() -> list[Path]:
-    return sorted((SRC / "drivekin").rglob("*.pyi"))
+    """The stubs, and the Python modules without one (their classes are read by type
+    checkers from the source: the block goes under ``if TYPE_CHECKING:`` there)."""
+    pkg = SRC / "drivekin"
+    stubs = sorted(pkg.rglob("*.pyi"))
+    return stubs + sorted(p for p in pkg.glob("*.py") if not p.with_suffix(".pyi").exists())
 
 
 def _module(path: Path) -> str:
@@ -46,19 +51,25 @@ def _wanted(module: str, cls_name: str, body: dict[str, ast.FunctionDef | None]
     return dict(wanted)
 
 
-def _block(wanted: dict[str, str], body: dict[str, ast.FunctionDef | None]) -> list[str]:
+def _block(wanted: dict[str, str], body: dict[str, ast.FunctionDef | None],
+           source: bool) -> list[str]:
     lines = ["", MARKER]
+    pad = "    "
+    if source:                                   # a .py module: for type checkers only
+        lines.append("    if TYPE_CHECKING:")
+        pad = "        "
     for py, java in sorted(wanted.items()):
         getter = body[java]
         if getter is None:                       # a method, static method or overload set
-            lines.append(f"    {py} = {java}")
+            lines.append(f"{pad}{py} = {java}")
             continue
         returns = ast.unparse(getter.returns) if getter.returns else "Any"
-        lines += ["    @property", f"    def {py}(self) -> {returns}: ..."]
+        lines += [f"{pad}@property", f"{pad}def {py}(self) -> {returns}: ..."]
         setter = body.get(f"{java}.setter")
         if setter is not None:
             value = ast.unparse(setter.args.args[1].annotation or ast.Name("Any"))
-            lines += [f"    @{py}.setter", f"    def {py}(self, value: {value}) -> None: ..."]
+            lines += [f"{pad}@{py}.setter",
+                      f"{pad}def {py}(self, value: {value}) -> None: ..."]
     return lines
 
 
@@ -94,7 +105,7 @@ def rewrite(path: Path) -> str:
         members = _members(node)
         wanted = _wanted(module, node.name, members)
         if wanted:
-            lines[end:end] = _block(wanted, members)
+            lines[end:end] = _block(wanted, members, path.suffix == ".py")
     return "\n".join(lines) + "\n"
 
 

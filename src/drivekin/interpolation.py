@@ -10,7 +10,7 @@ from __future__ import annotations
 import bisect
 import math
 import threading
-from typing import Any, Callable, Generic, List, Optional, Tuple, TypeVar
+from typing import TYPE_CHECKING, Any, Callable, Generic, List, Optional, Tuple, TypeVar
 
 from drivekin._core.errors import type_name
 
@@ -167,6 +167,14 @@ class TimeInterpolatableBuffer(Generic[T]):
         # Copies and pickles get their own history (the lock is not state).
         self._check()
         return (_rebuild, (self._f, self._history, self._entries))
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    if TYPE_CHECKING:
+        add_sample = addSample
+        create_buffer = createBuffer
+        create_double_buffer = createDoubleBuffer
+        get_internal_buffer = getInternalBuffer
+        sample = getSample
 
 
 def _rebuild(f: Callable[[Any, Any, float], Any], history: float,

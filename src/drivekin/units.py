@@ -10,7 +10,7 @@ can differ from Java's in the last bit.
 """
 from __future__ import annotations
 
-from typing import final
+from typing import TYPE_CHECKING, final
 
 from drivekin._core.errors import type_name
 
@@ -154,3 +154,24 @@ class Units:
     def lbsToKilograms(lbs: float) -> float:
         """Convert pounds (pound-mass) to kilograms: ``lbs * 0.453592``."""
         return _real(lbs, "lbsToKilograms") * _KILOGRAMS_PER_LB
+
+    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
+    if TYPE_CHECKING:
+        degrees_to_radians = degreesToRadians
+        degrees_to_rotations = degreesToRotations
+        feet_to_meters = feetToMeters
+        inches_to_meters = inchesToMeters
+        kilograms_to_lbs = kilogramsToLbs
+        lbs_to_kilograms = lbsToKilograms
+        meters_per_second_to_miles_per_hour = metersPerSecondToMilesPerHour
+        meters_to_feet = metersToFeet
+        meters_to_inches = metersToInches
+        miles_per_hour_to_meters_per_second = milesPerHourToMetersPerSecond
+        milliseconds_to_seconds = millisecondsToSeconds
+        radians_per_second_to_rotations_per_minute = radiansPerSecondToRotationsPerMinute
+        radians_to_degrees = radiansToDegrees
+        radians_to_rotations = radiansToRotations
+        rotations_per_minute_to_radians_per_second = rotationsPerMinuteToRadiansPerSecond
+        rotations_to_degrees = rotationsToDegrees
+        rotations_to_radians = rotationsToRadians
+        seconds_to_milliseconds = secondsToMilliseconds

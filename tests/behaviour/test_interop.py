@@ -40,6 +40,7 @@ from drivekin import (
     Twist2d,
 )
 from drivekin import interop
+from drivekin._core.pynames import RobotpyClass
 from drivekin.interop import fromWpimath, toWpimath
 
 PI = math.pi
@@ -277,7 +278,9 @@ def test_every_shared_type_has_a_pair(wp):
     # the ones left out are exactly the 2027 additions robotpy 2026 lacks.
     covered = set(PAIRS) | {"SwerveDriveKinematics"}
     # Odometry shares names too, but is stateful and deliberately not converted.
+    # robotpy's class names drivekin builds (SwerveDrive4Kinematics) are no class of their own.
     shared = {n for n in drivekin.__all__ if not n.endswith("Odometry")
+              and not isinstance(getattr(drivekin, n), RobotpyClass)
               and (hasattr(wp.g, n) or hasattr(wp.k, n) or n in PAIRS)}
     assert shared == covered
     for dk_name, wp_name in PAIRS.items():

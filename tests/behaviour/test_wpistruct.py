@@ -30,6 +30,7 @@ from hypothesis import strategies as st
 
 import drivekin
 from drivekin import wpistruct
+from drivekin._core.pynames import RobotpyClass
 from drivekin.differential import (
     DifferentialDriveKinematics,
     DifferentialDriveWheelAccelerations,
@@ -222,6 +223,7 @@ def test_struct_types_cover_every_value_and_kinematics_class():
     # struct) and the classes above.
     public = [getattr(drivekin, n) for n in drivekin.__all__]
     expected = {c for c in public if isinstance(c, type)
+                and not isinstance(c, RobotpyClass)   # SwerveDrive4Kinematics: builds one
                 and "Odometry" not in c.__name__ and "PoseEstimator" not in c.__name__
                 and c.__name__ not in NO_UPSTREAM_STRUCT | NOT_VALUES | NOT_YET_SERIALIZED}
     assert set(wpistruct.STRUCT_TYPES) == expected

@@ -68,8 +68,9 @@ def _robotpy_conversion(obj: object) -> tuple[str, type] | None:
     for klass in mro:
         if klass in peers:
             return "fromWpimath", peers[klass]
-        if flat.get(klass) is not None:
-            return "fromWpimath3d", flat[klass]
+        flattened = flat.get(klass)
+        if flattened is not None:
+            return "fromWpimath3d", flattened
     return None
 
 
