@@ -10,6 +10,8 @@ documentation: snake_case methods and keywords, SwerveDrive4Kinematics, properti
 tests/integration/test_robotpy2027_loop.py runs it against the same loop in WPILib's Java
 names and against robotpy-wpimath 2026.
 """
+from __future__ import annotations
+
 import math
 
 from drivekin import (ChassisVelocities, DifferentialDriveKinematics,
@@ -20,7 +22,7 @@ DT = 0.02
 MAX_WHEEL_VELOCITY = 4.5       # m/s
 
 
-def swerve(steps):
+def swerve(steps: int) -> tuple[Pose2d, Pose2d]:
     kinematics = SwerveDrive4Kinematics(
         Translation2d(0.3, 0.3), Translation2d(0.3, -0.3),
         Translation2d(-0.3, 0.3), Translation2d(-0.3, -0.3))
@@ -35,10 +37,10 @@ def swerve(steps):
         t = i * DT
         field = ChassisVelocities(3.0 * math.cos(t), 2.0 * math.sin(0.5 * t), 2.5)
         robot = field.to_robot_relative(heading).discretize(DT)
-        states = kinematics.to_swerve_module_velocities(robot)
-        states = SwerveDrive4Kinematics.desaturate_wheel_velocities(states,
-                                                                    MAX_WHEEL_VELOCITY)
-        states = [s.optimize(p.angle) for s, p in zip(states, positions)]
+        wanted = kinematics.to_swerve_module_velocities(robot)
+        limited = SwerveDrive4Kinematics.desaturate_wheel_velocities(wanted,
+                                                                     MAX_WHEEL_VELOCITY)
+        states = [s.optimize(p.angle) for s, p in zip(limited, positions)]
         positions = [SwerveModulePosition(p.distance + s.velocity * DT, s.angle)
                      for s, p in zip(states, positions)]
         achieved = kinematics.to_chassis_velocities(states)
@@ -52,7 +54,7 @@ def swerve(steps):
     return odometry.get_pose(), estimator.get_estimated_position()
 
 
-def tank(steps):
+def tank(steps: int) -> tuple[Pose2d, tuple[float, float]]:
     kinematics = DifferentialDriveKinematics(0.6)
     estimator = DifferentialDrivePoseEstimator(Rotation2d(), 0.0, 0.0, Pose2d())
     left = right = 0.0

@@ -178,3 +178,21 @@ def test_type_checkers_see_every_class_name():
     built = {n for n in drivekin.__all__
              if isinstance(getattr(drivekin, n), pynames.RobotpyClass)}
     assert spelled == built
+
+
+def test_a_robotpy_2027_robot_type_checks(tmp_path):
+    # The stubs carry both spellings with types: mypy --strict accepts a robot written
+    # with robotpy 2027's names (tests/_support/robotpy2027_robot.py).
+    pytest.importorskip("mypy")
+    import os
+    import subprocess
+    import sys
+    root = Path(__file__).parents[2]
+    if not (root / "src" / "drivekin" / "__init__.py").exists():
+        pytest.skip("the stubs are not next to the tests (a wheel's test run)")
+    env = dict(os.environ, MYPYPATH=str(root / "src"))
+    done = subprocess.run(
+        [sys.executable, "-m", "mypy", "--strict", "--cache-dir", str(tmp_path),
+         "--no-error-summary", str(root / "tests" / "_support" / "robotpy2027_robot.py")],
+        capture_output=True, text=True, env=env, cwd=root)
+    assert done.returncode == 0, done.stdout + done.stderr
