@@ -127,3 +127,9 @@ from drivekin._core import renames as _renames
 
 _renames.install(globals())
 del _renames
+
+# robotpy 2027's names without a Java counterpart (from_feet, x_feet, vx_fps, from_matrix...).
+from drivekin._core import robotpyextras as _robotpyextras
+
+_robotpyextras.install_extras(globals())
+del _robotpyextras
