@@ -602,6 +602,37 @@ API = {
     MecanumDriveOdometry: _odometry(MecanumDriveKinematics, (Obj(MWP),)),
     DifferentialDriveOdometry: _odometry(None, (NUM, NUM)),
 }
+# robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras): unit
+# variants in feet and degrees, every one assignable but the positions' (x_feet, y_feet).
+_HOMOGENEOUS = Arr((3, 3), fill=[[0.0, -1.0, 1.0], [1.0, 0.0, 2.0], [0.0, 0.0, 1.0]])
+_FRAME_FT = {"from_matrix": S(_HOMOGENEOUS), "x_feet": Prop(), "y_feet": Prop(),
+             "from_feet": [S(NUM, NUM, Obj(R, float_ok=True)), S(NUM, NUM, NUM)]}
+for _cls, _extras in {
+    T: {"from_feet": [S(NUM, NUM), S(NUM, Obj(R, float_ok=True))], "x_feet": Prop(),
+        "y_feet": Prop(), "distance_feet": S(Obj(T)), "norm_feet": S()},
+    R: {"from_matrix": S(Arr((2, 2), fill=[[0.0, -1.0], [1.0, 0.0]]))},
+    Pose2d: _FRAME_FT,
+    Transform2d: _FRAME_FT,
+    Twist2d: {"from_feet": [S(), S(NUM, NUM, NUM)], "dx_feet": Prop(NUM),
+              "dy_feet": Prop(NUM), "dtheta_degrees": Prop(NUM)},
+    CV: {"from_feet": [S(), S(NUM, NUM, NUM)], "vx_fps": Prop(NUM), "vy_fps": Prop(NUM),
+         "omega_dps": Prop(NUM)},
+    CA: {"from_fps": [S(), S(NUM, NUM, NUM)], "ax_fpss": Prop(NUM), "ay_fpss": Prop(NUM),
+         "alpha_dpss": Prop(NUM)},
+    SMV: {"velocity_fps": Prop(NUM)},
+    SMP: {"distance_ft": Prop(NUM)},
+    SMA: {"from_fps": [S(), S(NUM, Obj(R, none_ok=True, float_ok=True))],
+          "acceleration_fpss": Prop(NUM)},
+    MWV: {"from_feet": S(NUM, NUM, NUM, NUM),
+          **{f"{w}_fps": Prop(NUM) for w in ("front_left", "front_right", "rear_left",
+                                              "rear_right")}},
+    MWA: {"from_fps": [S(), S(NUM, NUM, NUM, NUM)],
+          **{f"{w}_fpss": Prop(NUM) for w in ("front_left", "front_right", "rear_left",
+                                               "rear_right")}},
+    DWV: {"from_feet": S(NUM, NUM), "left_fps": Prop(NUM), "right_fps": Prop(NUM)},
+    DWA: {"from_fps": S(NUM, NUM), "left_fpss": Prop(NUM), "right_fpss": Prop(NUM)},
+}.items():
+    API[_cls].update(_extras)
 # Differential swerve. The limit stays valid (>= 0) in the alternate build: 0.125 -> 0.0625.
 _LIMIT = Num(0.125)
 _PROP = {"proportional": lambda: True}
