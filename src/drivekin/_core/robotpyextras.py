@@ -95,13 +95,21 @@ def _signed(cls: str, name: str, signature: str, func: Callable[..., Any]) -> Ca
     return func
 
 
+def _parameters(func: Callable[..., Any]) -> str:
+    """``func``'s parameters as robotpy's signature line shows them: names and defaults."""
+    sig = inspect.signature(func)
+    return str(sig.replace(parameters=[p.replace(annotation=p.empty)
+                                       for p in sig.parameters.values()],
+                           return_annotation=sig.empty))
+
+
 def _static(cls: str, name: str, func: Callable[..., Any], signature: str | None = None
-            ) -> staticmethod:
-    return staticmethod(_signed(cls, name, signature or str(inspect.signature(func)), func))
+            ) -> staticmethod[..., Any]:
+    return staticmethod(_signed(cls, name, signature or _parameters(func), func))
 
 
 def _method(cls: str, name: str, func: Callable[..., Any]) -> Callable[..., Any]:
-    return _signed(cls, name, str(inspect.signature(func)), func)
+    return _signed(cls, name, _parameters(func), func)
 
 
 def _unit_property(cls: str, name: str, field: str, unit: tuple[float, float],
