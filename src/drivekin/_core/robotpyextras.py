@@ -187,13 +187,20 @@ def _bind(where: str, forms: tuple[inspect.Signature, ...], args: tuple[Any, ...
                     f"{len(args)} positional argument(s) and keyword(s) {sorted(kwargs)}")
 
 
+def _feet(where: str, unit: str, values: Mapping[str, object]) -> list[float]:
+    """``values`` (robotpy's argument names -> values in ``unit``: ft, ft/s or ft/s²), in
+    order, in the SI unit. A factory passes its ``locals()`` before binding anything else:
+    its parameters."""
+    return [_si(v, _FOOT, where, f"{name} in {unit}") for name, v in values.items()]
+
+
 def _translation_from_feet(*args: Any, **kwargs: Any) -> Translation2d:
     """Return the translation (``x``, ``y``) given in ft, or the one of length
     ``distance`` ft in the direction ``angle`` (a Rotation2d), in m (1 ft = 0.3048 m)."""
     where = "Translation2d.from_feet()"
     form, (a, b) = _bind(where, _TRANSLATION_FORMS, args, kwargs)
     if form == 0 and not (isinstance(b, Rotation2d) and "y" not in kwargs):
-        return Translation2d(_si(a, _FOOT, where, "x in ft"), _si(b, _FOOT, where, "y in ft"))
+        return Translation2d(*_feet(where, "ft", {"x": a, "y": b}))
     if not isinstance(b, Rotation2d):
         raise wrong_type(b, Rotation2d, "angle")
     return Translation2d(_si(a, _FOOT, where, "distance in ft"), b)
@@ -204,22 +211,20 @@ def _pose_from_feet(*args: Any, **kwargs: Any) -> Pose2d:
     ``angle`` (a Rotation2d, or rad as a float)."""
     where = "Pose2d.from_feet()"
     _, (x, y, angle) = _bind(where, _POSE_FORMS, args, kwargs)
-    return Pose2d(_si(x, _FOOT, where, "x in ft"), _si(y, _FOOT, where, "y in ft"),
-                  _angle(angle, where))
+    return Pose2d(*_feet(where, "ft", {"x": x, "y": y}), _angle(angle, where))
 
 
 def _transform_from_feet(x: float, y: float, angle: Rotation2d | float) -> Transform2d:
     """Return the transform with translation (``x``, ``y``) given in ft, in m, and
     rotation ``angle`` (a Rotation2d, or rad as a float)."""
     where = "Transform2d.from_feet()"
-    return Transform2d(_si(x, _FOOT, where, "x in ft"), _si(y, _FOOT, where, "y in ft"),
-                       _angle(angle, where))
+    return Transform2d(*_feet(where, "ft", {"x": x, "y": y}), _angle(angle, where))
 
 
 def _twist_from_feet(dx: float = 0.0, dy: float = 0.0, dtheta: float = 0.0) -> Twist2d:
     """Return the twist with ``dx``, ``dy`` given in ft (in m) and ``dtheta`` in rad."""
     where = "Twist2d.from_feet()"
-    return Twist2d(_si(dx, _FOOT, where, "dx in ft"), _si(dy, _FOOT, where, "dy in ft"),
+    return Twist2d(*_feet(where, "ft", {"dx": dx, "dy": dy}),
                    _real(dtheta, where, "dtheta in rad"))
 
 
@@ -228,8 +233,7 @@ def _chassis_velocities_from_feet(vx: float = 0.0, vy: float = 0.0, omega: float
     """Return the velocity ``vx`` forward and ``vy`` left given in ft/s (in m/s) and
     ``omega`` in rad/s."""
     where = "ChassisVelocities.from_feet()"
-    return ChassisVelocities(_si(vx, _FOOT, where, "vx in ft/s"),
-                             _si(vy, _FOOT, where, "vy in ft/s"),
+    return ChassisVelocities(*_feet(where, "ft/s", {"vx": vx, "vy": vy}),
                              _real(omega, where, "omega in rad/s"))
 
 
@@ -238,8 +242,7 @@ def _chassis_accelerations_from_fps(ax: float = 0.0, ay: float = 0.0, alpha: flo
     """Return the acceleration ``ax`` forward and ``ay`` left given in ft/s² (in m/s²)
     and ``alpha`` in rad/s²."""
     where = "ChassisAccelerations.from_fps()"
-    return ChassisAccelerations(_si(ax, _FOOT, where, "ax in ft/s²"),
-                                _si(ay, _FOOT, where, "ay in ft/s²"),
+    return ChassisAccelerations(*_feet(where, "ft/s²", {"ax": ax, "ay": ay}),
                                 _real(alpha, where, "alpha in rad/s²"))
 
 
@@ -249,47 +252,37 @@ def _swerve_module_acceleration_from_fps(acceleration: float = 0.0,
     """Return the module acceleration ``acceleration`` given in ft/s² (in m/s²) at
     ``angle`` (a Rotation2d, rad as a float, or None for Rotation2d())."""
     where = "SwerveModuleAcceleration.from_fps()"
-    return SwerveModuleAcceleration(_si(acceleration, _FOOT, where, "acceleration in ft/s²"),
-                                    angle)
+    return SwerveModuleAcceleration(
+        *_feet(where, "ft/s²", {"acceleration": acceleration}), angle)
 
 
 def _mecanum_velocities_from_feet(front_left: float, front_right: float, rear_left: float,
                                   rear_right: float) -> MecanumDriveWheelVelocities:
     """Return the wheel velocities given in ft/s, in m/s."""
-    where = "MecanumDriveWheelVelocities.from_feet()"
     return MecanumDriveWheelVelocities(
-        _si(front_left, _FOOT, where, "front_left in ft/s"),
-        _si(front_right, _FOOT, where, "front_right in ft/s"),
-        _si(rear_left, _FOOT, where, "rear_left in ft/s"),
-        _si(rear_right, _FOOT, where, "rear_right in ft/s"))
+        *_feet("MecanumDriveWheelVelocities.from_feet()", "ft/s", locals()))
 
 
 def _mecanum_accelerations_from_fps(front_left: float = 0.0, front_right: float = 0.0,
                                     rear_left: float = 0.0, rear_right: float = 0.0
                                     ) -> MecanumDriveWheelAccelerations:
     """Return the wheel accelerations given in ft/s², in m/s²."""
-    where = "MecanumDriveWheelAccelerations.from_fps()"
     return MecanumDriveWheelAccelerations(
-        _si(front_left, _FOOT, where, "front_left in ft/s²"),
-        _si(front_right, _FOOT, where, "front_right in ft/s²"),
-        _si(rear_left, _FOOT, where, "rear_left in ft/s²"),
-        _si(rear_right, _FOOT, where, "rear_right in ft/s²"))
+        *_feet("MecanumDriveWheelAccelerations.from_fps()", "ft/s²", locals()))
 
 
 def _differential_velocities_from_feet(left: float, right: float
                                        ) -> DifferentialDriveWheelVelocities:
     """Return the wheel velocities given in ft/s, in m/s."""
-    where = "DifferentialDriveWheelVelocities.from_feet()"
-    return DifferentialDriveWheelVelocities(_si(left, _FOOT, where, "left in ft/s"),
-                                            _si(right, _FOOT, where, "right in ft/s"))
+    return DifferentialDriveWheelVelocities(
+        *_feet("DifferentialDriveWheelVelocities.from_feet()", "ft/s", locals()))
 
 
 def _differential_accelerations_from_fps(left: float, right: float
                                          ) -> DifferentialDriveWheelAccelerations:
     """Return the wheel accelerations given in ft/s², in m/s²."""
-    where = "DifferentialDriveWheelAccelerations.from_fps()"
-    return DifferentialDriveWheelAccelerations(_si(left, _FOOT, where, "left in ft/s²"),
-                                               _si(right, _FOOT, where, "right in ft/s²"))
+    return DifferentialDriveWheelAccelerations(
+        *_feet("DifferentialDriveWheelAccelerations.from_fps()", "ft/s²", locals()))
 
 
 # ---------------------------------------------------------------------------------------
