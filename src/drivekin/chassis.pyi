@@ -124,6 +124,23 @@ class ChassisVelocities(_ChassisVector):
     def discretizeInto(self, dt: float, out: ChassisVelocities) -> None:
         """Allocation-free :meth:`discretize`: write the result into ``out`` (may be self)."""
 
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def vx_fps(self) -> float:
+        """Forward velocity, ft/s (``vx`` in m/s); assignable."""
+    @vx_fps.setter
+    def vx_fps(self, value: float) -> None: ...
+    @property
+    def vy_fps(self) -> float:
+        """Leftward velocity, ft/s (``vy`` in m/s); assignable."""
+    @vy_fps.setter
+    def vy_fps(self, value: float) -> None: ...
+    @property
+    def omega_dps(self) -> float:
+        """Angular velocity, counter-clockwise positive, deg/s (``omega`` in rad/s); assignable."""
+    @omega_dps.setter
+    def omega_dps(self, value: float) -> None: ...
+
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
@@ -160,5 +177,25 @@ class ChassisAccelerations(_ChassisVector):
 
     @alpha.setter
     def alpha(self, value: float) -> None: ...
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @staticmethod
+    def from_fps(ax: float = 0.0, ay: float = 0.0, alpha: float = 0.0) -> ChassisAccelerations:
+        """Return the acceleration ``ax`` forward and ``ay`` left given in ft/s² (in m/s²)
+        and ``alpha`` in rad/s²."""
+    @property
+    def ax_fpss(self) -> float:
+        """Forward acceleration, ft/s² (``ax`` in m/s²); assignable."""
+    @ax_fpss.setter
+    def ax_fpss(self, value: float) -> None: ...
+    @property
+    def ay_fpss(self) -> float:
+        """Leftward acceleration, ft/s² (``ay`` in m/s²); assignable."""
+    @ay_fpss.setter
+    def ay_fpss(self, value: float) -> None: ...
+    @property
+    def alpha_dpss(self) -> float:
+        """Angular acceleration, counter-clockwise positive, deg/s² (``alpha`` in rad/s²); assignable."""
+    @alpha_dpss.setter
+    def alpha_dpss(self, value: float) -> None: ...
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]

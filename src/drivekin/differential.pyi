@@ -63,6 +63,18 @@ class DifferentialDriveWheelVelocities(_Wheel2):
     ) -> DifferentialDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def left_fps(self) -> float:
+        """Left wheel, ft/s (``left`` in m/s); assignable."""
+    @left_fps.setter
+    def left_fps(self, value: float) -> None: ...
+    @property
+    def right_fps(self) -> float:
+        """Right wheel, ft/s (``right`` in m/s); assignable."""
+    @right_fps.setter
+    def right_fps(self, value: float) -> None: ...
+
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
     desaturate_in_place = desaturateInPlace
     from_feet = fromFeet
@@ -98,6 +110,21 @@ class DifferentialDriveWheelAccelerations(_Wheel2):
         self, endValue: DifferentialDriveWheelAccelerations, t: float
     ) -> DifferentialDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
+
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @staticmethod
+    def from_fps(left: float, right: float) -> DifferentialDriveWheelAccelerations:
+        """Return the wheel accelerations given in ft/s², in m/s²."""
+    @property
+    def left_fpss(self) -> float:
+        """Left wheel, ft/s² (``left`` in m/s²); assignable."""
+    @left_fpss.setter
+    def left_fpss(self, value: float) -> None: ...
+    @property
+    def right_fpss(self) -> float:
+        """Right wheel, ft/s² (``right`` in m/s²); assignable."""
+    @right_fpss.setter
+    def right_fpss(self, value: float) -> None: ...
 
 @final
 class DifferentialDriveKinematics(Drivetrain):

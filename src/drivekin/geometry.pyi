@@ -120,6 +120,17 @@ class Translation2d:
     @overload
     @staticmethod
     def fromFeet(distance: float, angle: Rotation2d, /) -> Translation2d: ...
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def x_feet(self) -> float:
+        """X component of the translation, ft (``x`` in m)."""
+    @property
+    def y_feet(self) -> float:
+        """Y component of the translation, ft (``y`` in m)."""
+    def distance_feet(self, other: Translation2d, /) -> float:
+        """Return the distance to ``other``, ft (``getDistance(other)`` in m)."""
+    def norm_feet(self) -> float:
+        """Return the distance from the origin, ft (``getNorm()`` in m)."""
     def __add__(self, other: Translation2d, /) -> Translation2d: ...
     def __sub__(self, other: Translation2d, /) -> Translation2d: ...
     def __neg__(self) -> Translation2d: ...
@@ -228,6 +239,13 @@ class Rotation2d:
 
     def toMatrix(self) -> npt.NDArray[np.float64]:
         """Return the 2×2 rotation matrix ``[[cos, −sin], [sin, cos]]``."""
+
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @staticmethod
+    def from_matrix(rotation_matrix: npt.NDArray[np.float64]) -> Rotation2d:
+        """Return the rotation of a 2×2 rotation matrix ``[[cos, −sin], [sin, cos]]`` (a
+        float64 numpy array): ``Rotation2d(rotation_matrix)``. ValueError unless it is special
+        orthogonal (Frobenius norm of RRᵀ − I and abs(det R − 1) at most 1e-9)."""
 
     def __add__(self, other: Rotation2d, /) -> Rotation2d: ...
     def __sub__(self, other: Rotation2d, /) -> Rotation2d: ...
@@ -356,6 +374,19 @@ class Pose2d(_Frame2d):
         ``angle`` (a :class:`Rotation2d`, or rad as a float); robotpy-wpimath's
         ``Pose2d.fromFeet`` (1 ft = 0.3048 m, same bits)."""
 
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @staticmethod
+    def from_matrix(matrix: npt.NDArray[np.float64]) -> Pose2d:
+        """Return the pose of a 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y],
+        [0, 0, 1]]`` in m (a float64 numpy array): ``Pose2d(matrix)``. ValueError unless the
+        last row is exactly [0, 0, 1] and the rotation block is special orthogonal."""
+    @property
+    def x_feet(self) -> float:
+        """X component of the position, ft (``x`` in m)."""
+    @property
+    def y_feet(self) -> float:
+        """Y component of the position, ft (``y`` in m)."""
+
     def __add__(self, other: Transform2d, /) -> Pose2d: ...
     def __sub__(self, other: Pose2d, /) -> Transform2d: ...
 
@@ -404,6 +435,19 @@ class Transform2d(_Frame2d):
         and rotation ``angle`` (a :class:`Rotation2d`, or rad as a float);
         robotpy-wpimath's ``Transform2d.fromFeet`` (1 ft = 0.3048 m, same bits)."""
 
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @staticmethod
+    def from_matrix(matrix: npt.NDArray[np.float64]) -> Transform2d:
+        """Return the transform of a 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y],
+        [0, 0, 1]]`` in m (a float64 numpy array): ``Transform2d(matrix)``. ValueError unless
+        the last row is exactly [0, 0, 1] and the rotation block is special orthogonal."""
+    @property
+    def x_feet(self) -> float:
+        """X component of the translation, ft (``x`` in m)."""
+    @property
+    def y_feet(self) -> float:
+        """Y component of the translation, ft (``y`` in m)."""
+
     def __add__(self, other: Transform2d, /) -> Transform2d: ...
 
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
@@ -442,11 +486,34 @@ class Twist2d:
 
         Uses the series form when ``|dtheta| < 1e-9``."""
 
+    def __mul__(self, factor: float, /) -> Twist2d:
+        """Return the twist with each component times ``factor`` (WPILib C++'s
+        ``operator*``, robotpy's ``*``; Java has none)."""
+
+    def __rmul__(self, factor: float, /) -> Twist2d: ...
+
     @staticmethod
     def fromFeet(dx: float = 0.0, dy: float = 0.0, dtheta: float = 0.0) -> Twist2d:
         """Return the twist with ``dx``, ``dy`` given in feet (converted to m) and
         ``dtheta`` in rad; robotpy-wpimath's ``Twist2d.fromFeet`` (1 ft = 0.3048 m, same
         bits)."""
+
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def dx_feet(self) -> float:
+        """Change along the start frame's x axis, ft (``dx`` in m); assignable."""
+    @dx_feet.setter
+    def dx_feet(self, value: float) -> None: ...
+    @property
+    def dy_feet(self) -> float:
+        """Change along the start frame's y axis, ft (``dy`` in m); assignable."""
+    @dy_feet.setter
+    def dy_feet(self, value: float) -> None: ...
+    @property
+    def dtheta_degrees(self) -> float:
+        """Change in heading, degrees (``dtheta`` in rad); assignable."""
+    @dtheta_degrees.setter
+    def dtheta_degrees(self, value: float) -> None: ...
 
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]

@@ -831,6 +831,17 @@ cdef class Twist2d:
 
     __hash__ = None
 
+    def __mul__(self, factor):
+        """Return the twist with each component times ``factor`` (WPILib C++'s
+        ``operator*``, robotpy's ``*``; Java has none)."""
+        if not is_number(factor):
+            return NotImplemented
+        cdef double k = factor
+        return new_twist(self.t.dx * k, self.t.dy * k, self.t.dtheta * k)
+
+    def __rmul__(self, factor):
+        return self.__mul__(factor)
+
     def __reduce__(self):
         return (Twist2d, (self.t.dx, self.t.dy, self.t.dtheta))
 

@@ -102,6 +102,28 @@ class MecanumDriveWheelVelocities(_Wheel4):
     ) -> MecanumDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def front_left_fps(self) -> float:
+        """Front-left wheel, ft/s (``frontLeft`` in m/s); assignable."""
+    @front_left_fps.setter
+    def front_left_fps(self, value: float) -> None: ...
+    @property
+    def front_right_fps(self) -> float:
+        """Front-right wheel, ft/s (``frontRight`` in m/s); assignable."""
+    @front_right_fps.setter
+    def front_right_fps(self, value: float) -> None: ...
+    @property
+    def rear_left_fps(self) -> float:
+        """Rear-left wheel, ft/s (``rearLeft`` in m/s); assignable."""
+    @rear_left_fps.setter
+    def rear_left_fps(self, value: float) -> None: ...
+    @property
+    def rear_right_fps(self) -> float:
+        """Rear-right wheel, ft/s (``rearRight`` in m/s); assignable."""
+    @rear_right_fps.setter
+    def rear_right_fps(self, value: float) -> None: ...
+
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
     desaturate_in_place = desaturateInPlace
     from_feet = fromFeet
@@ -136,6 +158,34 @@ class MecanumDriveWheelAccelerations(_Wheel4):
         self, endValue: MecanumDriveWheelAccelerations, t: float
     ) -> MecanumDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
+
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @staticmethod
+    def from_fps(
+        front_left: float = 0.0, front_right: float = 0.0, rear_left: float = 0.0,
+        rear_right: float = 0.0
+    ) -> MecanumDriveWheelAccelerations:
+        """Return the wheel accelerations given in ft/s², in m/s²."""
+    @property
+    def front_left_fpss(self) -> float:
+        """Front-left wheel, ft/s² (``frontLeft`` in m/s²); assignable."""
+    @front_left_fpss.setter
+    def front_left_fpss(self, value: float) -> None: ...
+    @property
+    def front_right_fpss(self) -> float:
+        """Front-right wheel, ft/s² (``frontRight`` in m/s²); assignable."""
+    @front_right_fpss.setter
+    def front_right_fpss(self, value: float) -> None: ...
+    @property
+    def rear_left_fpss(self) -> float:
+        """Rear-left wheel, ft/s² (``rearLeft`` in m/s²); assignable."""
+    @rear_left_fpss.setter
+    def rear_left_fpss(self, value: float) -> None: ...
+    @property
+    def rear_right_fpss(self) -> float:
+        """Rear-right wheel, ft/s² (``rearRight`` in m/s²); assignable."""
+    @rear_right_fpss.setter
+    def rear_right_fpss(self, value: float) -> None: ...
 
 @final
 class MecanumDriveKinematics(Drivetrain):

@@ -80,6 +80,13 @@ class SwerveModuleVelocity(_ModuleVector):
     def cosineScaleInPlace(self, currentAngle: Rotation2d) -> None:
         """Allocation-free :meth:`cosineScale`: update this object. Returns None."""
 
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def velocity_fps(self) -> float:
+        """Wheel velocity, ft/s (``velocity`` in m/s); assignable."""
+    @velocity_fps.setter
+    def velocity_fps(self, value: float) -> None: ...
+
     def interpolate(self, endValue: SwerveModuleVelocity, t: float) -> SwerveModuleVelocity:
         """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
         [0, 1]."""
@@ -110,6 +117,13 @@ class SwerveModulePosition(_ModuleVector):
     def interpolate(self, endValue: SwerveModulePosition, t: float) -> SwerveModulePosition:
         """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
 
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def distance_ft(self) -> float:
+        """Distance driven by the wheel, ft (``distance`` in m); assignable."""
+    @distance_ft.setter
+    def distance_ft(self, value: float) -> None: ...
+
 @final
 class SwerveModuleAcceleration(_ModuleVector):
     """SwerveModuleAcceleration(acceleration=0.0, angle=Rotation2d())
@@ -125,6 +139,25 @@ class SwerveModuleAcceleration(_ModuleVector):
 
     @acceleration.setter
     def acceleration(self, value: float) -> None: ...
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @staticmethod
+    def from_fps(
+        acceleration: float = 0.0, angle: Rotation2d | float | None = None
+    ) -> SwerveModuleAcceleration:
+        """Return the module acceleration ``acceleration`` given in ft/s² (in m/s²) at
+        ``angle`` (a Rotation2d, rad as a float, or None for Rotation2d())."""
+    @property
+    def acceleration_fpss(self) -> float:
+        """Acceleration magnitude, ft/s² (``acceleration`` in m/s²); assignable."""
+    @acceleration_fpss.setter
+    def acceleration_fpss(self, value: float) -> None: ...
+
+    def __add__(self, other: SwerveModuleAcceleration, /) -> SwerveModuleAcceleration: ...
+    def __sub__(self, other: SwerveModuleAcceleration, /) -> SwerveModuleAcceleration: ...
+    def __neg__(self) -> SwerveModuleAcceleration: ...
+    def __mul__(self, scalar: float, /) -> SwerveModuleAcceleration: ...
+    def __rmul__(self, scalar: float, /) -> SwerveModuleAcceleration: ...
+    def __truediv__(self, scalar: float, /) -> SwerveModuleAcceleration: ...
     def interpolate(self, endValue: SwerveModuleAcceleration, t: float) -> SwerveModuleAcceleration:
         """Interpolate the magnitude linearly and the angle the short way; ``t`` is
         clamped to [0, 1]."""

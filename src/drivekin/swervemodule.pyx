@@ -13,8 +13,9 @@ from libc.math cimport M_PI, fabs, signbit
 
 from drivekin._core.types cimport rot2_t
 from drivekin._core.args cimport check_type, is_number
+from drivekin._core.dkmath cimport hypot
 from drivekin._core.kernels cimport (clamp01, java_equals, rot_eq, rot_interp, rot_minus,
-                                     rot_plus, rot_rad, rot_radians)
+                                     rot_plus, rot_rad, rot_radians, rot_xy)
 from drivekin.geometry cimport Rotation2d, new_rotation
 from drivekin._core.errors import refuse_delete, type_name
 from drivekin._core.format import f2
@@ -242,6 +243,36 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
         check_type(endValue, SwerveModuleAcceleration, "endValue")
         return self._lerp(<_ModuleVector>endValue, clamp01(t))
 
+    # Vector arithmetic of WPILib C++'s operators (robotpy's + - * /; Java has none): the
+    # sum goes through Cartesian components, negation turns the angle by 180°.
+    def __add__(self, other):
+        if not isinstance(other, SwerveModuleAcceleration):
+            return NotImplemented
+        cdef _ModuleVector o = <_ModuleVector>other
+        return _acceleration_sum(self, o.m, o.a)
+
+    def __sub__(self, other):
+        if not isinstance(other, SwerveModuleAcceleration):
+            return NotImplemented
+        cdef _ModuleVector o = <_ModuleVector>other
+        return _acceleration_sum(self, o.m, rot_plus(o.a, rot_rad(M_PI)))
+
+    def __neg__(self):
+        return self._new(self.m, rot_plus(self.a, rot_rad(M_PI)))
+
+    def __mul__(self, scalar):
+        if not is_number(scalar):
+            return NotImplemented
+        return _acceleration_scaled(self, scalar)
+
+    def __rmul__(self, scalar):
+        return self.__mul__(scalar)
+
+    def __truediv__(self, scalar):
+        if not is_number(scalar):
+            return NotImplemented
+        return _acceleration_scaled(self, 1.0 / <double>scalar)
+
     def __repr__(self):
         return f"SwerveModuleAcceleration({self.m!r}, {new_rotation(self.a)!r})"
 
@@ -249,6 +280,18 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
         # WPILib's toString says "Accelerations" (plural); kept for identical logs.
         return (f"SwerveModuleAccelerations(Acceleration: {f2(self.m)} m/s², "
                 f"Angle: {new_rotation(self.a)})")
+
+
+cdef _ModuleVector _acceleration_sum(_ModuleVector a, double m, rot2_t angle):
+    cdef double x = a.m * a.a.c + m * angle.c
+    cdef double y = a.m * a.a.s + m * angle.s
+    return a._new(hypot(x, y), rot_xy(x, y))
+
+
+cdef _ModuleVector _acceleration_scaled(_ModuleVector a, double k):
+    if k < 0:
+        return a._new(-k * a.m, rot_plus(a.a, rot_rad(M_PI)))
+    return a._new(k * a.m, a.a)
 
 
 # Built here, where each class's allocator (and its freelist) is a direct call, not a

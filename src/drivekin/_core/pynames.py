@@ -27,6 +27,9 @@ family per catalog class of the swerve drivetrain whose name starts ``SwerveDriv
 ``Float``). Calling one builds the drivekin object, checking the module count; its static
 methods and constants are reachable through it; ``isinstance`` works.
 
+The few robotpy names with no Java member at all (``x_feet``, ``vx_fps``, ``from_matrix``)
+are written out in _core/robotpyextras.py; install() puts them in first.
+
 ``tests/api/test_robotpy_names.py`` holds the result against robotpy 2027's own tables
 (``tests/data/robotpy2027-names.json``).
 """
@@ -234,6 +237,8 @@ def install(namespace: dict[str, Any]) -> list[str]:
     """Give every catalog class its robotpy 2027 names and put robotpy's class names into
     ``namespace`` (the package's); return the class names added."""
     from drivekin._core.catalog import ENTRIES
+    from drivekin._core.robotpyextras import install_extras
+    install_extras(namespace)               # the names without a Java member first
     for e in ENTRIES:
         if not e.robotpy_names:
             continue

@@ -530,7 +530,8 @@ API = {
     Twist2d: {
         "__init__": S(NUM, NUM, NUM), "__reduce__": S(), "__eq__": S(Obj(Twist2d)),
         "dx": Prop(NUM), "dy": Prop(NUM), "dtheta": Prop(NUM), "exp": S(),
-        "fromFeet": [S(), S(NUM, NUM, NUM)],
+        "fromFeet": [S(), S(NUM, NUM, NUM)], "__mul__": S(NUM),
+        "__rmul__": S(NUM),
     },
     CV: {**_chassis(CV, ("vx", "vy", "omega")), "fromFeet": [S(), S(NUM, NUM, NUM)],
          "toTwist2d": S(NUM), "discretize": S(NUM), "discretizeInto": S(NUM, Out(CV))},
@@ -539,7 +540,9 @@ API = {
           "optimize": S(Obj(R)), "optimizeInPlace": S(Obj(R)),
           "cosineScale": S(Obj(R)), "cosineScaleInPlace": S(Obj(R))},
     SMP: {**_module(SMP, "distance"), "copy": S()},
-    SMA: _module(SMA, "acceleration"),
+    # WPILib C++'s operators (robotpy's): vector sum and difference, scaling, negation.
+    SMA: {**_module(SMA, "acceleration"), "__add__": S(Obj(SMA)), "__sub__": S(Obj(SMA)),
+          "__mul__": S(NUM), "__rmul__": S(NUM), "__truediv__": S(NUM), "__neg__": S()},
     MWV: {**_wheels(MWV, ("frontLeft", "frontRight", "rearLeft", "rearRight"), desat=True),
           "fromFeet": S(NUM, NUM, NUM, NUM)},
     MWP: _wheels(MWP, ("frontLeft", "frontRight", "rearLeft", "rearRight"), copy=True,
@@ -602,6 +605,35 @@ API = {
     MecanumDriveOdometry: _odometry(MecanumDriveKinematics, (Obj(MWP),)),
     DifferentialDriveOdometry: _odometry(None, (NUM, NUM)),
 }
+# robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras): unit
+# variants in feet and degrees, every one assignable but the positions' (x_feet, y_feet).
+# (from_feet is fromFeet under the names rule: attacked under its Java-side name.)
+_HOMOGENEOUS = Arr((3, 3), fill=[[0.0, -1.0, 1.0], [1.0, 0.0, 2.0], [0.0, 0.0, 1.0]])
+_FRAME_FT = {"from_matrix": S(_HOMOGENEOUS), "x_feet": Prop(), "y_feet": Prop()}
+for _cls, _extras in {
+    T: {"x_feet": Prop(), "y_feet": Prop(), "distance_feet": S(Obj(T)), "norm_feet": S()},
+    R: {"from_matrix": S(Arr((2, 2), fill=[[0.0, -1.0], [1.0, 0.0]]))},
+    Pose2d: _FRAME_FT,
+    Transform2d: _FRAME_FT,
+    Twist2d: {"dx_feet": Prop(NUM),
+              "dy_feet": Prop(NUM), "dtheta_degrees": Prop(NUM)},
+    CV: {"vx_fps": Prop(NUM), "vy_fps": Prop(NUM),
+         "omega_dps": Prop(NUM)},
+    CA: {"from_fps": [S(), S(NUM, NUM, NUM)], "ax_fpss": Prop(NUM), "ay_fpss": Prop(NUM),
+         "alpha_dpss": Prop(NUM)},
+    SMV: {"velocity_fps": Prop(NUM)},
+    SMP: {"distance_ft": Prop(NUM)},
+    SMA: {"from_fps": [S(), S(NUM, Obj(R, none_ok=True, float_ok=True))],
+          "acceleration_fpss": Prop(NUM)},
+    MWV: {**{f"{w}_fps": Prop(NUM) for w in ("front_left", "front_right", "rear_left",
+                                              "rear_right")}},
+    MWA: {"from_fps": [S(), S(NUM, NUM, NUM, NUM)],
+          **{f"{w}_fpss": Prop(NUM) for w in ("front_left", "front_right", "rear_left",
+                                               "rear_right")}},
+    DWV: {"left_fps": Prop(NUM), "right_fps": Prop(NUM)},
+    DWA: {"from_fps": S(NUM, NUM), "left_fpss": Prop(NUM), "right_fpss": Prop(NUM)},
+}.items():
+    API[_cls].update(_extras)
 # Differential swerve. The limit stays valid (>= 0) in the alternate build: 0.125 -> 0.0625.
 _LIMIT = Num(0.125)
 _PROP = {"proportional": lambda: True}
