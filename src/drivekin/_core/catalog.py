@@ -154,15 +154,15 @@ def robotpy_attr(obj: Any, new: str, old: str) -> Any:
     return getattr(obj, old) if value is _MISSING else value
 
 
-# Rotations are carried as the stored (cos, sin) pair, never through the angle, so
-# conversions are bit-exact both ways.
-
 def qualified(obj: object) -> str:
     # Both libraries have a Pose2d, a Rotation2d, ...: always say whose (builtins aside).
     t = type(obj)
     module = getattr(t, "__module__", None) or "?"
     return t.__qualname__ if module == "builtins" else f"{module}.{t.__qualname__}"
 
+
+# Rotations are carried as the stored (cos, sin) pair, never through the angle, so
+# conversions are bit-exact both ways.
 
 def _check_unit(c: float, s: float, r: object, where: str) -> None:
     # A rotation is a unit (cos, sin) pair, or the NaN pair of a non-finite angle.
