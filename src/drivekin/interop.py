@@ -1,4 +1,4 @@
-"""Converters between drivekin and robotpy-wpimath 2026 (``wpimath``) objects.
+"""Converters between drivekin and robotpy-wpimath (``wpimath``) objects, 2026 or 2027.
 
 ``toWpimath(obj)`` turns a drivekin object into the robotpy-wpimath object of the same
 meaning, ``fromWpimath(obj)`` goes the other way, mapping WPILib 2026 names to 2027 ones:
@@ -21,10 +21,18 @@ DifferentialDriveKinematics (trackwidth)     DifferentialDriveKinematics (trackW
 DCMotor                                      ``wpimath.system.plant.DCMotor``
 ==========================================  ==========================================
 
+robotpy-wpimath 2027 works the same way: it has each of these classes in ``wpimath``
+itself under drivekin's name (``wpimath.ChassisVelocities``; swerve kinematics stay
+``SwerveDrive{2,3,4,6}Kinematics``) and spells members in snake_case (``get_modules()``,
+``front_left``, ``trackwidth``, ``nominal_voltage``, ``from_matrix``). ``toWpimath``
+builds the installed generation's objects and ``fromWpimath`` takes them: the classes are
+found by name in the installed package (the 2027 name first, in ``wpimath`` or in its
+2026 modules), and attributes are read in either spelling, so no version is consulted.
+
 Units are the same on both sides (m, m/s, rad, rad/s). Every conversion is exact: each
 float is copied, never recomputed. A rotation is carried as its stored (cos, sin) pair —
 not through its angle, whose cos/sin would differ in the last bit — so a drivekin →
-wpimath → drivekin round trip returns bit-identical objects. A robotpy ``Rotation2d``
+wpimath → drivekin round trip returns bit-identical objects. A robotpy 2026 ``Rotation2d``
 remembers the angle it was built with (``Rotation2d(3π/2).radians()`` is 4.71); drivekin,
 like WPILib 2027, keeps only (cos, sin), so its angle comes back wrapped to (−π, π]
 (−π/2 here: ``atan2(sin, cos)``). Kinematics objects carry their module geometry only:
@@ -37,8 +45,9 @@ tuple of SwerveModuleVelocity). Only one level: a nested list is a TypeError, as
 other iterable (generator, numpy array).
 
 Not converted (TypeError saying so): drivekin's 2027 additions that robotpy-wpimath 2026
-lacks (ChassisAccelerations, SwerveModuleAcceleration, the wheel accelerations, dead-wheel
-and differential swerve kinematics), odometry objects (stateful: build the other library's
+lacks (ChassisAccelerations, SwerveModuleAcceleration, the wheel accelerations: robotpy
+2027 has them, but interop converts only what both generations share), dead-wheel and
+differential swerve kinematics, odometry objects (stateful: build the other library's
 odometry from converted kinematics and poses), and wpimath types drivekin has no
 counterpart for (3-D geometry, estimators, trajectories, ...).
 
@@ -52,11 +61,12 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable
 from types import ModuleType
-from typing import TYPE_CHECKING, Any, NamedTuple, overload
+from typing import TYPE_CHECKING, Any, TypeVar, overload
 
 from drivekin._core import catalog
 from drivekin._core.catalog import SWERVE_MODULE_COUNTS  # noqa: F401  (0.1.0 name)
 from drivekin._core.catalog import qualified as _qualified
+from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d
 
 if TYPE_CHECKING:
     # The overloads below give each conversion its static types.
@@ -73,32 +83,100 @@ if TYPE_CHECKING:
         MecanumDriveKinematics,
         MecanumDriveWheelPositions,
         MecanumDriveWheelVelocities,
-        Pose2d,
-        Rotation2d,
         SwerveDriveKinematics,
         SwerveModulePosition,
         SwerveModuleVelocity,
-        Transform2d,
-        Translation2d,
         Twist2d,
     )
 
 __all__ = ["fromWpimath", "fromWpimath3d", "toWpimath"]
 
+_V = TypeVar("_V")
+
 INSTALL_HINT = ('install it with `pip install robotpy-wpimath` '
                 '(or `pip install "drivekin[wpimath]"`)')
 
 
-class _Wpimath(NamedTuple):
-    geometry: ModuleType
-    kinematics: ModuleType
+# ---- the converters: the catalog's robotpy-wpimath peers ---------------------------------
 
-    def module(self, name: str) -> ModuleType:
-        """``wpimath.<name>`` (a catalog peer's ``module``: ``"geometry"``,
-        ``"system.plant"``, ...)."""
-        if name in self._fields:
-            return getattr(self, name)  # type: ignore[no-any-return]
-        return importlib.import_module(f"wpimath.{name}")
+_PEERS: tuple[tuple[type, catalog.Peer], ...] = tuple(
+    (e.cls, e.peer) for e in catalog.ENTRIES if e.peer is not None)
+_TO: dict[type, Callable[[Any, _Wpimath], Any]] = {cls: peer.to for cls, peer in _PEERS}
+# drivekin classes that robotpy-wpimath has no counterpart for, and why.
+_NO_PEER: dict[str, str] = {e.cls.__name__: e.no_peer.format(e.cls.__name__)
+                            for e in catalog.ENTRIES if e.no_peer is not None}
+
+
+def _project(obj: Any, new: str, old: str) -> Any:
+    return catalog.robotpy_attr(obj, new, old)()
+
+
+# fromWpimath3d: each robotpy 3-D class, the drivekin 2-D class it gives, and robotpy's own
+# projection to its 2-D class (robotpy 2027 spells toPose2d to_pose2d, and so on).
+_FLATTEN_3D: tuple[tuple[str, type, Callable[[Any, _Wpimath], Any]], ...] = (
+    ("Pose3d", Pose2d, lambda p, w: _project(p, "to_pose2d", "toPose2d")),
+    ("Transform3d", Transform2d, lambda t, w: w.cls("Transform2d")(
+        _project(t.translation(), "to_translation2d", "toTranslation2d"),
+        _project(t.rotation(), "to_rotation2d", "toRotation2d"))),
+    ("Translation3d", Translation2d,
+     lambda t, w: _project(t, "to_translation2d", "toTranslation2d")),
+    ("Rotation3d", Rotation2d, lambda r, w: _project(r, "to_rotation2d", "toRotation2d")),
+)
+
+# robotpy 2027 class name -> the robotpy 2026 module and the names to look for, 2027's
+# first (``_Wpimath.cls``).
+_WHERE: dict[str, tuple[str, tuple[str, ...]]] = {
+    new: (peer.module, (new,) if new == old else (new, old))
+    for _, peer in _PEERS for new, old in zip(peer.names2027, peer.names)}
+_WHERE.update((name, ("geometry", (name,))) for name, _, _ in _FLATTEN_3D)
+
+
+class _Wpimath:
+    """The installed robotpy-wpimath, either generation, found by class names: robotpy
+    2027 has every class in ``wpimath`` itself (mostrobotpy flattened the namespaces),
+    robotpy 2026 in ``wpimath.geometry``, ``wpimath.kinematics`` and
+    ``wpimath.system.plant``, some under WPILib 2026's names (ChassisSpeeds)."""
+
+    def __init__(self, package: ModuleType) -> None:
+        self._package = package
+        self.flat = hasattr(package, "Rotation2d")
+        self._classes: dict[str, type | None] = {}
+        self._from: dict[type, tuple[type, Callable[[Any], Any]]] | None = None
+        self._from_3d: dict[type, tuple[type, Callable[[Any, _Wpimath], Any]]] | None = None
+
+    def _find(self, name: str) -> type | None:
+        if name not in self._classes:
+            module, names = _WHERE[name]
+            space = (self._package if self.flat
+                     else importlib.import_module(f"wpimath.{module}"))
+            found = (getattr(space, n, None) for n in names)
+            self._classes[name] = next((c for c in found if isinstance(c, type)), None)
+        return self._classes[name]
+
+    def cls(self, name: str) -> Any:
+        """The robotpy class of the robotpy 2027 name ``name`` (on robotpy 2026 its 2026
+        name: ``ChassisVelocities`` gives ``ChassisSpeeds``)."""
+        found = self._find(name)
+        if found is None:
+            raise ImportError(
+                f"the installed robotpy-wpimath ({getattr(self._package, '__file__', '?')}) "
+                f"has no {' or '.join(_WHERE[name][1])}: drivekin.interop supports "
+                "robotpy-wpimath 2026 and 2027", name="wpimath")
+        return found
+
+    def from_table(self) -> dict[type, tuple[type, Callable[[Any], Any]]]:
+        """fromWpimath's table: robotpy class -> (drivekin class, converter)."""
+        if self._from is None:
+            self._from = {c: (cls, peer.frm) for cls, peer in _PEERS
+                          for c in map(self._find, peer.names2027) if c is not None}
+        return self._from
+
+    def from_3d_table(self) -> dict[type, tuple[type, Callable[[Any, _Wpimath], Any]]]:
+        """fromWpimath3d's table: robotpy 3-D class -> (drivekin 2-D class, projection)."""
+        if self._from_3d is None:
+            self._from_3d = {c: (cls, flatten) for name, cls, flatten in _FLATTEN_3D
+                             if (c := self._find(name)) is not None}
+        return self._from_3d
 
 
 _wpimath: _Wpimath | None = None
@@ -109,8 +187,11 @@ def _load() -> _Wpimath:
     global _wpimath
     if _wpimath is None:
         try:
-            geometry = importlib.import_module("wpimath.geometry")
-            kinematics = importlib.import_module("wpimath.kinematics")
+            w = _Wpimath(importlib.import_module("wpimath"))
+            if not w.flat:
+                # robotpy 2026: import its modules now, so a broken install fails here.
+                importlib.import_module("wpimath.geometry")
+                importlib.import_module("wpimath.kinematics")
         except ModuleNotFoundError as e:
             raise ModuleNotFoundError(
                 f"drivekin.interop needs robotpy-wpimath, which is not installed ({e}): "
@@ -119,37 +200,18 @@ def _load() -> _Wpimath:
             raise ImportError(
                 f"drivekin.interop needs robotpy-wpimath, which failed to import ({e}): "
                 f"reinstall it, or {INSTALL_HINT}", name="wpimath") from e
-        _wpimath = _Wpimath(geometry, kinematics)
+        _wpimath = w
     return _wpimath
-
-
-# ---- the converters: the catalog's robotpy-wpimath peers ---------------------------------
-
-_TO: dict[type, Callable[[Any, _Wpimath], Any]] = {
-    e.cls: e.peer.to for e in catalog.ENTRIES if e.peer is not None}
-# drivekin classes that robotpy-wpimath 2026 has no counterpart for, and why.
-_NO_PEER: dict[str, str] = {e.cls.__name__: e.no_peer.format(e.cls.__name__)
-                            for e in catalog.ENTRIES if e.no_peer is not None}
-_from: dict[type, Callable[[Any], Any]] | None = None
-
-
-def _from_table() -> dict[type, Callable[[Any], Any]]:
-    global _from
-    if _from is None:
-        w = _load()
-        _from = {getattr(w.module(e.peer.module), name): e.peer.frm
-                 for e in catalog.ENTRIES if e.peer is not None for name in e.peer.names}
-    return _from
 
 
 # ---- dispatch ----------------------------------------------------------------------------
 
-def _lookup(table: dict[type, Callable[..., Any]], obj: object) -> Callable[..., Any] | None:
+def _lookup(table: dict[type, _V], obj: object) -> _V | None:
     # The exact class first, then its bases (a user's subclass of a robotpy class).
     for klass in type(obj).__mro__:
-        fn = table.get(klass)
-        if fn is not None:
-            return fn
+        found = table.get(klass)
+        if found is not None:
+            return found
     return None
 
 
@@ -168,6 +230,19 @@ def _is_wpimath(obj: object) -> bool:
 
 def _is_drivekin(obj: object) -> bool:
     return _from_package(obj, "drivekin")
+
+
+def _conversion(obj: object) -> tuple[str, type] | None:
+    """The function that converts the robotpy-wpimath object ``obj`` (``"fromWpimath"``
+    or ``"fromWpimath3d"``) and the drivekin class it gives, or None (error messages)."""
+    w = _load()
+    tables: tuple[tuple[str, dict[type, tuple[type, Any]]], ...] = (
+        ("fromWpimath", w.from_table()), ("fromWpimath3d", w.from_3d_table()))
+    for function, table in tables:
+        found = _lookup(table, obj)
+        if found is not None:
+            return function, found[0]
+    return None
 
 
 _STATEFUL = ("odometry and estimators are stateful and are not converted: build one from "
@@ -194,12 +269,14 @@ def _to_one(obj: object, where: str) -> Any:
 
 def _from_one(obj: object, where: str) -> Any:
     if _is_wpimath(obj):
-        fn = _lookup(_from_table(), obj)
-        if fn is not None:
-            return fn(obj)
+        found = _lookup(_load().from_table(), obj)
+        if found is not None:
+            return found[1](obj)
         name = type(obj).__name__
         stateful = name.endswith(("Odometry", "Odometry3d", "PoseEstimator", "PoseEstimator3d"))
-        reason = _STATEFUL if stateful else "drivekin has no counterpart of it"
+        # robotpy 2027's classes new in WPILib 2027 (ChassisAccelerations, ...) say why.
+        reason = (_STATEFUL if stateful else _NO_PEER.get(name)
+                  or "drivekin has no counterpart of it")
         if name in ("Pose3d", "Transform3d", "Translation3d", "Rotation3d"):
             reason += " (drivekin is 2-D: fromWpimath3d() takes its 2-D part, as toPose2d does)"
     elif isinstance(obj, (list, tuple)):
@@ -261,7 +338,9 @@ def toWpimath(obj: object) -> Any: ...
 
 
 def toWpimath(obj: object) -> Any:
-    """Return the robotpy-wpimath 2026 object equivalent to the drivekin object ``obj``.
+    """Return the robotpy-wpimath object equivalent to the drivekin object ``obj``, of the
+    installed generation (robotpy 2026's ChassisSpeeds, or robotpy 2027's
+    ChassisVelocities; the type hints name 2026's classes).
 
     Every float is copied exactly (rotations as their (cos, sin) pair); units are the
     same on both sides (m, m/s, rad, rad/s). A list or tuple gives a list or tuple of
@@ -318,7 +397,8 @@ def fromWpimath(obj: object) -> Any: ...
 
 
 def fromWpimath(obj: object) -> Any:
-    """Return the drivekin object equivalent to the robotpy-wpimath 2026 object ``obj``.
+    """Return the drivekin object equivalent to the robotpy-wpimath object ``obj``
+    (robotpy 2026's or 2027's classes and spellings).
 
     Every float is copied exactly; a rotation keeps its stored (cos, sin) pair, so an
     angle robotpy kept unwrapped (``Rotation2d(3π/2)``) reads back wrapped to (−π, π]
@@ -328,32 +408,24 @@ def fromWpimath(obj: object) -> Any:
     return _convert(obj, _from_one, "fromWpimath()")
 
 
-_FLATTEN_3D: tuple[tuple[str, Callable[[Any, _Wpimath], Any]], ...] = (
-    ("Pose3d", lambda p, w: p.toPose2d()),
-    ("Transform3d", lambda t, w: w.geometry.Transform2d(t.translation().toTranslation2d(),
-                                                        t.rotation().toRotation2d())),
-    ("Translation3d", lambda t, w: t.toTranslation2d()),
-    ("Rotation3d", lambda r, w: r.toRotation2d()),
-)
-
-
 def _from_3d(obj: object, where: str) -> Any:
-    w = _load()
-    for klass in type(obj).__mro__:
-        for name, flatten in _FLATTEN_3D:
-            if klass is getattr(w.geometry, name):
-                return _from_one(flatten(obj, w), where)
+    if _is_wpimath(obj):
+        w = _load()
+        found = _lookup(w.from_3d_table(), obj)
+        if found is not None:
+            return _from_one(found[1](obj, w), where)
     raise TypeError(f"{where} cannot convert {_qualified(obj)}: it is not a robotpy-wpimath "
                     "Pose3d, Transform3d, Translation3d or Rotation3d (fromWpimath converts "
                     "2-D objects)")
 
 
 def fromWpimath3d(obj: object) -> Any:
-    """Return the drivekin 2-D object for a robotpy-wpimath 2026 3-D one, with robotpy's
+    """Return the drivekin 2-D object for a robotpy-wpimath 3-D one, with robotpy's
     ``toPose2d`` semantics: a Pose3d gives a Pose2d and a Transform3d a Transform2d (x, y
     and the rotation about z), a Translation3d a Translation2d (x, y), a Rotation3d a
     Rotation2d (about z). robotpy computes the 2-D value (``toPose2d``,
-    ``toTranslation2d``, ``toRotation2d``) and it is then copied exactly, as by
+    ``toTranslation2d``, ``toRotation2d``; robotpy 2027: ``to_pose2d``, ...) and it is
+    then copied exactly, as by
     :func:`fromWpimath`; for a vision pose from photonlibpy, ``fromWpimath3d(pose3d)`` is
     ``fromWpimath(pose3d.toPose2d())``. A list or tuple gives a list or tuple of converted
     items. TypeError for anything else."""

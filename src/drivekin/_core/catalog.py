@@ -7,8 +7,8 @@ Each :class:`Entry` gives the class's kind and drivetrain, and, where they exist
   the constructor from them (``build``), which both serializations use;
 * its **struct** type (name, schema, nested types; :mod:`drivekin.wpistruct`);
 * its **protobuf** message (name, file, fields; :mod:`drivekin.protobuf`);
-* its **robotpy-wpimath 2026 peer** (class names and the two exact converters;
-  :mod:`drivekin.interop`), or why there is none;
+* its **robotpy-wpimath peer** (its class names in robotpy 2026 and 2027 and the two exact
+  converters; :mod:`drivekin.interop`), or why there is none;
 * for an odometry class, the **log entry type** of its position samples, by which
   :mod:`drivekin.replay` recognises a drivetrain in a log.
 * an **example**: a factory of one typical valid instance (the tests' and tools' fixture).
@@ -97,12 +97,23 @@ class Proto:
 
 @dataclass(frozen=True)
 class Peer:
-    """The robotpy-wpimath 2026 class(es) of the same meaning: ``module`` is
-    ``wpimath.<module>``; ``to(obj, wpimath)`` and ``frm(obj)`` convert exactly."""
+    """The robotpy-wpimath class(es) of the same meaning. ``names`` are robotpy 2026's, in
+    ``wpimath.<module>``; robotpy 2027 has every class in ``wpimath`` itself, under
+    ``renamed`` (one per name) where WPILib 2027 renamed it (ChassisSpeeds:
+    ChassisVelocities), else under the same name. ``to(obj, wpimath)`` builds the
+    installed generation's object (``wpimath.cls(name)`` takes the 2027 name) and
+    ``frm(obj)`` reads either generation's (:func:`robotpy_attr` where their spellings
+    differ); both copy every float exactly."""
     module: str
     names: tuple[str, ...]
     to: Callable[[Any, Any], Any]
     frm: Callable[[Any], Any]
+    renamed: tuple[str, ...] = ()
+
+    @property
+    def names2027(self) -> tuple[str, ...]:
+        """robotpy 2027's class names (WPILib 2027's; ``SwerveDrive{N}Kinematics`` kept)."""
+        return self.renamed or self.names
 
 
 @dataclass(frozen=True)
@@ -116,7 +127,7 @@ class Entry:
     struct: Struct | None = None
     proto: Proto | None = None
     peer: Peer | None = None
-    no_peer: str | None = None     # why robotpy-wpimath 2026 has no peer ({}: the name)
+    no_peer: str | None = None     # why interop has no robotpy-wpimath peer ({}: the name)
     positions: str | None = None   # odometry: the log type of one positions sample
     # odometry: start one from its kinematics (or None), the gyro, the first row of a
     # positions stack as drivekin.batch.replay reads it, and the start pose (log replay)
@@ -131,8 +142,20 @@ class Entry:
 
 
 # ---------------------------------------------------------------------------------------
-# robotpy-wpimath rotations: carried as the stored (cos, sin) pair, never through the
-# angle, so conversions are bit-exact both ways.
+# robotpy-wpimath peers. robotpy 2027 spells members in snake_case, made from the C++ name
+# (tests/data/robotpy2027-names.json: get_modules, front_left, nominal_voltage, from_matrix),
+# robotpy 2026 in camelCase (getModules, frontLeft, nominalVoltage, fromMatrix); single
+# words (x, cos, rotation, angle, vx, left) are the same in both.
+
+_MISSING = object()
+
+
+def robotpy_attr(obj: Any, new: str, old: str) -> Any:
+    """``obj.<new>`` (robotpy 2027's spelling), or ``obj.<old>`` (robotpy 2026's) when
+    ``obj`` has no ``new``."""
+    value = getattr(obj, new, _MISSING)
+    return getattr(obj, old) if value is _MISSING else value
+
 
 def qualified(obj: object) -> str:
     # Both libraries have a Pose2d, a Rotation2d, ...: always say whose (builtins aside).
@@ -140,6 +163,9 @@ def qualified(obj: object) -> str:
     module = getattr(t, "__module__", None) or "?"
     return t.__qualname__ if module == "builtins" else f"{module}.{t.__qualname__}"
 
+
+# Rotations are carried as the stored (cos, sin) pair, never through the angle, so
+# conversions are bit-exact both ways.
 
 def _check_unit(c: float, s: float, r: object, where: str) -> None:
     # A rotation is a unit (cos, sin) pair, or the NaN pair of a non-finite angle.
@@ -154,15 +180,17 @@ def _check_unit(c: float, s: float, r: object, where: str) -> None:
 def _rotation_to(r: Rotation2d, w: Any) -> Any:
     c, s = r.getCos(), r.getSin()
     _check_unit(c, s, r, "toWpimath()")
+    cls = w.cls("Rotation2d")
     if c == c and s == s:
-        # robotpy's Rotation2d(x, y) divides by hypot(x, y): exact whenever that is 1.0
-        # (division by a positive number keeps the sign of zero, so == suffices here).
-        out = w.geometry.Rotation2d(c, s)
+        # robotpy's Rotation2d(x, y) divides by hypot(x, y) (2026 and 2027 alike): exact
+        # whenever that is 1.0 (division by a positive number keeps the sign of zero, so
+        # == suffices here).
+        out = cls(c, s)
         if out.cos() == c and out.sin() == s:
             return out
-    # Otherwise (and for the NaN pair of a non-finite angle) fromMatrix copies R(0,0) and
-    # R(1,0) as they are; NaN passes its orthogonality check.
-    return w.geometry.Rotation2d.fromMatrix(((c, -s), (s, c)))
+    # Otherwise (and for the NaN pair of a non-finite angle) fromMatrix (2027: from_matrix)
+    # copies R(0,0) and R(1,0) as they are; NaN passes its orthogonality check.
+    return robotpy_attr(cls, "from_matrix", "fromMatrix")(((c, -s), (s, c)))
 
 
 def _rotation_from(r: Any) -> Rotation2d:
@@ -174,14 +202,14 @@ def _rotation_from(r: Any) -> Rotation2d:
 
 
 def _translation_to(t: Translation2d, w: Any) -> Any:
-    return w.geometry.Translation2d(t.x, t.y)
+    return w.cls("Translation2d")(t.x, t.y)
 
 
 def _translation_from(t: Any) -> Translation2d:
     return Translation2d(t.x, t.y)
 
 
-#: robotpy-wpimath 2026's SwerveDriveNKinematics.
+#: robotpy-wpimath's SwerveDriveNKinematics (2026 and 2027).
 SWERVE_MODULE_COUNTS = (2, 3, 4, 6)
 
 
@@ -189,18 +217,30 @@ def _swerve_to(k: SwerveDriveKinematics, w: Any) -> Any:
     n = k.getNumModules()
     if n not in SWERVE_MODULE_COUNTS:
         raise ValueError(
-            f"toWpimath(): robotpy-wpimath 2026 has SwerveDrive2Kinematics, "
+            f"toWpimath(): robotpy-wpimath has SwerveDrive2Kinematics, "
             f"SwerveDrive3Kinematics, SwerveDrive4Kinematics and SwerveDrive6Kinematics "
             f"only; this SwerveDriveKinematics has {n} modules")
-    cls = getattr(w.kinematics, f"SwerveDrive{n}Kinematics")
+    cls = w.cls(f"SwerveDrive{n}Kinematics")
     return cls(*(_translation_to(t, w) for t in k.getModules()))
 
 
-def _wheel_positions_to(name: str, fields: tuple[str, ...]) -> Callable[[Any, Any], Any]:
+def _swerve_from(k: Any) -> SwerveDriveKinematics:
+    return SwerveDriveKinematics([_translation_from(t)
+                                  for t in robotpy_attr(k, "get_modules", "getModules")()])
+
+
+def _wheels_from(cls: type, fields: tuple[tuple[str, str], ...]) -> Callable[[Any], Any]:
+    # fields: (robotpy 2027's name, robotpy 2026's = drivekin's) per wheel, in order.
+    return lambda v: cls(*(robotpy_attr(v, new, old) for new, old in fields))
+
+
+def _wheel_positions_to(name: str,
+                        fields: tuple[tuple[str, str], ...]) -> Callable[[Any, Any], Any]:
     def to(p: Any, w: Any) -> Any:
-        out = getattr(w.kinematics, name)()    # robotpy's takes no arguments
-        for f in fields:
-            setattr(out, f, getattr(p, f))
+        # Set on a default instance: robotpy 2026's takes no arguments.
+        out = w.cls(name)()
+        for new, old in fields:
+            setattr(out, new if hasattr(out, new) else old, getattr(p, old))
         return out
     return to
 
@@ -221,6 +261,11 @@ _POSE_FIELDS: tuple[Field, ...] = (("translation", 1, "ProtobufTranslation2d", F
 _POSE_SCHEMA = "Translation2d translation;Rotation2d rotation"
 _MECANUM = ("front_left", "front_right", "rear_left", "rear_right")
 _MECANUM_ATTRS = ("frontLeft", "frontRight", "rearLeft", "rearRight")
+# robotpy 2027's mecanum wheel fields are spelled as the wire form's, 2026's as drivekin's.
+_MECANUM_PEER = tuple(zip(_MECANUM, _MECANUM_ATTRS))
+_MECANUM_GETTERS = (("get_front_left", "getFrontLeft"), ("get_front_right", "getFrontRight"),
+                    ("get_rear_left", "getRearLeft"), ("get_rear_right", "getRearRight"))
+_DIFFERENTIAL_PEER = (("left", "left"), ("right", "right"))
 _R = Rotation2d
 _T = Translation2d
 
@@ -311,15 +356,17 @@ def _double_buffer() -> Any:
 def _motor_to(m: DCMotor, w: Any) -> Any:
     # The gearbox's constants as one motor; robotpy derives R, Kv and Kt with the same
     # operations, so they come out the same bits.
-    import importlib
-    plant = importlib.import_module("wpimath.system.plant")
-    return plant.DCMotor(m.nominalVoltage, m.stallTorque, m.stallCurrent, m.freeCurrent,
-                         m.freeSpeed, 1)
+    return w.cls("DCMotor")(m.nominalVoltage, m.stallTorque, m.stallCurrent, m.freeCurrent,
+                            m.freeSpeed, 1)
+
+
+_MOTOR_PEER = (("nominal_voltage", "nominalVoltage"), ("stall_torque", "stallTorque"),
+               ("stall_current", "stallCurrent"), ("free_current", "freeCurrent"),
+               ("free_speed", "freeSpeed"))
 
 
 def _motor_from(m: Any) -> DCMotor:
-    return DCMotor(m.nominalVoltage, m.stallTorque, m.stallCurrent, m.freeCurrent,
-                   m.freeSpeed)
+    return DCMotor(*(robotpy_attr(m, new, old) for new, old in _MOTOR_PEER))
 
 
 def _robot_config() -> Any:
@@ -336,9 +383,10 @@ def _setpoint() -> Any:
                                                       for k in range(5))))
 
 
-_NEW_2027 = "robotpy-wpimath 2026 has no {} (it is new in WPILib 2027)"
-_PATHPLANNER = "robotpy-wpimath 2026 has no {} (it is PathPlannerLib's)"
-_DRIVEKIN_ONLY = "robotpy-wpimath 2026 has no counterpart of {}"
+_NEW_2027 = ("robotpy-wpimath 2026 has no {} (it is new in WPILib 2027; drivekin.interop "
+             "converts the classes both robotpy generations have)")
+_PATHPLANNER = "robotpy-wpimath has no {} (it is PathPlannerLib's)"
+_DRIVEKIN_ONLY = "robotpy-wpimath has no counterpart of {}"
 
 # ---------------------------------------------------------------------------------------
 # The entries. Order within a drivetrain follows WPILib; nothing depends on it except
@@ -363,7 +411,7 @@ ENTRIES: tuple[Entry, ...] = (
           struct=Struct("Pose2d", _POSE_SCHEMA, 3, (Translation2d, Rotation2d)),
           proto=Proto("ProtobufPose2d", GEOMETRY2D_FILE, 2, _POSE_FIELDS),
           peer=Peer("geometry", ("Pose2d",),
-                    lambda p, w: w.geometry.Pose2d(p.x, p.y, _rotation_to(p.getRotation(), w)),
+                    lambda p, w: w.cls("Pose2d")(p.x, p.y, _rotation_to(p.getRotation(), w)),
                     lambda p: Pose2d(p.x, p.y, _rotation_from(p.rotation()))),
           example=_start),
     Entry(Transform2d, "value",
@@ -371,20 +419,21 @@ ENTRIES: tuple[Entry, ...] = (
           struct=Struct("Transform2d", _POSE_SCHEMA, 3, (Translation2d, Rotation2d)),
           proto=Proto("ProtobufTransform2d", GEOMETRY2D_FILE, 3, _POSE_FIELDS),
           peer=Peer("geometry", ("Transform2d",),
-                    lambda t, w: w.geometry.Transform2d(t.x, t.y,
-                                                        _rotation_to(t.getRotation(), w)),
+                    lambda t, w: w.cls("Transform2d")(t.x, t.y,
+                                                      _rotation_to(t.getRotation(), w)),
                     lambda t: Transform2d(t.x, t.y, _rotation_from(t.rotation()))),
           example=lambda: Transform2d(0.5, -1.0, _R(0.25))),
     _plain(Twist2d, GEOMETRY2D_FILE, 4, ("dx", "dy", "dtheta"),
            peer=Peer("geometry", ("Twist2d",),
-                     lambda t, w: w.geometry.Twist2d(t.dx, t.dy, t.dtheta),
+                     lambda t, w: w.cls("Twist2d")(t.dx, t.dy, t.dtheta),
                      lambda t: Twist2d(t.dx, t.dy, t.dtheta)),
            example=lambda: Twist2d(0.5, 0.25, 0.125)),
     # Chassis
     _plain(ChassisVelocities, KINEMATICS_FILE, 0, ("vx", "vy", "omega"),
            peer=Peer("kinematics", ("ChassisSpeeds",),
-                     lambda v, w: w.kinematics.ChassisSpeeds(v.vx, v.vy, v.omega),
-                     lambda v: ChassisVelocities(v.vx, v.vy, v.omega)),
+                     lambda v, w: w.cls("ChassisVelocities")(v.vx, v.vy, v.omega),
+                     lambda v: ChassisVelocities(v.vx, v.vy, v.omega),
+                     ("ChassisVelocities",)),
            example=lambda: ChassisVelocities(1.0, 0.5, 0.25)),
     _plain(ChassisAccelerations, KINEMATICS_FILE, 1, ("ax", "ay", "alpha"),
            no_peer=_NEW_2027, example=lambda: ChassisAccelerations(1.0, 0.5, 0.25)),
@@ -392,14 +441,16 @@ ENTRIES: tuple[Entry, ...] = (
     _module_value(SwerveModuleVelocity, "velocity", "ProtobufSwerveModuleVelocity",
                   "SwerveModuleVelocity", 12,
                   Peer("kinematics", ("SwerveModuleState",),
-                       lambda m, w: w.kinematics.SwerveModuleState(
+                       lambda m, w: w.cls("SwerveModuleVelocity")(
                            m.velocity, _rotation_to(m.angle, w)),
-                       lambda m: SwerveModuleVelocity(m.speed, _rotation_from(m.angle))),
+                       lambda m: SwerveModuleVelocity(robotpy_attr(m, "velocity", "speed"),
+                                                      _rotation_from(m.angle)),
+                       ("SwerveModuleVelocity",)),
                   None),
     _module_value(SwerveModulePosition, "distance", "ProtobufSwerveModulePosition",
                   "SwerveModulePosition", 11,
                   Peer("kinematics", ("SwerveModulePosition",),
-                       lambda m, w: w.kinematics.SwerveModulePosition(
+                       lambda m, w: w.cls("SwerveModulePosition")(
                            m.distance, _rotation_to(m.angle, w)),
                        lambda m: SwerveModulePosition(m.distance, _rotation_from(m.angle))),
                   None),
@@ -417,9 +468,7 @@ ENTRIES: tuple[Entry, ...] = (
                       (("modules", 1, "ProtobufTranslation2d", True),)),
           peer=Peer("kinematics", tuple(f"SwerveDrive{n}Kinematics"
                                         for n in SWERVE_MODULE_COUNTS),
-                    _swerve_to,
-                    lambda k: SwerveDriveKinematics([_translation_from(t)
-                                                     for t in k.getModules()])),
+                    _swerve_to, _swerve_from),
           example=_swerve),
     Entry(_dk.SwerveDriveOdometry, "odometry", "swerve",
           positions="struct:SwerveModulePosition[]",
@@ -434,16 +483,15 @@ ENTRIES: tuple[Entry, ...] = (
     _plain(MecanumDriveWheelVelocities, KINEMATICS_FILE, 8, _MECANUM_ATTRS, _MECANUM,
            drivetrain="mecanum",
            peer=Peer("kinematics", ("MecanumDriveWheelSpeeds",),
-                     lambda m, w: w.kinematics.MecanumDriveWheelSpeeds(
+                     lambda m, w: w.cls("MecanumDriveWheelVelocities")(
                          m.frontLeft, m.frontRight, m.rearLeft, m.rearRight),
-                     lambda m: MecanumDriveWheelVelocities(m.frontLeft, m.frontRight,
-                                                           m.rearLeft, m.rearRight))),
+                     _wheels_from(MecanumDriveWheelVelocities, _MECANUM_PEER),
+                     ("MecanumDriveWheelVelocities",))),
     _plain(MecanumDriveWheelPositions, KINEMATICS_FILE, 7, _MECANUM_ATTRS, _MECANUM,
            drivetrain="mecanum",
            peer=Peer("kinematics", ("MecanumDriveWheelPositions",),
-                     _wheel_positions_to("MecanumDriveWheelPositions", _MECANUM_ATTRS),
-                     lambda m: MecanumDriveWheelPositions(m.frontLeft, m.frontRight,
-                                                          m.rearLeft, m.rearRight))),
+                     _wheel_positions_to("MecanumDriveWheelPositions", _MECANUM_PEER),
+                     _wheels_from(MecanumDriveWheelPositions, _MECANUM_PEER))),
     _plain(MecanumDriveWheelAccelerations, KINEMATICS_FILE, 9, _MECANUM_ATTRS, _MECANUM,
            drivetrain="mecanum", no_peer=_NEW_2027),
     Entry(MecanumDriveKinematics, "kinematics", "mecanum",
@@ -457,16 +505,14 @@ ENTRIES: tuple[Entry, ...] = (
                       tuple((n, i, "ProtobufTranslation2d", False)
                             for i, n in enumerate(_MECANUM, 1))),
           peer=Peer("kinematics", ("MecanumDriveKinematics",),
-                    lambda k, w: w.kinematics.MecanumDriveKinematics(
+                    lambda k, w: w.cls("MecanumDriveKinematics")(
                         _translation_to(k.getFrontLeft(), w),
                         _translation_to(k.getFrontRight(), w),
                         _translation_to(k.getRearLeft(), w),
                         _translation_to(k.getRearRight(), w)),
-                    lambda k: MecanumDriveKinematics(
-                        _translation_from(k.getFrontLeft()),
-                        _translation_from(k.getFrontRight()),
-                        _translation_from(k.getRearLeft()),
-                        _translation_from(k.getRearRight()))),
+                    lambda k: MecanumDriveKinematics(*(
+                        _translation_from(robotpy_attr(k, new, old)())
+                        for new, old in _MECANUM_GETTERS))),
           example=_mecanum),
     Entry(_dk.MecanumDriveOdometry, "odometry", "mecanum",
           positions="struct:MecanumDriveWheelPositions",
@@ -482,13 +528,14 @@ ENTRIES: tuple[Entry, ...] = (
     _plain(DifferentialDriveWheelVelocities, KINEMATICS_FILE, 3, ("left", "right"),
            drivetrain="differential",
            peer=Peer("kinematics", ("DifferentialDriveWheelSpeeds",),
-                     lambda d, w: w.kinematics.DifferentialDriveWheelSpeeds(d.left, d.right),
-                     lambda d: DifferentialDriveWheelVelocities(d.left, d.right))),
+                     lambda d, w: w.cls("DifferentialDriveWheelVelocities")(d.left, d.right),
+                     lambda d: DifferentialDriveWheelVelocities(d.left, d.right),
+                     ("DifferentialDriveWheelVelocities",))),
     _plain(DifferentialDriveWheelPositions, KINEMATICS_FILE, 5, ("left", "right"),
            drivetrain="differential",
            peer=Peer("kinematics", ("DifferentialDriveWheelPositions",),
                      _wheel_positions_to("DifferentialDriveWheelPositions",
-                                         ("left", "right")),
+                                         _DIFFERENTIAL_PEER),
                      lambda d: DifferentialDriveWheelPositions(d.left, d.right))),
     _plain(DifferentialDriveWheelAccelerations, KINEMATICS_FILE, 4, ("left", "right"),
            drivetrain="differential", no_peer=_NEW_2027),
@@ -498,8 +545,9 @@ ENTRIES: tuple[Entry, ...] = (
           proto=Proto("ProtobufDifferentialDriveKinematics", KINEMATICS_FILE, 2,
                       _doubles("trackwidth")),
           peer=Peer("kinematics", ("DifferentialDriveKinematics",),
-                    lambda k, w: w.kinematics.DifferentialDriveKinematics(k.trackwidth),
-                    lambda k: DifferentialDriveKinematics(k.trackWidth)),
+                    lambda k, w: w.cls("DifferentialDriveKinematics")(k.trackwidth),
+                    lambda k: DifferentialDriveKinematics(
+                        robotpy_attr(k, "trackwidth", "trackWidth"))),
           example=lambda: DifferentialDriveKinematics(0.6)),
     Entry(_dk.DifferentialDriveOdometry, "odometry", "differential",
           positions="struct:DifferentialDriveWheelPositions",

@@ -47,31 +47,16 @@ def _robotpy_hint(obj: object, expected: type | None) -> str:
 
 def _robotpy_conversion(obj: object) -> tuple[str, type] | None:
     """The drivekin.interop function that converts ``obj`` and the drivekin class it
-    returns, or None: interop's own tables (the catalog's robotpy-wpimath peers and its
-    3-D flattenings), searched as interop searches them (the class, then its bases)."""
-    mro = type(obj).__mro__
-    if not any((getattr(k, "__module__", None) or "").startswith("wpimath.") for k in mro):
+    returns, or None: interop's own tables, searched as interop searches them."""
+    modules = ((getattr(k, "__module__", None) or "") for k in type(obj).__mro__)
+    if not any(m == "wpimath" or m.startswith("wpimath.") for m in modules):
         return None        # not robotpy's: never import anything on this error path
     try:
         from drivekin import interop
-        from drivekin._core import catalog
 
-        w = interop._load()
-        peers = {getattr(w.module(e.peer.module), n): e.cls
-                 for e in catalog.ENTRIES if e.peer is not None for n in e.peer.names
-                 if hasattr(w.module(e.peer.module), n)}
-        # fromWpimath3d's classes give the 2-D peer of the same name (Pose3d: Pose2d).
-        flat = {getattr(w.geometry, n): peers.get(getattr(w.geometry, n[:-2] + "2d", None))
-                for n, _ in interop._FLATTEN_3D if hasattr(w.geometry, n)}
+        return interop._conversion(obj)
     except Exception:      # robotpy-wpimath missing or broken: a message without a hint
         return None
-    for klass in mro:
-        if klass in peers:
-            return "fromWpimath", peers[klass]
-        flattened = flat.get(klass)
-        if flattened is not None:
-            return "fromWpimath3d", flattened
-    return None
 
 
 def wrong_type(obj: object, expected: type, name: str) -> TypeError:
