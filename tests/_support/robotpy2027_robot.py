@@ -1,11 +1,9 @@
 """A robot's drive code as a robotpy 2027 team writes it (the names of robotpy 2027's
 documentation: snake_case methods and keywords, SwerveDrive4Kinematics, properties
-``x``/``vx``/``velocity``), with one change: the import below. For robotpy 2027 it reads
+``x``/``vx``/``velocity``), with one change: the import below. For robotpy 2027, whose
+wpimath has every class at its top level (mostrobotpy 9caf4fe5), it reads
 
-    from wpimath.geometry import Pose2d, Rotation2d, Translation2d
-    from wpimath.kinematics import (ChassisVelocities, DifferentialDriveKinematics,
-        SwerveDrive4Kinematics, SwerveDrive4Odometry, SwerveModulePosition)
-    from wpimath.estimator import DifferentialDrivePoseEstimator, SwerveDrive4PoseEstimator
+    from wpimath import (ChassisVelocities, DifferentialDriveKinematics, ...)
 
 tests/integration/test_robotpy2027_loop.py runs it against the same loop in WPILib's Java
 names and against robotpy-wpimath 2026.
