@@ -166,8 +166,8 @@ def _chassis_accelerations_from_fps(ax: float = 0.0, ay: float = 0.0, alpha: flo
     """Return the acceleration ``ax`` forward and ``ay`` left given in ft/s² (in m/s²)
     and ``alpha`` in rad/s²."""
     where = "ChassisAccelerations.from_fps()"
-    return ChassisAccelerations(*_feet(where, "ft/s²", {"ax": ax, "ay": ay}),
-                                _real(alpha, where, "alpha in rad/s²"))
+    forward, left = _feet(where, "ft/s²", {"ax": ax, "ay": ay})
+    return ChassisAccelerations(forward, left, _real(alpha, where, "alpha in rad/s²"))
 
 
 def _swerve_module_acceleration_from_fps(acceleration: float = 0.0,
@@ -176,8 +176,8 @@ def _swerve_module_acceleration_from_fps(acceleration: float = 0.0,
     """Return the module acceleration ``acceleration`` given in ft/s² (in m/s²) at
     ``angle`` (a Rotation2d, rad as a float, or None for Rotation2d())."""
     where = "SwerveModuleAcceleration.from_fps()"
-    return SwerveModuleAcceleration(
-        *_feet(where, "ft/s²", {"acceleration": acceleration}), angle)
+    (magnitude,) = _feet(where, "ft/s²", {"acceleration": acceleration})
+    return SwerveModuleAcceleration(magnitude, angle)
 
 
 def _mecanum_accelerations_from_fps(front_left: float = 0.0, front_right: float = 0.0,
