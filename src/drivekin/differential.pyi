@@ -103,13 +103,18 @@ class DifferentialDriveWheelPositions(_Wheel2):
 class DifferentialDriveWheelAccelerations(_Wheel2):
     """DifferentialDriveWheelAccelerations(left=0.0, right=0.0)
 
-    Wheel accelerations of a differential drive, m/s². Mutable; ``==`` is identity.
+    Wheel accelerations of a differential drive, m/s². Mutable; ``==`` compares every wheel
+    exactly (WPILib C++'s and robotpy's ``==``; Java has no ``equals``), so instances are
+    unhashable.
     """
 
     def interpolate(
         self, endValue: DifferentialDriveWheelAccelerations, t: float
     ) -> DifferentialDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
+
+    def __eq__(self, other: object, /) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
 
     # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
     @staticmethod

@@ -128,7 +128,9 @@ cdef class DifferentialDriveWheelPositions(_Wheel2):
 cdef class DifferentialDriveWheelAccelerations(_Wheel2):
     """DifferentialDriveWheelAccelerations(left=0.0, right=0.0)
 
-    Wheel accelerations of a differential drive, m/s². Mutable; ``==`` is identity.
+    Wheel accelerations of a differential drive, m/s². Mutable; ``==`` compares every wheel
+    exactly (WPILib C++'s and robotpy's ``==``; Java has no ``equals``), so instances are
+    unhashable.
     """
 
     cdef _WheelValues _new(self):
@@ -138,6 +140,13 @@ cdef class DifferentialDriveWheelAccelerations(_Wheel2):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
         check_type(endValue, DifferentialDriveWheelAccelerations, "endValue")
         return self._lerp(<_WheelValues>endValue, clamp01(t))
+
+    def __eq__(self, other):
+        if type(other) is DifferentialDriveWheelAccelerations:
+            return self._equal(<_WheelValues>other)
+        return NotImplemented
+
+    __hash__ = None
 
     def __str__(self):
         return self._fmt(("Left", "Right"), "m/s²")

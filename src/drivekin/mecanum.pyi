@@ -151,13 +151,18 @@ class MecanumDriveWheelPositions(_Wheel4):
 class MecanumDriveWheelAccelerations(_Wheel4):
     """MecanumDriveWheelAccelerations(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
 
-    Wheel accelerations of a mecanum drive, m/s². Mutable; ``==`` is identity.
+    Wheel accelerations of a mecanum drive, m/s². Mutable; ``==`` compares every wheel
+    exactly (WPILib C++'s and robotpy's ``==``; Java has no ``equals``), so instances are
+    unhashable.
     """
 
     def interpolate(
         self, endValue: MecanumDriveWheelAccelerations, t: float
     ) -> MecanumDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
+
+    def __eq__(self, other: object, /) -> bool: ...
+    __hash__: ClassVar[None]  # type: ignore[assignment]
 
     # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
     @staticmethod

@@ -157,7 +157,9 @@ cdef class MecanumDriveWheelPositions(_Wheel4):
 cdef class MecanumDriveWheelAccelerations(_Wheel4):
     """MecanumDriveWheelAccelerations(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
 
-    Wheel accelerations of a mecanum drive, m/s². Mutable; ``==`` is identity.
+    Wheel accelerations of a mecanum drive, m/s². Mutable; ``==`` compares every wheel
+    exactly (WPILib C++'s and robotpy's ``==``; Java has no ``equals``), so instances are
+    unhashable.
     """
 
     cdef _WheelValues _new(self):
@@ -167,6 +169,13 @@ cdef class MecanumDriveWheelAccelerations(_Wheel4):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
         check_type(endValue, MecanumDriveWheelAccelerations, "endValue")
         return self._lerp(<_WheelValues>endValue, clamp01(t))
+
+    def __eq__(self, other):
+        if type(other) is MecanumDriveWheelAccelerations:
+            return self._equal(<_WheelValues>other)
+        return NotImplemented
+
+    __hash__ = None
 
     def __str__(self):
         return self._fmt(LABELS, "m/s²")

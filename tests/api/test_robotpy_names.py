@@ -77,7 +77,8 @@ def test_every_robotpy_2027_name_resolves_with_robotpy_kind(name):
         if kind == "static" and getattr(robotpy_cls, py) is not getattr(base, py):
             errors.append(f"{name}.{py}: not reachable through {name}")
     for op in spec["operators"]:
-        if getattr(base, op, None) is None:
+        # Defined by drivekin (object's __eq__ is identity, not robotpy's value equality).
+        if not any(op in vars(k) and vars(k)[op] is not None for k in base.__mro__[:-1]):
             errors.append(f"{name}: no {op}")
     assert not errors, "\n".join(errors)
 

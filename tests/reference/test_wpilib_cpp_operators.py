@@ -1,5 +1,6 @@
 """WPILib C++'s operators that robotpy 2027 binds and Java lacks (Twist2d ``*``,
-SwerveModuleAcceleration ``+ - * /`` and unary ``-``), against the C++ definitions
+SwerveModuleAcceleration ``+ - * /`` and unary ``-``, the wheel accelerations' defaulted
+``==``), against the C++ definitions
 (allwpilib wpimath/src/main/native/include/wpi/math/kinematics/SwerveModuleAcceleration.hpp
 and geometry/Twist2d.hpp) written out here with math's functions."""
 from __future__ import annotations
@@ -9,7 +10,8 @@ import math
 import pytest
 from hypothesis import given, strategies as st
 
-from drivekin import Rotation2d, SwerveModuleAcceleration, Twist2d
+from drivekin import (DifferentialDriveWheelAccelerations, MecanumDriveWheelAccelerations,
+                      Rotation2d, SwerveModuleAcceleration, Twist2d)
 
 finite = st.floats(-1e3, 1e3, allow_nan=False)
 angles = st.floats(-10.0, 10.0, allow_nan=False)
@@ -76,3 +78,21 @@ def test_operands_of_other_types_are_refused():
             a + bad
         with pytest.raises(TypeError):
             Twist2d() * bad
+
+
+@pytest.mark.parametrize("cls, n", [(MecanumDriveWheelAccelerations, 4),
+                                    (DifferentialDriveWheelAccelerations, 2)])
+def test_wheel_accelerations_compare_every_wheel_exactly(cls, n):
+    # C++ ``operator==(...) const = default``: field by field, IEEE equality.
+    values = [1.5, -2.0, 0.25, 3.0][:n]
+    assert cls(*values) == cls(*values)
+    assert cls(*values) is not cls(*values)
+    assert cls(*([0.0] * n)) == cls(*([-0.0] * n))
+    for i in range(n):
+        other = list(values)
+        other[i] = math.nextafter(other[i], math.inf)
+        assert cls(*values) != cls(*other)
+    nan = [math.nan] * n
+    assert cls(*nan) != cls(*nan)
+    with pytest.raises(TypeError):
+        hash(cls(*values))

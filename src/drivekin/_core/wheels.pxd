@@ -6,6 +6,7 @@ cdef class _WheelValues:
     cdef _WheelValues _check(self, object other)
     cdef _WheelValues _lerp(self, _WheelValues end, double t)
     cdef bint _close(self, _WheelValues o) noexcept
+    cdef bint _equal(self, _WheelValues o) noexcept
     cdef str _fmt(self, tuple labels, str unit)
 
 cdef int install_bare_new(tuple classes, Py_ssize_t count) except -1

@@ -34,6 +34,14 @@ cdef class _WheelValues:
                 return False
         return True
 
+    cdef bint _equal(self, _WheelValues o) noexcept:
+        # WPILib C++'s defaulted operator== (robotpy's ==): every wheel exactly equal.
+        cdef Py_ssize_t i
+        for i in range(self.k):
+            if not self.w[i] == o.w[i]:
+                return False
+        return True
+
     cdef str _fmt(self, tuple labels, str unit):
         fields = ", ".join(f"{lab}: {f2(self.w[i])} {unit}" for i, lab in enumerate(labels))
         return f"{type(self).__name__}({fields})"

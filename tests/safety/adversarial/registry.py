@@ -547,10 +547,10 @@ API = {
           "fromFeet": S(NUM, NUM, NUM, NUM)},
     MWP: _wheels(MWP, ("frontLeft", "frontRight", "rearLeft", "rearRight"), copy=True,
                  eq=True),
-    MWA: _wheels(MWA, ("frontLeft", "frontRight", "rearLeft", "rearRight")),
+    MWA: _wheels(MWA, ("frontLeft", "frontRight", "rearLeft", "rearRight"), eq=True),
     DWV: {**_wheels(DWV, ("left", "right"), desat=True), "fromFeet": S(NUM, NUM)},
     DWP: _wheels(DWP, ("left", "right"), copy=True, eq=True),
-    DWA: _wheels(DWA, ("left", "right")),
+    DWA: _wheels(DWA, ("left", "right"), eq=True),
     SwerveDriveKinematics: {
         "__init__": [S(Seq(T, n=None, least=2)), S(*[Obj(T)] * N)], "__reduce__": S(),
         "__setstate__": S(State(lambda: tuple(R(0.1 * i) for i in range(N)))),
