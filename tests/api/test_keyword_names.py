@@ -55,7 +55,7 @@ def snake(name: str) -> str:
 _TYPES_DECIDE = ("one signature whose argument types pick the form; a keyword-only "
                  "parameter per extra name would cost every positional construction "
                  "(measured: about +60 instructions on Translation2d(1.0, 2.0), +25 on "
-                 "Rotation2d(0.5), 5-7 % of the call)")
+                 "Rotation2d(0.5): 3-7 % of the call)")
 _METH_O = ("a METH_O method (the one-argument fast call): its argument is positional "
            "only")
 NOT_KEYWORD_CALLABLE = {
