@@ -695,7 +695,7 @@ def values_agree(ref, got, tol=1e-9) -> bool:
 # inputs where they apply (one step's distances, gyro1). Three wheels: Road Runner's
 # standard layout (parallel wheels at y = ±7.1 in, perpendicular at x = −3.75 in).
 
-_RR_LAYOUT = (-7.1, 7.1, -3.75, 1.0)        # fromRoadRunner(par0Y, par1Y, perpX, inPerTick)
+_RR_LAYOUT = (-7.1, 7.1, -3.75, 1.0)        # fromRoadRunner(par0_y, par1_y, perp_x, in_per_tick)
 _DW_READINGS = [0.0121, 0.0183, 0.0027]     # m, one step's distances (par0, par1, perp)
 
 

@@ -320,7 +320,7 @@ ERRORS = [
         DW_POSES[:2] + [Pose2d(float("nan"), 0.0, angle)]), ValueError),
     ("DeadWheelKinematics(None element)", lambda: DeadWheelKinematics(
         DW_POSES[:2] + [None]), TypeError),
-    ("fromRoadRunner(inPerTick 0)", lambda: DeadWheelKinematics.fromRoadRunner(
+    ("fromRoadRunner(in_per_tick 0)", lambda: DeadWheelKinematics.fromRoadRunner(
         -962.0, 912.0, -500.0, 0.0), ValueError),
     ("deadwheel re-init", lambda: deadwheel.__init__(DW_POSES), TypeError),
     ("uninitialised deadwheel", lambda: DeadWheelKinematics.__new__(
@@ -347,7 +347,7 @@ from drivekin import (  # noqa: E402
     DifferentialSwerveMotorVelocities,
 )
 
-dsk = DifferentialSwerveModuleKinematics(3.0, 5.0, 0.05, motor2Inverted=True)
+dsk = DifferentialSwerveModuleKinematics(3.0, 5.0, 0.05, motor2_inverted=True)
 dsk.resetModulePosition(angle, 12.0, -7.0)
 ds_motors, ds_module, ds_pos = (DifferentialSwerveMotorVelocities(),
                                 DifferentialSwerveModuleVelocities(), SwerveModulePosition())
@@ -382,7 +382,7 @@ OPERATIONS += [
     ("diffswerve desaturateModuleVelocitiesInPlace 40 modules", lambda: dsk
         .desaturateModuleVelocitiesInPlace(many_states, many_rates, 1e6)),
     ("DifferentialSwerveModuleKinematics()", lambda: DifferentialSwerveModuleKinematics(
-        3.0, 5.0, 0.05, motor2Inverted=True)),
+        3.0, 5.0, 0.05, motor2_inverted=True)),
     ("copy.copy(diffswerve kinematics)", lambda: copy.copy(dsk)),
 ]
 

@@ -26,20 +26,20 @@ __all__ = ["ChassisAccelerations", "ChassisVelocities"]
 class _ChassisVector:
     """Shared arithmetic of ChassisVelocities and ChassisAccelerations (x, y, angular)."""
 
-    def toRobotRelative(self, robotAngle: Rotation2d) -> Self:
+    def toRobotRelative(self, robot_angle: Rotation2d) -> Self:
         """Convert field-relative values to robot-relative ones.
 
-        ``robotAngle`` is the robot heading on the field; x and y are rotated by
-        −robotAngle, the angular component is unchanged."""
+        ``robot_angle`` is the robot heading on the field; x and y are rotated by
+        −robot_angle, the angular component is unchanged."""
 
-    def toFieldRelative(self, robotAngle: Rotation2d) -> Self:
-        """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
+    def toFieldRelative(self, robot_angle: Rotation2d) -> Self:
+        """Convert robot-relative values to field-relative ones (rotate by robot_angle)."""
 
-    def toRobotRelativeInto(self, robotAngle: Rotation2d, out: Self) -> None:
+    def toRobotRelativeInto(self, robot_angle: Rotation2d, out: Self) -> None:
         """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
 
-    def toFieldRelativeInto(self, robotAngle: Rotation2d, out: Self) -> None:
+    def toFieldRelativeInto(self, robot_angle: Rotation2d, out: Self) -> None:
         """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
 
@@ -58,9 +58,9 @@ class _ChassisVector:
     def div(self, scalar: float) -> Self:
         """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
 
-    def interpolate(self, endValue: Self, t: float) -> Self:
+    def interpolate(self, end_value: Self, t: float) -> Self:
         """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
-        ``endValue`` (the objects themselves, as WPILib does)."""
+        ``end_value`` (the objects themselves, as WPILib does)."""
 
     def __add__(self, other: Self, /) -> Self: ...
     def __sub__(self, other: Self, /) -> Self: ...

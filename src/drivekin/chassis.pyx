@@ -32,39 +32,39 @@ cdef class _ChassisVector:
         out.v.y = t.y
         out.v.z = self.v.z
 
-    def toRobotRelative(self, robotAngle: Rotation2d):
+    def toRobotRelative(self, robot_angle: Rotation2d):
         """Convert field-relative values to robot-relative ones.
 
-        ``robotAngle`` is the robot heading on the field; x and y are rotated by
-        −robotAngle, the angular component is unchanged."""
-        check_type(robotAngle, Rotation2d, "robotAngle")
+        ``robot_angle`` is the robot heading on the field; x and y are rotated by
+        −robot_angle, the angular component is unchanged."""
+        check_type(robot_angle, Rotation2d, "robot_angle")
         out = self._new(0.0, 0.0, 0.0)
-        self._rotated_into(rot_neg((<Rotation2d>robotAngle).r), out)
+        self._rotated_into(rot_neg((<Rotation2d>robot_angle).r), out)
         return out
 
-    def toFieldRelative(self, robotAngle: Rotation2d):
-        """Convert robot-relative values to field-relative ones (rotate by robotAngle)."""
-        check_type(robotAngle, Rotation2d, "robotAngle")
+    def toFieldRelative(self, robot_angle: Rotation2d):
+        """Convert robot-relative values to field-relative ones (rotate by robot_angle)."""
+        check_type(robot_angle, Rotation2d, "robot_angle")
         out = self._new(0.0, 0.0, 0.0)
-        self._rotated_into((<Rotation2d>robotAngle).r, out)
+        self._rotated_into((<Rotation2d>robot_angle).r, out)
         return out
 
-    # A parameter annotated with the shared base (out, other, endValue) must be of this
+    # A parameter annotated with the shared base (out, other, end_value) must be of this
     # object's own class: check_type against type(self).
 
-    def toRobotRelativeInto(self, robotAngle: Rotation2d, out: _ChassisVector):
+    def toRobotRelativeInto(self, robot_angle: Rotation2d, out: _ChassisVector):
         """Allocation-free :meth:`toRobotRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
-        check_type(robotAngle, Rotation2d, "robotAngle")
+        check_type(robot_angle, Rotation2d, "robot_angle")
         check_type(out, type(self), "out")
-        self._rotated_into(rot_neg((<Rotation2d>robotAngle).r), <_ChassisVector>out)
+        self._rotated_into(rot_neg((<Rotation2d>robot_angle).r), <_ChassisVector>out)
 
-    def toFieldRelativeInto(self, robotAngle: Rotation2d, out: _ChassisVector):
+    def toFieldRelativeInto(self, robot_angle: Rotation2d, out: _ChassisVector):
         """Allocation-free :meth:`toFieldRelative`: write the result into ``out`` (of the
         same class; may be ``self``)."""
-        check_type(robotAngle, Rotation2d, "robotAngle")
+        check_type(robot_angle, Rotation2d, "robot_angle")
         check_type(out, type(self), "out")
-        self._rotated_into((<Rotation2d>robotAngle).r, <_ChassisVector>out)
+        self._rotated_into((<Rotation2d>robot_angle).r, <_ChassisVector>out)
 
     def plus(self, other: _ChassisVector):
         """Return the component-wise sum."""
@@ -90,15 +90,15 @@ cdef class _ChassisVector:
         """Return every component divided by ``scalar`` (no zero guard, as in WPILib)."""
         return self._new(self.v.x / scalar, self.v.y / scalar, self.v.z / scalar)
 
-    def interpolate(self, endValue: _ChassisVector, double t):
+    def interpolate(self, end_value: _ChassisVector, double t):
         """Linear interpolation; ``t <= 0`` returns ``self`` and ``t >= 1`` returns
-        ``endValue`` (the objects themselves, as WPILib does)."""
-        check_type(endValue, type(self), "endValue")
+        ``end_value`` (the objects themselves, as WPILib does)."""
+        check_type(end_value, type(self), "end_value")
         if t <= 0.0:
             return self
         if t >= 1.0:
-            return endValue
-        cdef vec3_t e = (<_ChassisVector>endValue).v
+            return end_value
+        cdef vec3_t e = (<_ChassisVector>end_value).v
         return self._new(self.v.x + t * (e.x - self.v.x),
                          self.v.y + t * (e.y - self.v.y),
                          self.v.z + t * (e.z - self.v.z))
@@ -150,8 +150,8 @@ cdef int check_discretize_fits(vec3_t v, double dt) except -1:
     d = chassis_discretize(v.x, v.y, v.z, dt)
     if isfinite(d.x) and isfinite(d.y) and isfinite(d.z):
         return 0
-    raise ValueError(f"chassisVelocities ({v.x!r}, {v.y!r}, {v.z!r}) discretized over dt = "
-                     f"{dt!r} s exceed the largest double ({d.x!r}, {d.y!r}, {d.z!r}); "
+    raise ValueError(f"the chassis velocities ({v.x!r}, {v.y!r}, {v.z!r}) discretized over "
+                     f"dt = {dt!r} s exceed the largest double ({d.x!r}, {d.y!r}, {d.z!r}); "
                      "scale them down")
 
 

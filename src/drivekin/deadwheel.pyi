@@ -37,13 +37,13 @@ _WheelReadings = Sequence[float] | npt.NDArray[np.float64]
 
 @final
 class DeadWheelKinematics(Drivetrain):
-    """DeadWheelKinematics(wheelPoses)
+    """DeadWheelKinematics(wheel_poses)
 
     Kinematics of N ≥ 2 dead (tracking) wheels. Each wheel is a Pose2d in the robot
     frame: its translation is the contact point (m), its rotation the direction in which
     the wheel's reading grows (0 for a wheel that reads forward motion, +90° for one that
     reads leftward motion). Wheel values are passed everywhere as a list or tuple of
-    floats, or a 1-D float64 array, in the order of ``wheelPoses``.
+    floats, or a 1-D float64 array, in the order of ``wheel_poses``.
 
     The layout must observe (dx, dy) — at least two non-parallel wheels — or ValueError
     names the direction it cannot see. Without a gyro it must also observe rotation (at
@@ -51,24 +51,24 @@ class DeadWheelKinematics(Drivetrain):
     is valid, but every call must then pass the gyro (see :meth:`requiresGyro`).
     """
 
-    def __init__(self, wheelPoses: Sequence[Pose2d]) -> None: ...
+    def __init__(self, wheel_poses: Sequence[Pose2d]) -> None: ...
     @staticmethod
     def fromRoadRunner(
-        par0YTicks: float, par1YTicks: float, perpXTicks: float, inPerTick: float
+        par0_y_ticks: float, par1_y_ticks: float, perp_x_ticks: float, in_per_tick: float
     ) -> DeadWheelKinematics:
         """Three wheels from Road Runner 1.0's ``ThreeDeadWheelLocalizer`` parameters
-        (paste the tuned numbers as they are): the two parallel wheels' ``parYTicks`` and
-        the perpendicular wheel's ``perpXTicks`` (ticks), and ``inPerTick`` (inches per
+        (paste the tuned numbers as they are): the two parallel wheels' ``par_y_ticks`` and
+        the perpendicular wheel's ``perp_x_ticks`` (ticks), and ``in_per_tick`` (inches per
         tick). Wheels are in the order (par0, par1, perp).
 
-        Road Runner's model is par = dx + parYTicks·dθ, so ``parYTicks`` is the *negative*
+        Road Runner's model is par = dx + par_y_ticks·dθ, so ``par_y_ticks`` is the *negative*
         of the wheel's physical y (its tuner reports a left wheel as negative); this
-        factory applies that sign. Feed readings in metres: ticks × inPerTick × 0.0254.
+        factory applies that sign. Feed readings in metres: ticks × in_per_tick × 0.0254.
         The twist is then Road Runner's, with dx and dy in metres instead of inches."""
 
     @staticmethod
     def fromRoadRunnerTwoWheel(
-        parYTicks: float, perpXTicks: float, inPerTick: float
+        par_y_ticks: float, perp_x_ticks: float, in_per_tick: float
     ) -> DeadWheelKinematics:
         """Two wheels (par, perp) from Road Runner 1.0's ``TwoDeadWheelLocalizer``
         parameters (ticks, and inches per tick), used with the IMU as the gyro. Same
@@ -82,41 +82,44 @@ class DeadWheelKinematics(Drivetrain):
         all wheel lines meeting in one point): every call must then pass the gyro."""
 
     def toChassisVelocities(
-        self, wheelVelocities: _WheelReadings, gyroRate: float | None = None
+        self, wheel_velocities: _WheelReadings, gyro_rate: float | None = None
     ) -> ChassisVelocities:
         """Return the robot velocity (m/s, m/s, rad/s) from the wheels' surface velocities
-        (m/s). With ``gyroRate`` (rad/s) omega is the gyro's and (vx, vy) the wheels'
+        (m/s). With ``gyro_rate`` (rad/s) omega is the gyro's and (vx, vy) the wheels'
         least-squares fit; without, all three come from the wheels."""
 
     def toChassisVelocitiesInto(
-        self, wheelVelocities: _WheelReadings, out: ChassisVelocities, gyroRate: float | None = None
+        self,
+        wheel_velocities: _WheelReadings,
+        out: ChassisVelocities,
+        gyro_rate: float | None = None,
     ) -> None:
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
 
-    def toWheelVelocities(self, chassisVelocities: ChassisVelocities) -> tuple[float, ...]:
+    def toWheelVelocities(self, chassis_velocities: ChassisVelocities) -> tuple[float, ...]:
         """Return each wheel's surface velocity (tuple of floats, m/s) for a robot
         velocity."""
 
     def toWheelVelocitiesInto(
-        self, chassisVelocities: ChassisVelocities, out: npt.NDArray[np.float64]
+        self, chassis_velocities: ChassisVelocities, out: npt.NDArray[np.float64]
     ) -> None:
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``, a writeable
         float64 array of shape (N,) (any stride). Returns None."""
 
-    def toTwist2d(self, wheelDeltas: _WheelReadings, gyroDelta: float | None = None) -> Twist2d:
+    def toTwist2d(self, wheel_deltas: _WheelReadings, gyro_delta: float | None = None) -> Twist2d:
         """Return the Twist2d (m, rad) for the wheel distance changes (m). With
-        ``gyroDelta`` (rad, the heading change; wrap it to (−π, π] yourself) dθ is the
+        ``gyro_delta`` (rad, the heading change; wrap it to (−π, π] yourself) dθ is the
         gyro's and (dx, dy) the wheels' least-squares fit."""
 
     def toChassisAccelerations(
-        self, wheelAccelerations: _WheelReadings, angularAcceleration: float | None = None
+        self, wheel_accelerations: _WheelReadings, angular_acceleration: float | None = None
     ) -> ChassisAccelerations:
         """Return the robot acceleration (m/s², m/s², rad/s²) from the wheels' surface
         accelerations (m/s²): the velocity map applied to accelerations (no centripetal
-        term). With ``angularAcceleration`` (rad/s²) alpha is fixed to it."""
+        term). With ``angular_acceleration`` (rad/s²) alpha is fixed to it."""
 
     def toWheelAccelerations(
-        self, chassisAccelerations: ChassisAccelerations
+        self, chassis_accelerations: ChassisAccelerations
     ) -> tuple[float, ...]:
         """Return each wheel's surface acceleration (tuple of floats, m/s²)."""
 

@@ -72,13 +72,13 @@ cdef inline void readings(Py_ssize_t w, const double* rows, const double* x,
 
 
 cdef class DeadWheelKinematics(Drivetrain):
-    """DeadWheelKinematics(wheelPoses)
+    """DeadWheelKinematics(wheel_poses)
 
     Kinematics of N ≥ 2 dead (tracking) wheels. Each wheel is a Pose2d in the robot
     frame: its translation is the contact point (m), its rotation the direction in which
     the wheel's reading grows (0 for a wheel that reads forward motion, +90° for one that
     reads leftward motion). Wheel values are passed everywhere as a list or tuple of
-    floats, or a 1-D float64 array, in the order of ``wheelPoses``.
+    floats, or a 1-D float64 array, in the order of ``wheel_poses``.
 
     The layout must observe (dx, dy) — at least two non-parallel wheels — or ValueError
     names the direction it cannot see. Without a gyro it must also observe rotation (at
@@ -95,10 +95,10 @@ cdef class DeadWheelKinematics(Drivetrain):
                             "be called again")
         return 0
 
-    def __init__(self, wheelPoses):
+    def __init__(self, wheel_poses):
         self._refuse_reinit()
-        poses = snapshot(wheelPoses, "DeadWheelKinematics() takes a sequence of Pose2d "
-                                     "wheel poses; wheelPoses")
+        poses = snapshot(wheel_poses, "DeadWheelKinematics() takes a sequence of Pose2d "
+                                     "wheel poses; wheel_poses")
         cdef Py_ssize_t n = len(poses), i, k
         if n < 2:
             raise ValueError(f"dead-wheel kinematics needs at least 2 wheels, got {n}")
@@ -279,33 +279,33 @@ cdef class DeadWheelKinematics(Drivetrain):
     # -- construction from Road Runner 1.0's tuned parameters ---------------------------
 
     @staticmethod
-    def fromRoadRunner(double par0YTicks, double par1YTicks, double perpXTicks,
-                       double inPerTick):
+    def fromRoadRunner(double par0_y_ticks, double par1_y_ticks, double perp_x_ticks,
+                       double in_per_tick):
         """Three wheels from Road Runner 1.0's ``ThreeDeadWheelLocalizer`` parameters
-        (paste the tuned numbers as they are): the two parallel wheels' ``parYTicks`` and
-        the perpendicular wheel's ``perpXTicks`` (ticks), and ``inPerTick`` (inches per
+        (paste the tuned numbers as they are): the two parallel wheels' ``par_y_ticks`` and
+        the perpendicular wheel's ``perp_x_ticks`` (ticks), and ``in_per_tick`` (inches per
         tick). Wheels are in the order (par0, par1, perp).
 
-        Road Runner's model is par = dx + parYTicks·dθ, so ``parYTicks`` is the *negative*
+        Road Runner's model is par = dx + par_y_ticks·dθ, so ``par_y_ticks`` is the *negative*
         of the wheel's physical y (its tuner reports a left wheel as negative); this
-        factory applies that sign. Feed readings in metres: ticks × inPerTick × 0.0254.
+        factory applies that sign. Feed readings in metres: ticks × in_per_tick × 0.0254.
         The twist is then Road Runner's, with dx and dy in metres instead of inches."""
-        cdef double k = inPerTick * IN_TO_M
-        _check_ticks(inPerTick, par0YTicks=par0YTicks, par1YTicks=par1YTicks,
-                     perpXTicks=perpXTicks)
-        return DeadWheelKinematics((Pose2d(0.0, -par0YTicks * k, Rotation2d()),
-                                    Pose2d(0.0, -par1YTicks * k, Rotation2d()),
-                                    Pose2d(perpXTicks * k, 0.0, Rotation2d(0.0, 1.0))))
+        cdef double k = in_per_tick * IN_TO_M
+        _check_ticks(in_per_tick, par0_y_ticks=par0_y_ticks, par1_y_ticks=par1_y_ticks,
+                     perp_x_ticks=perp_x_ticks)
+        return DeadWheelKinematics((Pose2d(0.0, -par0_y_ticks * k, Rotation2d()),
+                                    Pose2d(0.0, -par1_y_ticks * k, Rotation2d()),
+                                    Pose2d(perp_x_ticks * k, 0.0, Rotation2d(0.0, 1.0))))
 
     @staticmethod
-    def fromRoadRunnerTwoWheel(double parYTicks, double perpXTicks, double inPerTick):
+    def fromRoadRunnerTwoWheel(double par_y_ticks, double perp_x_ticks, double in_per_tick):
         """Two wheels (par, perp) from Road Runner 1.0's ``TwoDeadWheelLocalizer``
         parameters (ticks, and inches per tick), used with the IMU as the gyro. Same
         sign convention and units as :meth:`fromRoadRunner`."""
-        cdef double k = inPerTick * IN_TO_M
-        _check_ticks(inPerTick, parYTicks=parYTicks, perpXTicks=perpXTicks)
-        return DeadWheelKinematics((Pose2d(0.0, -parYTicks * k, Rotation2d()),
-                                    Pose2d(perpXTicks * k, 0.0, Rotation2d(0.0, 1.0))))
+        cdef double k = in_per_tick * IN_TO_M
+        _check_ticks(in_per_tick, par_y_ticks=par_y_ticks, perp_x_ticks=perp_x_ticks)
+        return DeadWheelKinematics((Pose2d(0.0, -par_y_ticks * k, Rotation2d()),
+                                    Pose2d(perp_x_ticks * k, 0.0, Rotation2d(0.0, 1.0))))
 
     # -- queries --------------------------------------------------------------------------
 
@@ -331,66 +331,68 @@ cdef class DeadWheelKinematics(Drivetrain):
 
     # -- forward and inverse maps ------------------------------------------------------
 
-    def toChassisVelocities(self, wheelVelocities, gyroRate=None):
+    def toChassisVelocities(self, wheel_velocities, gyro_rate=None):
         """Return the robot velocity (m/s, m/s, rad/s) from the wheels' surface velocities
-        (m/s). With ``gyroRate`` (rad/s) omega is the gyro's and (vx, vy) the wheels'
+        (m/s). With ``gyro_rate`` (rad/s) omega is the gyro's and (vx, vy) the wheels'
         least-squares fit; without, all three come from the wheels."""
         cdef double r[3]
-        self._forward(wheelVelocities, gyroRate, "wheelVelocities", "toChassisVelocities", r)
+        self._forward(wheel_velocities, gyro_rate, "wheel_velocities", "toChassisVelocities",
+                      r)
         return new_chassis_velocities(r[0], r[1], r[2])
 
-    def toChassisVelocitiesInto(self, wheelVelocities, out: ChassisVelocities,
-                                gyroRate=None):
+    def toChassisVelocitiesInto(self, wheel_velocities, out: ChassisVelocities,
+                                gyro_rate=None):
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
         cdef double r[3]
         check_type(out, ChassisVelocities, "out")
-        self._forward(wheelVelocities, gyroRate, "wheelVelocities", "toChassisVelocitiesInto", r)
+        self._forward(wheel_velocities, gyro_rate, "wheel_velocities",
+                      "toChassisVelocitiesInto", r)
         (<ChassisVelocities>out).v.x = r[0]
         (<ChassisVelocities>out).v.y = r[1]
         (<ChassisVelocities>out).v.z = r[2]
 
-    def toWheelVelocities(self, chassisVelocities: ChassisVelocities):
+    def toWheelVelocities(self, chassis_velocities: ChassisVelocities):
         """Return each wheel's surface velocity (tuple of floats, m/s) for a robot
         velocity."""
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
         self._ready()
-        return self._inverse(<ChassisVelocities>chassisVelocities)
+        return self._inverse(<ChassisVelocities>chassis_velocities)
 
-    def toWheelVelocitiesInto(self, chassisVelocities: ChassisVelocities, out):
+    def toWheelVelocitiesInto(self, chassis_velocities: ChassisVelocities, out):
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``, a writeable
         float64 array of shape (N,) (any stride). Returns None."""
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
         self._ready()
-        self._inverse_into(<ChassisVelocities>chassisVelocities, out, "out")
+        self._inverse_into(<ChassisVelocities>chassis_velocities, out, "out")
 
-    def toTwist2d(self, wheelDeltas, gyroDelta=None):
+    def toTwist2d(self, wheel_deltas, gyro_delta=None):
         """Return the Twist2d (m, rad) for the wheel distance changes (m). With
-        ``gyroDelta`` (rad, the heading change; wrap it to (−π, π] yourself) dθ is the
+        ``gyro_delta`` (rad, the heading change; wrap it to (−π, π] yourself) dθ is the
         gyro's and (dx, dy) the wheels' least-squares fit."""
         cdef double r[3]
-        self._forward(wheelDeltas, gyroDelta, "wheelDeltas", "toTwist2d", r)
+        self._forward(wheel_deltas, gyro_delta, "wheel_deltas", "toTwist2d", r)
         return new_twist(r[0], r[1], r[2])
 
-    def toChassisAccelerations(self, wheelAccelerations, angularAcceleration=None):
+    def toChassisAccelerations(self, wheel_accelerations, angular_acceleration=None):
         """Return the robot acceleration (m/s², m/s², rad/s²) from the wheels' surface
         accelerations (m/s²): the velocity map applied to accelerations (no centripetal
-        term). With ``angularAcceleration`` (rad/s²) alpha is fixed to it."""
+        term). With ``angular_acceleration`` (rad/s²) alpha is fixed to it."""
         cdef double r[3]
-        self._forward(wheelAccelerations, angularAcceleration, "wheelAccelerations",
+        self._forward(wheel_accelerations, angular_acceleration, "wheel_accelerations",
                       "toChassisAccelerations", r)
         return ChassisAccelerations(r[0], r[1], r[2])
 
-    def toWheelAccelerations(self, chassisAccelerations: ChassisAccelerations):
+    def toWheelAccelerations(self, chassis_accelerations: ChassisAccelerations):
         """Return each wheel's surface acceleration (tuple of floats, m/s²)."""
-        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
+        check_type(chassis_accelerations, ChassisAccelerations, "chassis_accelerations")
         self._ready()
-        return self._inverse(<ChassisAccelerations>chassisAccelerations)
+        return self._inverse(<ChassisAccelerations>chassis_accelerations)
 
 
-def _check_ticks(double inPerTick, **ticks):
-    if not (isfinite(inPerTick) and inPerTick > 0.0):
-        raise ValueError(f"inPerTick must be a positive finite number of inches per tick, "
-                         f"got {inPerTick!r}")
+def _check_ticks(double in_per_tick, **ticks):
+    if not (isfinite(in_per_tick) and in_per_tick > 0.0):
+        raise ValueError(f"in_per_tick must be a positive finite number of inches per tick, "
+                         f"got {in_per_tick!r}")
     for name, value in ticks.items():
         if not isfinite(value):
             raise ValueError(f"{name} must be finite (ticks), got {value!r}")

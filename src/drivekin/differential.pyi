@@ -51,15 +51,15 @@ class DifferentialDriveWheelVelocities(_Wheel2):
     def fromFeet(left: float, right: float) -> DifferentialDriveWheelVelocities:
         """Return the wheel velocities given in ft/s, in m/s (the same bits as
         robotpy-wpimath's ``DifferentialDriveWheelSpeeds.fromFeet``)."""
-    def desaturate(self, attainableMaxSpeed: float, /) -> DifferentialDriveWheelVelocities:
-        """Return new velocities scaled so neither wheel exceeds ``attainableMaxSpeed``
+    def desaturate(self, attainable_max_velocity: float, /) -> DifferentialDriveWheelVelocities:
+        """Return new velocities scaled so neither wheel exceeds ``attainable_max_velocity``
         (m/s), keeping their ratio; unchanged copy if already within it (2027)."""
 
-    def desaturateInPlace(self, attainableMaxSpeed: float, /) -> None:
+    def desaturateInPlace(self, attainable_max_velocity: float, /) -> None:
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
 
     def interpolate(
-        self, endValue: DifferentialDriveWheelVelocities, t: float
+        self, end_value: DifferentialDriveWheelVelocities, t: float
     ) -> DifferentialDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
@@ -92,7 +92,7 @@ class DifferentialDriveWheelPositions(_Wheel2):
         """Return an independent copy."""
 
     def interpolate(
-        self, endValue: DifferentialDriveWheelPositions, t: float
+        self, end_value: DifferentialDriveWheelPositions, t: float
     ) -> DifferentialDriveWheelPositions:
         """Linear interpolation; ``t`` is not clamped."""
 
@@ -109,7 +109,7 @@ class DifferentialDriveWheelAccelerations(_Wheel2):
     """
 
     def interpolate(
-        self, endValue: DifferentialDriveWheelAccelerations, t: float
+        self, end_value: DifferentialDriveWheelAccelerations, t: float
     ) -> DifferentialDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
@@ -146,30 +146,30 @@ class DifferentialDriveKinematics(Drivetrain):
         """Distance between the left and right wheels, m (read-only)."""
 
     def toChassisVelocities(
-        self, wheelVelocities: DifferentialDriveWheelVelocities
+        self, wheel_velocities: DifferentialDriveWheelVelocities
     ) -> ChassisVelocities:
         """Return the robot velocity: vx = (left + right) / 2, vy = 0,
         omega = (right − left) / trackwidth."""
 
     def toChassisVelocitiesInto(
-        self, wheelVelocities: DifferentialDriveWheelVelocities, out: ChassisVelocities
+        self, wheel_velocities: DifferentialDriveWheelVelocities, out: ChassisVelocities
     ) -> None:
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
 
     def toWheelVelocities(
-        self, chassisVelocities: ChassisVelocities
+        self, chassis_velocities: ChassisVelocities
     ) -> DifferentialDriveWheelVelocities:
         """Return the wheel velocities for a robot velocity; ``vy`` is ignored (a
         differential drive cannot strafe)."""
 
     def toWheelVelocitiesInto(
-        self, chassisVelocities: ChassisVelocities, out: DifferentialDriveWheelVelocities
+        self, chassis_velocities: ChassisVelocities, out: DifferentialDriveWheelVelocities
     ) -> None:
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
 
     @overload
     def toTwist2d(self, start: float, end: float) -> Twist2d:
-        """toTwist2d(leftDistance, rightDistance) or toTwist2d(startPositions, endPositions)
+        """toTwist2d(left_distance, right_distance) or toTwist2d(start, end)
 
         Return the Twist2d (m, rad) for wheel distance changes: dx = (l + r) / 2, dy = 0,
         dtheta = (r − l) / trackwidth. With two DifferentialDriveWheelPositions the
@@ -180,22 +180,22 @@ class DifferentialDriveKinematics(Drivetrain):
         self, start: DifferentialDriveWheelPositions, end: DifferentialDriveWheelPositions
     ) -> Twist2d: ...
     def toChassisAccelerations(
-        self, wheelAccelerations: DifferentialDriveWheelAccelerations
+        self, wheel_accelerations: DifferentialDriveWheelAccelerations
     ) -> ChassisAccelerations:
         """Return (ax = (l + r) / 2, ay = 0, alpha = (r − l) / trackwidth), m/s² and rad/s²."""
 
     def toWheelAccelerations(
-        self, chassisAccelerations: ChassisAccelerations
+        self, chassis_accelerations: ChassisAccelerations
     ) -> DifferentialDriveWheelAccelerations:
         """Return the wheel accelerations (ax ∓ trackwidth/2 · alpha); ``ay`` is ignored."""
 
     def interpolate(
         self,
-        startValue: DifferentialDriveWheelPositions,
-        endValue: DifferentialDriveWheelPositions,
+        start: DifferentialDriveWheelPositions,
+        end: DifferentialDriveWheelPositions,
         t: float,
     ) -> DifferentialDriveWheelPositions:
-        """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+        """Return ``start.interpolate(end, t)`` (not clamped)."""
 
     def copy(self, positions: DifferentialDriveWheelPositions) -> DifferentialDriveWheelPositions:
         """Return an independent copy of ``positions``."""

@@ -70,22 +70,22 @@ cdef class DifferentialDriveWheelVelocities(_Wheel2):
                      feet_to_meters(left), feet_to_meters(right))
 
     @cython.always_allow_keywords(False)   # METH_O: the 1-argument fast call (~3 ns)
-    def desaturate(self, double attainableMaxSpeed):
-        """Return new velocities scaled so neither wheel exceeds ``attainableMaxSpeed``
+    def desaturate(self, double attainable_max_velocity):
+        """Return new velocities scaled so neither wheel exceeds ``attainable_max_velocity``
         (m/s), keeping their ratio; unchanged copy if already within it (2027)."""
         cdef _WheelValues out = init2(DifferentialDriveWheelVelocities.__new__(DifferentialDriveWheelVelocities), 0.0, 0.0)
-        wheels_desaturate(2, self.w, attainableMaxSpeed, out.w)
+        wheels_desaturate(2, self.w, attainable_max_velocity, out.w)
         return out
 
     @cython.always_allow_keywords(False)
-    def desaturateInPlace(self, double attainableMaxSpeed):
+    def desaturateInPlace(self, double attainable_max_velocity):
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
-        wheels_desaturate(2, self.w, attainableMaxSpeed, self.w)
+        wheels_desaturate(2, self.w, attainable_max_velocity, self.w)
 
-    def interpolate(self, endValue: DifferentialDriveWheelVelocities, double t):
+    def interpolate(self, end_value: DifferentialDriveWheelVelocities, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        check_type(endValue, DifferentialDriveWheelVelocities, "endValue")
-        return self._lerp(<_WheelValues>endValue, clamp01(t))
+        check_type(end_value, DifferentialDriveWheelVelocities, "end_value")
+        return self._lerp(<_WheelValues>end_value, clamp01(t))
 
     def __str__(self):
         return self._fmt(("Left", "Right"), "m/s")
@@ -108,10 +108,10 @@ cdef class DifferentialDriveWheelPositions(_Wheel2):
         """Return an independent copy."""
         return init2(self._new(), self.w[0], self.w[1])
 
-    def interpolate(self, endValue: DifferentialDriveWheelPositions, double t):
+    def interpolate(self, end_value: DifferentialDriveWheelPositions, double t):
         """Linear interpolation; ``t`` is not clamped."""
-        check_type(endValue, DifferentialDriveWheelPositions, "endValue")
-        return self._lerp(<_WheelValues>endValue, t)
+        check_type(end_value, DifferentialDriveWheelPositions, "end_value")
+        return self._lerp(<_WheelValues>end_value, t)
 
     def __eq__(self, other):
         if type(other) is DifferentialDriveWheelPositions:
@@ -136,10 +136,10 @@ cdef class DifferentialDriveWheelAccelerations(_Wheel2):
     cdef _WheelValues _new(self):
         return init2(DifferentialDriveWheelAccelerations.__new__(DifferentialDriveWheelAccelerations), 0.0, 0.0)
 
-    def interpolate(self, endValue: DifferentialDriveWheelAccelerations, double t):
+    def interpolate(self, end_value: DifferentialDriveWheelAccelerations, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        check_type(endValue, DifferentialDriveWheelAccelerations, "endValue")
-        return self._lerp(<_WheelValues>endValue, clamp01(t))
+        check_type(end_value, DifferentialDriveWheelAccelerations, "end_value")
+        return self._lerp(<_WheelValues>end_value, clamp01(t))
 
     def __eq__(self, other):
         if type(other) is DifferentialDriveWheelAccelerations:
@@ -224,48 +224,48 @@ cdef class DifferentialDriveKinematics(Drivetrain):
     def __repr__(self):
         return f"DifferentialDriveKinematics(trackwidth={self._trackwidth!r})"
 
-    def toChassisVelocities(self, wheelVelocities: DifferentialDriveWheelVelocities):
+    def toChassisVelocities(self, wheel_velocities: DifferentialDriveWheelVelocities):
         """Return the robot velocity: vx = (left + right) / 2, vy = 0,
         omega = (right − left) / trackwidth."""
-        check_type(wheelVelocities, DifferentialDriveWheelVelocities, "wheelVelocities")
+        check_type(wheel_velocities, DifferentialDriveWheelVelocities, "wheel_velocities")
         self._ready()
-        cdef _WheelValues w = <_WheelValues>wheelVelocities
+        cdef _WheelValues w = <_WheelValues>wheel_velocities
         return new_chassis_velocities((w.w[0] + w.w[1]) / 2.0, 0.0,
                                       (w.w[1] - w.w[0]) / self._trackwidth)
 
-    def toChassisVelocitiesInto(self, wheelVelocities: DifferentialDriveWheelVelocities,
+    def toChassisVelocitiesInto(self, wheel_velocities: DifferentialDriveWheelVelocities,
                                 out: ChassisVelocities):
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
-        check_type(wheelVelocities, DifferentialDriveWheelVelocities, "wheelVelocities")
+        check_type(wheel_velocities, DifferentialDriveWheelVelocities, "wheel_velocities")
         check_type(out, ChassisVelocities, "out")
         self._ready()
-        cdef _WheelValues w = <_WheelValues>wheelVelocities
+        cdef _WheelValues w = <_WheelValues>wheel_velocities
         (<ChassisVelocities>out).v.x = (w.w[0] + w.w[1]) / 2.0
         (<ChassisVelocities>out).v.y = 0.0
         (<ChassisVelocities>out).v.z = (w.w[1] - w.w[0]) / self._trackwidth
 
-    def toWheelVelocities(self, chassisVelocities: ChassisVelocities):
+    def toWheelVelocities(self, chassis_velocities: ChassisVelocities):
         """Return the wheel velocities for a robot velocity; ``vy`` is ignored (a
         differential drive cannot strafe)."""
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
         self._ready()
-        cdef ChassisVelocities c = <ChassisVelocities>chassisVelocities
+        cdef ChassisVelocities c = <ChassisVelocities>chassis_velocities
         return new_wheel_velocities(c.v.x - self._trackwidth / 2.0 * c.v.z,
                                     c.v.x + self._trackwidth / 2.0 * c.v.z)
 
-    def toWheelVelocitiesInto(self, chassisVelocities: ChassisVelocities,
+    def toWheelVelocitiesInto(self, chassis_velocities: ChassisVelocities,
                               out: DifferentialDriveWheelVelocities):
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
         check_type(out, DifferentialDriveWheelVelocities, "out")
         self._ready()
-        cdef ChassisVelocities c = <ChassisVelocities>chassisVelocities
+        cdef ChassisVelocities c = <ChassisVelocities>chassis_velocities
         cdef _WheelValues o = <_WheelValues>out
         o.w[0] = c.v.x - self._trackwidth / 2.0 * c.v.z
         o.w[1] = c.v.x + self._trackwidth / 2.0 * c.v.z
 
     def toTwist2d(self, start, end):
-        """toTwist2d(leftDistance, rightDistance) or toTwist2d(startPositions, endPositions)
+        """toTwist2d(left_distance, right_distance) or toTwist2d(start, end)
 
         Return the Twist2d (m, rad) for wheel distance changes: dx = (l + r) / 2, dy = 0,
         dtheta = (r − l) / trackwidth. With two DifferentialDriveWheelPositions the
@@ -288,29 +288,30 @@ cdef class DifferentialDriveKinematics(Drivetrain):
                                 f"{type_name(end)}") from None
         return new_twist((l + r) / 2.0, 0.0, (r - l) / self._trackwidth)
 
-    def toChassisAccelerations(self, wheelAccelerations: DifferentialDriveWheelAccelerations):
+    def toChassisAccelerations(self, wheel_accelerations: DifferentialDriveWheelAccelerations):
         """Return (ax = (l + r) / 2, ay = 0, alpha = (r − l) / trackwidth), m/s² and rad/s²."""
-        check_type(wheelAccelerations, DifferentialDriveWheelAccelerations, "wheelAccelerations")
+        check_type(wheel_accelerations, DifferentialDriveWheelAccelerations,
+                   "wheel_accelerations")
         self._ready()
-        cdef _WheelValues w = <_WheelValues>wheelAccelerations
+        cdef _WheelValues w = <_WheelValues>wheel_accelerations
         return ChassisAccelerations((w.w[0] + w.w[1]) / 2.0, 0.0,
                                     (w.w[1] - w.w[0]) / self._trackwidth)
 
-    def toWheelAccelerations(self, chassisAccelerations: ChassisAccelerations):
+    def toWheelAccelerations(self, chassis_accelerations: ChassisAccelerations):
         """Return the wheel accelerations (ax ∓ trackwidth/2 · alpha); ``ay`` is ignored."""
-        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
+        check_type(chassis_accelerations, ChassisAccelerations, "chassis_accelerations")
         self._ready()
-        cdef ChassisAccelerations c = <ChassisAccelerations>chassisAccelerations
+        cdef ChassisAccelerations c = <ChassisAccelerations>chassis_accelerations
         return DifferentialDriveWheelAccelerations(c.v.x - self._trackwidth / 2.0 * c.v.z,
                                                    c.v.x + self._trackwidth / 2.0 * c.v.z)
 
-    def interpolate(self, startValue: DifferentialDriveWheelPositions,
-                    endValue: DifferentialDriveWheelPositions, double t):
-        """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
-        check_type(startValue, DifferentialDriveWheelPositions, "startValue")
-        check_type(endValue, DifferentialDriveWheelPositions, "endValue")
+    def interpolate(self, start: DifferentialDriveWheelPositions,
+                    end: DifferentialDriveWheelPositions, double t):
+        """Return ``start.interpolate(end, t)`` (not clamped)."""
+        check_type(start, DifferentialDriveWheelPositions, "start")
+        check_type(end, DifferentialDriveWheelPositions, "end")
         self._ready()
-        return startValue.interpolate(endValue, t)
+        return start.interpolate(end, t)
 
     def copy(self, positions: DifferentialDriveWheelPositions):
         """Return an independent copy of ``positions``."""

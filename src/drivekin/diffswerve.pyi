@@ -7,7 +7,7 @@ per pod turn)::
     R_L · ω_wheel = ω_m1 − ω_m2          (their difference spins the wheel)
     ω_wheel       = v / r                (v: wheel ground speed, r: wheel radius)
 
-With ``motor2Inverted=True`` motor 2 is mounted reversed: what it reads and what it is
+With ``motor2_inverted=True`` motor 2 is mounted reversed: what it reads and what it is
 commanded is −ω_m2. Units: m, m/s, rad, rad/s. The same linear map converts motor
 position changes (rad) into the pod's rotation (rad) and the wheel's travel (m), so
 integrating the velocity map and converting the integrated motor positions agree to
@@ -39,7 +39,7 @@ class DifferentialSwerveMotorVelocities(_WheelValues):
     """DifferentialSwerveMotorVelocities(motor1=0.0, motor2=0.0)
 
     The angular velocities of a differential swerve pod's two motors, rad/s, as each
-    motor reads them (a reversed motor 2, ``motor2Inverted=True``, reads −ω_m2).
+    motor reads them (a reversed motor 2, ``motor2_inverted=True``, reads −ω_m2).
     Mutable; ``==`` compares each motor within 1e-9 rad/s (so instances are unhashable);
     unpacks as ``motor1, motor2 = velocities``.
     """
@@ -58,7 +58,7 @@ class DifferentialSwerveMotorVelocities(_WheelValues):
     @motor2.setter
     def motor2(self, value: float) -> None: ...
     def interpolate(
-        self, endValue: DifferentialSwerveMotorVelocities, t: float
+        self, end_value: DifferentialSwerveMotorVelocities, t: float
     ) -> DifferentialSwerveMotorVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
@@ -67,15 +67,15 @@ class DifferentialSwerveMotorVelocities(_WheelValues):
 
 @final
 class DifferentialSwerveModuleVelocities(_WheelValues):
-    """DifferentialSwerveModuleVelocities(wheelVelocity=0.0, azimuthVelocity=0.0)
+    """DifferentialSwerveModuleVelocities(wheel_velocity=0.0, azimuth_velocity=0.0)
 
-    The motion of one differential swerve pod: the wheel's ground speed ``wheelVelocity``
-    in m/s and the pod's steering rate ``azimuthVelocity`` in rad/s (counter-clockwise
+    The motion of one differential swerve pod: the wheel's ground speed ``wheel_velocity``
+    in m/s and the pod's steering rate ``azimuth_velocity`` in rad/s (counter-clockwise
     positive). Mutable; ``==`` compares each field within 1e-9 (so instances are
-    unhashable); unpacks as ``wheelVelocity, azimuthVelocity = velocities``.
+    unhashable); unpacks as ``wheel_velocity, azimuth_velocity = velocities``.
     """
 
-    def __init__(self, wheelVelocity: float = 0.0, azimuthVelocity: float = 0.0) -> None: ...
+    def __init__(self, wheel_velocity: float = 0.0, azimuth_velocity: float = 0.0) -> None: ...
     @property
     def wheelVelocity(self) -> float:
         """Wheel ground speed, m/s."""
@@ -89,7 +89,7 @@ class DifferentialSwerveModuleVelocities(_WheelValues):
     @azimuthVelocity.setter
     def azimuthVelocity(self, value: float) -> None: ...
     def interpolate(
-        self, endValue: DifferentialSwerveModuleVelocities, t: float
+        self, end_value: DifferentialSwerveModuleVelocities, t: float
     ) -> DifferentialSwerveModuleVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
@@ -108,15 +108,15 @@ class DifferentialSwerveModuleVelocities(_WheelValues):
 
 @final
 class DifferentialSwerveModuleKinematics:
-    """``DifferentialSwerveModuleKinematics(azimuthGearRatio, wheelGearRatio, wheelRadius, *, motor2Inverted=False)``
+    """``DifferentialSwerveModuleKinematics(azimuth_gear_ratio, wheel_gear_ratio, wheel_radius, *, motor2_inverted=False)``
 
     Kinematics of one differential swerve pod (quail's model, made consistent):
     ``R_A·ω_pod = ω_m1 + ω_m2`` and ``R_L·ω_wheel = ω_m1 − ω_m2`` with ``ω_wheel = v / r``.
 
-    ``azimuthGearRatio`` R_A and ``wheelGearRatio`` R_L are motor turns per output turn
+    ``azimuth_gear_ratio`` R_A and ``wheel_gear_ratio`` R_L are motor turns per output turn
     (pod turn, wheel turn); quail's ``R_s``/``R_d`` are output per motor turn, i.e.
-    R_A = 1/R_s and R_L = 1/R_d. ``wheelRadius`` r is in m. All three must be positive and
-    finite (ValueError naming the argument otherwise). ``motor2Inverted=True`` means
+    R_A = 1/R_s and R_L = 1/R_d. ``wheel_radius`` r is in m. All three must be positive and
+    finite (ValueError naming the argument otherwise). ``motor2_inverted=True`` means
     motor 2 is mounted reversed: every motor-2 value this class takes or returns (velocity
     or position) is the negative of the ω_m2 in the equations.
 
@@ -129,11 +129,11 @@ class DifferentialSwerveModuleKinematics:
 
     def __init__(
         self,
-        azimuthGearRatio: float,
-        wheelGearRatio: float,
-        wheelRadius: float,
+        azimuth_gear_ratio: float,
+        wheel_gear_ratio: float,
+        wheel_radius: float,
         *,
-        motor2Inverted: bool = False,
+        motor2_inverted: bool = False,
     ) -> None: ...
     @property
     def azimuthGearRatio(self) -> float:
@@ -152,17 +152,17 @@ class DifferentialSwerveModuleKinematics:
         """True if motor 2 is mounted reversed (read-only)."""
 
     def toMotorVelocities(
-        self, wheelVelocity: float, azimuthVelocity: float
+        self, wheel_velocity: float, azimuth_velocity: float
     ) -> DifferentialSwerveMotorVelocities:
         """Return the motor velocities (DifferentialSwerveMotorVelocities, rad/s) that
-        drive the wheel at ``wheelVelocity`` m/s while the pod turns at
-        ``azimuthVelocity`` rad/s: ω_m1 = (R_A·ω_pod + R_L·v/r)/2,
+        drive the wheel at ``wheel_velocity`` m/s while the pod turns at
+        ``azimuth_velocity`` rad/s: ω_m1 = (R_A·ω_pod + R_L·v/r)/2,
         ω_m2 = (R_A·ω_pod − R_L·v/r)/2 (negated when motor 2 is inverted)."""
 
     def toMotorVelocitiesInto(
         self,
-        wheelVelocity: float,
-        azimuthVelocity: float,
+        wheel_velocity: float,
+        azimuth_velocity: float,
         out: DifferentialSwerveMotorVelocities,
     ) -> None:
         """Allocation-free :meth:`toMotorVelocities`: write into ``out``. Returns None."""
@@ -181,15 +181,15 @@ class DifferentialSwerveModuleKinematics:
         """Allocation-free :meth:`toModuleVelocities`: write into ``out``. Returns None."""
 
     def resetModulePosition(
-        self, angle: Rotation2d, motor1Position: float, motor2Position: float
+        self, angle: Rotation2d, motor1_position: float, motor2_position: float
     ) -> None:
         """Declare that the pod points at ``angle`` while the motors read
-        ``motor1Position`` and ``motor2Position`` (rad, finite; ValueError otherwise):
+        ``motor1_position`` and ``motor2_position`` (rad, finite; ValueError otherwise):
         :meth:`toModulePosition` measures from here. Call it once the pod's absolute
         angle is known (e.g. from an absolute encoder at start-up). Returns None."""
 
     def toModulePosition(
-        self, motor1Position: float, motor2Position: float
+        self, motor1_position: float, motor2_position: float
     ) -> SwerveModulePosition:
         """Return the SwerveModulePosition for the motors' positions (rad): the distance
         (m) the wheel has rolled since the last :meth:`resetModulePosition` and the pod
@@ -198,18 +198,18 @@ class DifferentialSwerveModuleKinematics:
         SwerveDriveOdometry as the module positions."""
 
     def toModulePositionInto(
-        self, motor1Position: float, motor2Position: float, out: SwerveModulePosition
+        self, motor1_position: float, motor2_position: float, out: SwerveModulePosition
     ) -> None:
         """Allocation-free :meth:`toModulePosition`: write into ``out``. Returns None."""
 
     def desaturateMotorVelocities(
         self,
-        motorVelocities: DifferentialSwerveMotorVelocities,
-        maxMotorVelocity: float,
+        motor_velocities: DifferentialSwerveMotorVelocities,
+        max_motor_velocity: float,
         *,
         proportional: bool = False,
     ) -> DifferentialSwerveMotorVelocities:
-        """Return new motor velocities each of magnitude at most ``maxMotorVelocity`` (rad/s,
+        """Return new motor velocities each of magnitude at most ``max_motor_velocity`` (rad/s,
         ≥ 0; ValueError if negative or NaN; inf means no limit).
 
         By default the pod's steering rate is kept and the wheel speed is reduced first:
@@ -223,31 +223,31 @@ class DifferentialSwerveModuleKinematics:
 
     def desaturateMotorVelocitiesInPlace(
         self,
-        motorVelocities: DifferentialSwerveMotorVelocities,
-        maxMotorVelocity: float,
+        motor_velocities: DifferentialSwerveMotorVelocities,
+        max_motor_velocity: float,
         *,
         proportional: bool = False,
     ) -> None:
         """Allocation-free :meth:`desaturateMotorVelocities` (same rules and keyword):
-        rescale ``motorVelocities`` itself. Returns None."""
+        rescale ``motor_velocities`` itself. Returns None."""
 
     def desaturateModuleVelocitiesInPlace(
         self,
-        moduleVelocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
-        azimuthVelocities: Sequence[float] | npt.NDArray[np.float64],
-        maxMotorVelocity: float,
+        module_velocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
+        azimuth_velocities: Sequence[float] | npt.NDArray[np.float64],
+        max_motor_velocity: float,
     ) -> float:
         """Drive-level desaturation for a swerve drive whose N pods are all built like this
         one: scale every module's wheel velocity by one common factor k in [0, 1], the
-        largest for which no pod's motors exceed ``maxMotorVelocity`` (rad/s, ≥ 0) while
-        pod i steers at ``azimuthVelocities[i]`` rad/s. Because every wheel is scaled
+        largest for which no pod's motors exceed ``max_motor_velocity`` (rad/s, ≥ 0) while
+        pod i steers at ``azimuth_velocities[i]`` rad/s. Because every wheel is scaled
         alike (angles untouched), the chassis keeps its direction of travel and its
         centre of rotation. Returns k (1.0 when nothing needed scaling).
 
-        ``moduleVelocities`` are the N targets from SwerveDriveKinematics: a list/tuple
+        ``module_velocities`` are the N targets from SwerveDriveKinematics: a list/tuple
         of SwerveModuleVelocity (updated in place) or a float64 (N, 2) array
         ``[velocity m/s, angle rad]`` (column 0 rescaled in place).
-        ``azimuthVelocities`` is a sequence of N numbers or a float64 (N,) array.
+        ``azimuth_velocities`` is a sequence of N numbers or a float64 (N,) array.
         Allocation-free for N ≤ 16. Every input is read and checked before anything is
         written, so a failed call changes nothing.
 

@@ -7,7 +7,7 @@ per pod turn)::
     R_L · ω_wheel = ω_m1 − ω_m2          (their difference spins the wheel)
     ω_wheel       = v / r                (v: wheel ground speed, r: wheel radius)
 
-With ``motor2Inverted=True`` motor 2 is mounted reversed: what it reads and what it is
+With ``motor2_inverted=True`` motor 2 is mounted reversed: what it reads and what it is
 commanded is −ω_m2. Units: m, m/s, rad, rad/s. The same linear map converts motor
 position changes (rad) into the pod's rotation (rad) and the wheel's travel (m), so
 integrating the velocity map and converting the integrated motor positions agree to
@@ -66,7 +66,7 @@ cdef class DifferentialSwerveMotorVelocities(_WheelValues):
     """DifferentialSwerveMotorVelocities(motor1=0.0, motor2=0.0)
 
     The angular velocities of a differential swerve pod's two motors, rad/s, as each
-    motor reads them (a reversed motor 2, ``motor2Inverted=True``, reads −ω_m2).
+    motor reads them (a reversed motor 2, ``motor2_inverted=True``, reads −ω_m2).
     Mutable; ``==`` compares each motor within 1e-9 rad/s (so instances are unhashable);
     unpacks as ``motor1, motor2 = velocities``.
     """
@@ -97,10 +97,10 @@ cdef class DifferentialSwerveMotorVelocities(_WheelValues):
     def motor2(self, double value):
         self.w[1] = value
 
-    def interpolate(self, endValue: DifferentialSwerveMotorVelocities, double t):
+    def interpolate(self, end_value: DifferentialSwerveMotorVelocities, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        check_type(endValue, DifferentialSwerveMotorVelocities, "endValue")
-        return self._lerp(<_WheelValues>endValue, clamp01(t))
+        check_type(end_value, DifferentialSwerveMotorVelocities, "end_value")
+        return self._lerp(<_WheelValues>end_value, clamp01(t))
 
     def __eq__(self, other):
         if type(other) is DifferentialSwerveMotorVelocities:
@@ -117,18 +117,18 @@ cdef class DifferentialSwerveMotorVelocities(_WheelValues):
 
 
 cdef class DifferentialSwerveModuleVelocities(_WheelValues):
-    """DifferentialSwerveModuleVelocities(wheelVelocity=0.0, azimuthVelocity=0.0)
+    """DifferentialSwerveModuleVelocities(wheel_velocity=0.0, azimuth_velocity=0.0)
 
-    The motion of one differential swerve pod: the wheel's ground speed ``wheelVelocity``
-    in m/s and the pod's steering rate ``azimuthVelocity`` in rad/s (counter-clockwise
+    The motion of one differential swerve pod: the wheel's ground speed ``wheel_velocity``
+    in m/s and the pod's steering rate ``azimuth_velocity`` in rad/s (counter-clockwise
     positive). Mutable; ``==`` compares each field within 1e-9 (so instances are
-    unhashable); unpacks as ``wheelVelocity, azimuthVelocity = velocities``.
+    unhashable); unpacks as ``wheel_velocity, azimuth_velocity = velocities``.
     """
 
-    def __init__(self, double wheelVelocity=0.0, double azimuthVelocity=0.0):
+    def __init__(self, double wheel_velocity=0.0, double azimuth_velocity=0.0):
         self.k = 2
-        self.w[0] = wheelVelocity
-        self.w[1] = azimuthVelocity
+        self.w[0] = wheel_velocity
+        self.w[1] = azimuth_velocity
 
     cdef _WheelValues _new(self):
         return new_module_velocities(0.0, 0.0)
@@ -151,10 +151,10 @@ cdef class DifferentialSwerveModuleVelocities(_WheelValues):
     def azimuthVelocity(self, double value):
         self.w[1] = value
 
-    def interpolate(self, endValue: DifferentialSwerveModuleVelocities, double t):
+    def interpolate(self, end_value: DifferentialSwerveModuleVelocities, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        check_type(endValue, DifferentialSwerveModuleVelocities, "endValue")
-        return self._lerp(<_WheelValues>endValue, clamp01(t))
+        check_type(end_value, DifferentialSwerveModuleVelocities, "end_value")
+        return self._lerp(<_WheelValues>end_value, clamp01(t))
 
     def __eq__(self, other):
         if type(other) is DifferentialSwerveModuleVelocities:
@@ -164,8 +164,8 @@ cdef class DifferentialSwerveModuleVelocities(_WheelValues):
     __hash__ = None
 
     def __repr__(self):
-        return (f"DifferentialSwerveModuleVelocities(wheelVelocity={self.w[0]!r}, "
-                f"azimuthVelocity={self.w[1]!r})")
+        return (f"DifferentialSwerveModuleVelocities(wheel_velocity={self.w[0]!r}, "
+                f"azimuth_velocity={self.w[1]!r})")
 
     def __str__(self):
         return (f"DifferentialSwerveModuleVelocities(Wheel: {f2(self.w[0])} m/s, "
@@ -177,7 +177,7 @@ cdef class DifferentialSwerveModuleVelocities(_WheelValues):
 
 cdef int check_limit(double limit) except -1:
     if not limit >= 0.0:       # NaN fails too
-        raise ValueError("maxMotorVelocity must be a non-negative motor velocity in rad/s "
+        raise ValueError("max_motor_velocity must be a non-negative motor velocity in rad/s "
                          f"(inf: no limit), got {limit!r}")
     return 0
 
@@ -207,11 +207,11 @@ cdef Py_ssize_t read_rates(object rates, double* stack, double** buf) except -1:
     cdef const double* d = NULL
     cdef object fast, x
     if is_array(rates):
-        d = float64_data(rates, -1, 0, False, "azimuthVelocities")
+        d = float64_data(rates, -1, 0, False, "azimuth_velocities")
         n = cnp.PyArray_DIM(<cnp.ndarray>rates, 0)
         fast = None
     else:
-        fast = as_fast(rates, "azimuthVelocities", "a sequence or a float64 numpy array", "",
+        fast = as_fast(rates, "azimuth_velocities", "a sequence or a float64 numpy array", "",
                        True)
         n = PySequence_Fast_GET_SIZE(fast)
     if n > STACK_MODULES:
@@ -224,7 +224,7 @@ cdef Py_ssize_t read_rates(object rates, double* stack, double** buf) except -1:
         return n
     for i in range(n):
         if PySequence_Fast_GET_SIZE(fast) != n:
-            raise ValueError("azimuthVelocities changed size while it was being read")
+            raise ValueError("azimuth_velocities changed size while it was being read")
         x = <object>PySequence_Fast_ITEMS(fast)[i]
         if type(x) is float:
             buf[0][i] = <double>x
@@ -232,32 +232,32 @@ cdef Py_ssize_t read_rates(object rates, double* stack, double** buf) except -1:
         try:
             buf[0][i] = PyFloat_AsDouble(x)
         except TypeError:
-            raise TypeError(f"azimuthVelocities[{i}] must be a number (rad/s), "
+            raise TypeError(f"azimuth_velocities[{i}] must be a number (rad/s), "
                             f"got {type_name(x)}") from None
     if PySequence_Fast_GET_SIZE(fast) != n:
-        raise ValueError("azimuthVelocities changed size while it was being read")
+        raise ValueError("azimuth_velocities changed size while it was being read")
     return n
 
 
 # ---------------------------------------------------------------------------------------
 # Kinematics
 
-def _restore(azimuthGearRatio, wheelGearRatio, wheelRadius, motor2Inverted):
-    """Unpickling helper: the constructor with ``motor2Inverted`` passed by keyword."""
-    return DifferentialSwerveModuleKinematics(azimuthGearRatio, wheelGearRatio, wheelRadius,
-                                              motor2Inverted=motor2Inverted)
+def _restore(azimuth_gear_ratio, wheel_gear_ratio, wheel_radius, motor2_inverted):
+    """Unpickling helper: the constructor with ``motor2_inverted`` passed by keyword."""
+    return DifferentialSwerveModuleKinematics(azimuth_gear_ratio, wheel_gear_ratio, wheel_radius,
+                                              motor2_inverted=motor2_inverted)
 
 
 cdef class DifferentialSwerveModuleKinematics:
-    """``DifferentialSwerveModuleKinematics(azimuthGearRatio, wheelGearRatio, wheelRadius, *, motor2Inverted=False)``
+    """``DifferentialSwerveModuleKinematics(azimuth_gear_ratio, wheel_gear_ratio, wheel_radius, *, motor2_inverted=False)``
 
     Kinematics of one differential swerve pod (quail's model, made consistent):
     ``R_A·ω_pod = ω_m1 + ω_m2`` and ``R_L·ω_wheel = ω_m1 − ω_m2`` with ``ω_wheel = v / r``.
 
-    ``azimuthGearRatio`` R_A and ``wheelGearRatio`` R_L are motor turns per output turn
+    ``azimuth_gear_ratio`` R_A and ``wheel_gear_ratio`` R_L are motor turns per output turn
     (pod turn, wheel turn); quail's ``R_s``/``R_d`` are output per motor turn, i.e.
-    R_A = 1/R_s and R_L = 1/R_d. ``wheelRadius`` r is in m. All three must be positive and
-    finite (ValueError naming the argument otherwise). ``motor2Inverted=True`` means
+    R_A = 1/R_s and R_L = 1/R_d. ``wheel_radius`` r is in m. All three must be positive and
+    finite (ValueError naming the argument otherwise). ``motor2_inverted=True`` means
     motor 2 is mounted reversed: every motor-2 value this class takes or returns (velocity
     or position) is the negative of the ω_m2 in the equations.
 
@@ -268,29 +268,31 @@ cdef class DifferentialSwerveModuleKinematics:
     kinematics classes.
     """
 
-    def __init__(self, double azimuthGearRatio, double wheelGearRatio, double wheelRadius, *,
-                 motor2Inverted=False):
+    def __init__(self, double azimuth_gear_ratio, double wheel_gear_ratio,
+                 double wheel_radius, *, motor2_inverted=False):
         cdef dswerve_t g
         if self.g.ra != 0.0:
             raise TypeError("DifferentialSwerveModuleKinematics is already initialised (its "
                             "geometry is read-only): __init__ cannot be called again")
-        positive_finite(azimuthGearRatio, "azimuthGearRatio", "ratio (motor turns per pod turn)")
-        positive_finite(wheelGearRatio, "wheelGearRatio", "ratio (motor turns per wheel turn)")
-        positive_finite(wheelRadius, "wheelRadius", "radius in m")
-        g.s2 = -1.0 if flag(motor2Inverted, "motor2Inverted") else 1.0
-        g.kv = wheelGearRatio / wheelRadius
+        positive_finite(azimuth_gear_ratio, "azimuth_gear_ratio",
+                        "ratio (motor turns per pod turn)")
+        positive_finite(wheel_gear_ratio, "wheel_gear_ratio",
+                        "ratio (motor turns per wheel turn)")
+        positive_finite(wheel_radius, "wheel_radius", "radius in m")
+        g.s2 = -1.0 if flag(motor2_inverted, "motor2_inverted") else 1.0
+        g.kv = wheel_gear_ratio / wheel_radius
         if not (isfinite(g.kv) and g.kv > 0.0):
-            raise ValueError("wheelGearRatio / wheelRadius (motor rad per m of wheel travel) "
+            raise ValueError("wheel_gear_ratio / wheel_radius (motor rad per m of wheel travel) "
                              f"must be positive and finite, got {g.kv!r}")
-        g.ra = azimuthGearRatio
+        g.ra = azimuth_gear_ratio
         # The inverse map multiplies by these (a division would cost ~4 ns per call).
         g.ira = 1.0 / g.ra
         g.ikv = 1.0 / g.kv
         if not (isfinite(g.ira) and isfinite(g.ikv) and g.ikv > 0.0):
-            raise ValueError("azimuthGearRatio and wheelGearRatio / wheelRadius must have "
+            raise ValueError("azimuth_gear_ratio and wheel_gear_ratio / wheel_radius must have "
                              f"finite non-zero reciprocals, got {g.ra!r} and {g.kv!r}")
-        g.rl = wheelGearRatio
-        g.r = wheelRadius
+        g.rl = wheel_gear_ratio
+        g.r = wheel_radius
         self.p1 = 0.0
         self.p2 = 0.0
         self.r0.c = 1.0
@@ -324,9 +326,9 @@ cdef class DifferentialSwerveModuleKinematics:
         return self.g.s2 < 0.0
 
     def __repr__(self):
-        return (f"DifferentialSwerveModuleKinematics(azimuthGearRatio={self.g.ra!r}, "
-                f"wheelGearRatio={self.g.rl!r}, wheelRadius={self.g.r!r}, "
-                f"motor2Inverted={self.g.s2 < 0.0!r})")
+        return (f"DifferentialSwerveModuleKinematics(azimuth_gear_ratio={self.g.ra!r}, "
+                f"wheel_gear_ratio={self.g.rl!r}, wheel_radius={self.g.r!r}, "
+                f"motor2_inverted={self.g.s2 < 0.0!r})")
 
     def __reduce__(self):
         self._ready()
@@ -335,12 +337,12 @@ cdef class DifferentialSwerveModuleKinematics:
 
     def __setstate__(self, state):
         """Restore the offset of :meth:`resetModulePosition` from a pickle:
-        ``(angle Rotation2d, motor1Position rad, motor2Position rad)``."""
+        ``(angle Rotation2d, motor1_position rad, motor2_position rad)``."""
         cdef double p1, p2
         self._ready()
         if type(state) is not tuple or len(state) != 3:
-            raise TypeError("state must be a tuple (Rotation2d, motor1Position, "
-                            f"motor2Position), got {type_name(state)}")
+            raise TypeError("state must be a tuple (Rotation2d, motor1_position, "
+                            f"motor2_position), got {type_name(state)}")
         angle = state[0]
         if type(angle) is not Rotation2d:
             raise TypeError(f"state[0] must be a Rotation2d, got {type_name(angle)}")
@@ -362,25 +364,25 @@ cdef class DifferentialSwerveModuleKinematics:
 
     # -- velocities -------------------------------------------------------------------
 
-    def toMotorVelocities(self, double wheelVelocity, double azimuthVelocity):
+    def toMotorVelocities(self, double wheel_velocity, double azimuth_velocity):
         """Return the motor velocities (DifferentialSwerveMotorVelocities, rad/s) that
-        drive the wheel at ``wheelVelocity`` m/s while the pod turns at
-        ``azimuthVelocity`` rad/s: ω_m1 = (R_A·ω_pod + R_L·v/r)/2,
+        drive the wheel at ``wheel_velocity`` m/s while the pod turns at
+        ``azimuth_velocity`` rad/s: ω_m1 = (R_A·ω_pod + R_L·v/r)/2,
         ω_m2 = (R_A·ω_pod − R_L·v/r)/2 (negated when motor 2 is inverted)."""
         cdef double m1, m2
         if self.g.ra == 0.0:
             uninitialised()
-        dswerve_motors(&self.g, wheelVelocity, azimuthVelocity, &m1, &m2)
+        dswerve_motors(&self.g, wheel_velocity, azimuth_velocity, &m1, &m2)
         return new_motors(m1, m2)
 
-    def toMotorVelocitiesInto(self, double wheelVelocity, double azimuthVelocity,
+    def toMotorVelocitiesInto(self, double wheel_velocity, double azimuth_velocity,
                               out: DifferentialSwerveMotorVelocities):
         """Allocation-free :meth:`toMotorVelocities`: write into ``out``. Returns None."""
         check_type(out, DifferentialSwerveMotorVelocities, "out")
         if self.g.ra == 0.0:
             uninitialised()
         cdef double* w = (<_WheelValues>out).w
-        dswerve_motors(&self.g, wheelVelocity, azimuthVelocity, &w[0], &w[1])
+        dswerve_motors(&self.g, wheel_velocity, azimuth_velocity, &w[0], &w[1])
 
     def toModuleVelocities(self, double motor1, double motor2):
         """Return the pod's motion (DifferentialSwerveModuleVelocities: wheel m/s,
@@ -404,17 +406,17 @@ cdef class DifferentialSwerveModuleKinematics:
 
     # -- positions --------------------------------------------------------------------
 
-    def resetModulePosition(self, angle: Rotation2d, double motor1Position,
-                            double motor2Position):
+    def resetModulePosition(self, angle: Rotation2d, double motor1_position,
+                            double motor2_position):
         """Declare that the pod points at ``angle`` while the motors read
-        ``motor1Position`` and ``motor2Position`` (rad, finite; ValueError otherwise):
+        ``motor1_position`` and ``motor2_position`` (rad, finite; ValueError otherwise):
         :meth:`toModulePosition` measures from here. Call it once the pod's absolute
         angle is known (e.g. from an absolute encoder at start-up). Returns None."""
         check_type(angle, Rotation2d, "angle")
         self._ready()
-        self._set_offset((<Rotation2d>angle).r, motor1Position, motor2Position)
+        self._set_offset((<Rotation2d>angle).r, motor1_position, motor2_position)
 
-    def toModulePosition(self, double motor1Position, double motor2Position):
+    def toModulePosition(self, double motor1_position, double motor2_position):
         """Return the SwerveModulePosition for the motors' positions (rad): the distance
         (m) the wheel has rolled since the last :meth:`resetModulePosition` and the pod
         angle = reset angle + (Δθ_m1 + Δθ_m2)/R_A. Before any reset the offset is zero
@@ -424,27 +426,27 @@ cdef class DifferentialSwerveModuleKinematics:
         if self.g.ra == 0.0:
             uninitialised()
         # Position changes map exactly as velocities do: the same kernel.
-        dswerve_module(&self.g, motor1Position - self.p1, motor2Position - self.p2,
+        dswerve_module(&self.g, motor1_position - self.p1, motor2_position - self.p2,
                        &d, &dtheta)
         return new_module_position(d, rot_rad(self.a0 + dtheta))
 
-    def toModulePositionInto(self, double motor1Position, double motor2Position,
+    def toModulePositionInto(self, double motor1_position, double motor2_position,
                              out: SwerveModulePosition):
         """Allocation-free :meth:`toModulePosition`: write into ``out``. Returns None."""
         cdef double d, dtheta
         check_type(out, SwerveModulePosition, "out")
         if self.g.ra == 0.0:
             uninitialised()
-        dswerve_module(&self.g, motor1Position - self.p1, motor2Position - self.p2,
+        dswerve_module(&self.g, motor1_position - self.p1, motor2_position - self.p2,
                        &d, &dtheta)
         (<_ModuleVector>out).m = d
         (<_ModuleVector>out).a = rot_rad(self.a0 + dtheta)
 
     # -- desaturation -----------------------------------------------------------------
 
-    def desaturateMotorVelocities(self, motorVelocities: DifferentialSwerveMotorVelocities,
-                                  double maxMotorVelocity, *, proportional=False):
-        """Return new motor velocities each of magnitude at most ``maxMotorVelocity`` (rad/s,
+    def desaturateMotorVelocities(self, motor_velocities: DifferentialSwerveMotorVelocities,
+                                  double max_motor_velocity, *, proportional=False):
+        """Return new motor velocities each of magnitude at most ``max_motor_velocity`` (rad/s,
         ≥ 0; ValueError if negative or NaN; inf means no limit).
 
         By default the pod's steering rate is kept and the wheel speed is reduced first:
@@ -456,38 +458,40 @@ cdef class DifferentialSwerveModuleKinematics:
         Velocities already within the limit, or with a NaN motor, are returned unchanged.
         The input is not modified."""
         cdef double o1, o2
-        check_type(motorVelocities, DifferentialSwerveMotorVelocities, "motorVelocities")
+        check_type(motor_velocities, DifferentialSwerveMotorVelocities, "motor_velocities")
         cdef bint prop = flag(proportional, "proportional")
         self._ready()
-        check_limit(maxMotorVelocity)
-        dswerve_desaturate(self.g.s2, (<_WheelValues>motorVelocities).w[0],
-                           (<_WheelValues>motorVelocities).w[1], maxMotorVelocity, prop, &o1, &o2)
+        check_limit(max_motor_velocity)
+        dswerve_desaturate(self.g.s2, (<_WheelValues>motor_velocities).w[0],
+                           (<_WheelValues>motor_velocities).w[1], max_motor_velocity, prop,
+                           &o1, &o2)
         return new_motors(o1, o2)
 
-    def desaturateMotorVelocitiesInPlace(self, motorVelocities: DifferentialSwerveMotorVelocities,
-                                         double maxMotorVelocity, *, proportional=False):
+    def desaturateMotorVelocitiesInPlace(self,
+                                         motor_velocities: DifferentialSwerveMotorVelocities,
+                                         double max_motor_velocity, *, proportional=False):
         """Allocation-free :meth:`desaturateMotorVelocities` (same rules and keyword):
-        rescale ``motorVelocities`` itself. Returns None."""
-        check_type(motorVelocities, DifferentialSwerveMotorVelocities, "motorVelocities")
+        rescale ``motor_velocities`` itself. Returns None."""
+        check_type(motor_velocities, DifferentialSwerveMotorVelocities, "motor_velocities")
         cdef bint prop = flag(proportional, "proportional")
         self._ready()
-        check_limit(maxMotorVelocity)
-        cdef double* w = (<_WheelValues>motorVelocities).w
-        dswerve_desaturate(self.g.s2, w[0], w[1], maxMotorVelocity, prop, &w[0], &w[1])
+        check_limit(max_motor_velocity)
+        cdef double* w = (<_WheelValues>motor_velocities).w
+        dswerve_desaturate(self.g.s2, w[0], w[1], max_motor_velocity, prop, &w[0], &w[1])
 
-    def desaturateModuleVelocitiesInPlace(self, moduleVelocities, azimuthVelocities,
-                                          double maxMotorVelocity):
+    def desaturateModuleVelocitiesInPlace(self, module_velocities, azimuth_velocities,
+                                          double max_motor_velocity):
         """Drive-level desaturation for a swerve drive whose N pods are all built like this
         one: scale every module's wheel velocity by one common factor k in [0, 1], the
-        largest for which no pod's motors exceed ``maxMotorVelocity`` (rad/s, ≥ 0) while
-        pod i steers at ``azimuthVelocities[i]`` rad/s. Because every wheel is scaled
+        largest for which no pod's motors exceed ``max_motor_velocity`` (rad/s, ≥ 0) while
+        pod i steers at ``azimuth_velocities[i]`` rad/s. Because every wheel is scaled
         alike (angles untouched), the chassis keeps its direction of travel and its
         centre of rotation. Returns k (1.0 when nothing needed scaling).
 
-        ``moduleVelocities`` are the N targets from SwerveDriveKinematics: a list/tuple
+        ``module_velocities`` are the N targets from SwerveDriveKinematics: a list/tuple
         of SwerveModuleVelocity (updated in place) or a float64 (N, 2) array
         ``[velocity m/s, angle rad]`` (column 0 rescaled in place).
-        ``azimuthVelocities`` is a sequence of N numbers or a float64 (N,) array.
+        ``azimuth_velocities`` is a sequence of N numbers or a float64 (N,) array.
         Allocation-free for N ≤ 16. Every input is read and checked before anything is
         written, so a failed call changes nothing.
 
@@ -505,36 +509,37 @@ cdef class DifferentialSwerveModuleKinematics:
         cdef object fast
         cdef PyObject** items
         self._ready()
-        check_limit(maxMotorVelocity)
+        check_limit(max_motor_velocity)
         try:
             # Everything that can run Python code (iterating, __float__) happens here,
             # before the destination is looked at.
-            n = read_rates(azimuthVelocities, stack, &buf)
-            if is_array(moduleVelocities):
-                d = float64_data(moduleVelocities, -1, 2, True, "moduleVelocities")
-                if cnp.PyArray_DIM(<cnp.ndarray>moduleVelocities, 0) != n:
+            n = read_rates(azimuth_velocities, stack, &buf)
+            if is_array(module_velocities):
+                d = float64_data(module_velocities, -1, 2, True, "module_velocities")
+                if cnp.PyArray_DIM(<cnp.ndarray>module_velocities, 0) != n:
                     raise ValueError(
-                        f"moduleVelocities has {cnp.PyArray_DIM(<cnp.ndarray>moduleVelocities, 0)} "
-                        f"rows but azimuthVelocities has {n} values (one per module)")
-                k = dswerve_drive_factor(&self.g, n, d, 2, buf, maxMotorVelocity)
+                        "module_velocities has "
+                        f"{cnp.PyArray_DIM(<cnp.ndarray>module_velocities, 0)} "
+                        f"rows but azimuth_velocities has {n} values (one per module)")
+                k = dswerve_drive_factor(&self.g, n, d, 2, buf, max_motor_velocity)
                 if k != 1.0:
                     for i in range(n):
                         d[2 * i] = d[2 * i] * k
                 return k
-            fast = as_fast(moduleVelocities, "moduleVelocities",
+            fast = as_fast(module_velocities, "module_velocities",
                            "a sequence or a float64 numpy array", "", True)
             if PySequence_Fast_GET_SIZE(fast) != n:
-                raise ValueError(f"moduleVelocities has {PySequence_Fast_GET_SIZE(fast)} "
-                                 f"entries but azimuthVelocities has {n} values (one per "
+                raise ValueError(f"module_velocities has {PySequence_Fast_GET_SIZE(fast)} "
+                                 f"entries but azimuth_velocities has {n} values (one per "
                                  "module)")
             items = PySequence_Fast_ITEMS(fast)
             # Check, read, decide, write: nothing from here on allocates or runs Python.
             for i in range(n):
                 if type(<object>items[i]) is not SwerveModuleVelocity:
-                    raise TypeError(f"moduleVelocities[{i}] must be a SwerveModuleVelocity, "
+                    raise TypeError(f"module_velocities[{i}] must be a SwerveModuleVelocity, "
                                     f"got {type_name(<object>items[i])}")
                 buf[n + i] = (<_ModuleVector>items[i]).m
-            k = dswerve_drive_factor(&self.g, n, buf + n, 1, buf, maxMotorVelocity)
+            k = dswerve_drive_factor(&self.g, n, buf + n, 1, buf, max_motor_velocity)
             if k != 1.0:
                 for i in range(n):
                     (<_ModuleVector>items[i]).m = buf[n + i] * k

@@ -36,7 +36,7 @@ cdef class _PoseEstimator:
     cdef bint ready
     cdef bint clock_warned       # ClockMismatchWarning issued
 
-    cdef int _init(self, _Odometry odo, object stateStdDevs, object visionStdDevs) except -1
+    cdef int _init(self, _Odometry odo, object state_std_devs, object vision_std_devs) except -1
     cdef int _start(self) except -1
     cdef int _check(self) except -1
     cdef int _reserve(self) except -1
@@ -55,26 +55,27 @@ cdef class _PoseEstimator:
 @cython.final
 cdef class SwerveDrivePoseEstimator(_PoseEstimator):
     cdef SwerveDriveOdometry swerve
-    cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object modulePositions)
+    cdef Pose2d _at(self, double t, Rotation2d gyro_angle, object wheel_positions)
 
 @cython.final
 cdef class MecanumDrivePoseEstimator(_PoseEstimator):
     cdef MecanumDriveOdometry mecanum
-    cdef Pose2d _at(self, double t, Rotation2d gyroAngle,
-                    MecanumDriveWheelPositions wheelPositions)
+    cdef Pose2d _at(self, double t, Rotation2d gyro_angle,
+                    MecanumDriveWheelPositions wheel_positions)
 
 @cython.final
 cdef class DifferentialDrivePoseEstimator(_PoseEstimator):
     cdef DifferentialDriveOdometry differential
-    cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object leftDistance,
-                    object rightDistance)
+    cdef Pose2d _at(self, double t, Rotation2d gyro_angle, object left_distance,
+                    object right_distance)
 
 @cython.final
 cdef class TwoDeadWheelPoseEstimator(_PoseEstimator):
     cdef TwoDeadWheelOdometry two
-    cdef Pose2d _at(self, double t, double xWheelPos, double yWheelPos, Rotation2d gyroAngle)
+    cdef Pose2d _at(self, double t, double x_wheel_pos, double y_wheel_pos,
+                    Rotation2d gyro_angle)
 
 @cython.final
 cdef class DeadWheelPoseEstimator(_PoseEstimator):
     cdef DeadWheelOdometry dead
-    cdef Pose2d _at(self, double t, object wheelPositions, object gyroAngle)
+    cdef Pose2d _at(self, double t, object wheel_positions, object gyro_angle)

@@ -84,19 +84,19 @@ class _PoseEstimator:
         history) with the vision corrections known for that time, or None before the
         first update after construction or a reset."""
 
-    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs: _StdDevs) -> None:
+    def setVisionMeasurementStdDevs(self, vision_measurement_std_devs: _StdDevs) -> None:
         """Set how much vision is trusted: standard deviations of the measured x (m),
         y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
         values trust vision less."""
 
     def addVisionMeasurement(
         self,
-        visionRobotPose: Pose2d,
+        vision_robot_pose: Pose2d,
         timestamp: float,
-        visionMeasurementStdDevs: _StdDevs | None = None,
+        vision_measurement_std_devs: _StdDevs | None = None,
     ) -> None:
         """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
-        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
+        on the estimator's clock). With ``vision_measurement_std_devs`` (x m, y m, θ rad) those
         become the standard deviations for this and later measurements (as
         :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
         newest odometry sample is ignored, as is any before the first update.
@@ -130,7 +130,7 @@ class _PoseEstimator:
 
 @final
 class SwerveDrivePoseEstimator(_PoseEstimator):
-    """SwerveDrivePoseEstimator(kinematics, gyroAngle, modulePositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+    """SwerveDrivePoseEstimator(kinematics, gyro_angle, module_positions, initial_pose, state_std_devs=(0.1, 0.1, 0.1), vision_measurement_std_devs=(0.9, 0.9, 0.9))
 
     Swerve odometry (any N ≥ 2 modules) fused with vision. Module positions as for
     SwerveDriveOdometry (SwerveModulePosition objects or an (N, 2) float64 array);
@@ -140,23 +140,23 @@ class SwerveDrivePoseEstimator(_PoseEstimator):
     def __init__(
         self,
         kinematics: SwerveDriveKinematics,
-        gyroAngle: Rotation2d,
-        modulePositions: _ModulePositions,
-        initialPose: Pose2d,
-        stateStdDevs: _StdDevs = (0.1, 0.1, 0.1),
-        visionMeasurementStdDevs: _StdDevs = (0.9, 0.9, 0.9),
+        gyro_angle: Rotation2d,
+        module_positions: _ModulePositions,
+        initial_pose: Pose2d,
+        state_std_devs: _StdDevs = (0.1, 0.1, 0.1),
+        vision_measurement_std_devs: _StdDevs = (0.9, 0.9, 0.9),
     ) -> None: ...
-    def update(self, gyroAngle: Rotation2d, modulePositions: _ModulePositions) -> Pose2d:
+    def update(self, gyro_angle: Rotation2d, wheel_positions: _ModulePositions) -> Pose2d:
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
 
     def updateWithTime(
-        self, currentTime: float, gyroAngle: Rotation2d, modulePositions: _ModulePositions
+        self, current_time: float, gyro_angle: Rotation2d, wheel_positions: _ModulePositions
     ) -> Pose2d:
         """Update the odometry with the gyro angle and module positions read at
-        ``currentTime`` (s); return the new estimate (Pose2d, field frame, m)."""
+        ``current_time`` (s); return the new estimate (Pose2d, field frame, m)."""
 
     def resetPosition(
-        self, gyroAngle: Rotation2d, modulePositions: _ModulePositions, pose: Pose2d
+        self, gyro_angle: Rotation2d, wheel_positions: _ModulePositions, pose: Pose2d
     ) -> None:
         """Reset the odometry (gyro and module baselines, pose) and forget the history
         and every vision correction."""
@@ -167,7 +167,7 @@ class SwerveDrivePoseEstimator(_PoseEstimator):
 
 @final
 class MecanumDrivePoseEstimator(_PoseEstimator):
-    """MecanumDrivePoseEstimator(kinematics, gyroAngle, wheelPositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.45, 0.45, 0.45))
+    """MecanumDrivePoseEstimator(kinematics, gyro_angle, wheel_positions, initial_pose, state_std_devs=(0.1, 0.1, 0.1), vision_measurement_std_devs=(0.45, 0.45, 0.45))
 
     Mecanum odometry fused with vision; standard deviations of x (m), y (m) and heading
     (rad).
@@ -176,23 +176,26 @@ class MecanumDrivePoseEstimator(_PoseEstimator):
     def __init__(
         self,
         kinematics: MecanumDriveKinematics,
-        gyroAngle: Rotation2d,
-        wheelPositions: MecanumDriveWheelPositions,
-        initialPose: Pose2d,
-        stateStdDevs: _StdDevs = (0.1, 0.1, 0.1),
-        visionMeasurementStdDevs: _StdDevs = (0.45, 0.45, 0.45),
+        gyro_angle: Rotation2d,
+        wheel_positions: MecanumDriveWheelPositions,
+        initial_pose: Pose2d,
+        state_std_devs: _StdDevs = (0.1, 0.1, 0.1),
+        vision_measurement_std_devs: _StdDevs = (0.45, 0.45, 0.45),
     ) -> None: ...
-    def update(self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions) -> Pose2d:
+    def update(self, gyro_angle: Rotation2d, wheel_positions: MecanumDriveWheelPositions) -> Pose2d:
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
 
     def updateWithTime(
-        self, currentTime: float, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions
+        self,
+        current_time: float,
+        gyro_angle: Rotation2d,
+        wheel_positions: MecanumDriveWheelPositions,
     ) -> Pose2d:
         """Update the odometry with the gyro angle and wheel positions (m) read at
-        ``currentTime`` (s); return the new estimate."""
+        ``current_time`` (s); return the new estimate."""
 
     def resetPosition(
-        self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions, pose: Pose2d
+        self, gyro_angle: Rotation2d, wheel_positions: MecanumDriveWheelPositions, pose: Pose2d
     ) -> None:
         """Reset the odometry and forget the history and every vision correction."""
 
@@ -202,7 +205,7 @@ class MecanumDrivePoseEstimator(_PoseEstimator):
 
 @final
 class DifferentialDrivePoseEstimator(_PoseEstimator):
-    """DifferentialDrivePoseEstimator(gyroAngle, leftDistance, rightDistance, initialPose, stateStdDevs=(0.02, 0.02, 0.01), visionMeasurementStdDevs=(0.1, 0.1, 0.1))
+    """DifferentialDrivePoseEstimator(gyro_angle, left_distance, right_distance, initial_pose, state_std_devs=(0.02, 0.02, 0.01), vision_measurement_std_devs=(0.1, 0.1, 0.1))
 
     Differential-drive odometry fused with vision (2027: no kinematics argument).
     Distances in m; ``update``, ``updateWithTime`` and ``resetPosition`` also take one
@@ -211,48 +214,52 @@ class DifferentialDrivePoseEstimator(_PoseEstimator):
 
     def __init__(
         self,
-        gyroAngle: Rotation2d,
-        leftDistance: float,
-        rightDistance: float,
-        initialPose: Pose2d,
-        stateStdDevs: _StdDevs = (0.02, 0.02, 0.01),
-        visionMeasurementStdDevs: _StdDevs = (0.1, 0.1, 0.1),
+        gyro_angle: Rotation2d,
+        left_distance: float,
+        right_distance: float,
+        initial_pose: Pose2d,
+        state_std_devs: _StdDevs = (0.02, 0.02, 0.01),
+        vision_measurement_std_devs: _StdDevs = (0.1, 0.1, 0.1),
     ) -> None: ...
     @overload
-    def update(self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float) -> Pose2d:
-        """update(gyroAngle, leftDistance, rightDistance) or update(gyroAngle,
-        wheelPositions): updateWithTime at :meth:`MathSharedStore.getTimestamp`."""
+    def update(self, gyro_angle: Rotation2d, left_distance: float, right_distance: float) -> Pose2d:
+        """update(gyro_angle, left_distance, right_distance) or update(gyro_angle,
+        wheel_positions): updateWithTime at :meth:`MathSharedStore.getTimestamp`."""
 
     @overload
     def update(
-        self, gyroAngle: Rotation2d, leftDistance: DifferentialDriveWheelPositions
+        self, gyro_angle: Rotation2d, left_distance: DifferentialDriveWheelPositions
     ) -> Pose2d: ...
 
     @overload
     def updateWithTime(
-        self, currentTime: float, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float
+        self,
+        current_time: float,
+        gyro_angle: Rotation2d,
+        left_distance: float,
+        right_distance: float,
     ) -> Pose2d:
         """Update the odometry with the gyro angle and the wheel distances (m) read at
-        ``currentTime`` (s); return the new estimate."""
+        ``current_time`` (s); return the new estimate."""
 
     @overload
     def updateWithTime(
-        self, currentTime: float, gyroAngle: Rotation2d,
-        leftDistance: DifferentialDriveWheelPositions,
+        self, current_time: float, gyro_angle: Rotation2d,
+        left_distance: DifferentialDriveWheelPositions,
     ) -> Pose2d: ...
 
     @overload
     def resetPosition(
-        self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float, pose: Pose2d
+        self, gyro_angle: Rotation2d, left_distance: float, right_distance: float, pose: Pose2d
     ) -> None:
-        """resetPosition(gyroAngle, leftDistance, rightDistance, pose) or
-        resetPosition(gyroAngle, wheelPositions, pose): reset the odometry and forget the
+        """resetPosition(gyro_angle, left_distance, right_distance, pose) or
+        resetPosition(gyro_angle, wheel_positions, pose): reset the odometry and forget the
         history and every vision correction."""
 
     @overload
     def resetPosition(
-        self, gyroAngle: Rotation2d, leftDistance: DifferentialDriveWheelPositions,
-        rightDistance: Pose2d,
+        self, gyro_angle: Rotation2d, left_distance: DifferentialDriveWheelPositions,
+        right_distance: Pose2d,
     ) -> None: ...
 
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
@@ -261,34 +268,34 @@ class DifferentialDrivePoseEstimator(_PoseEstimator):
 
 @final
 class TwoDeadWheelPoseEstimator(_PoseEstimator):
-    """TwoDeadWheelPoseEstimator(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+    """TwoDeadWheelPoseEstimator(x_wheel_y_pos, y_wheel_x_pos, x_wheel_pos, y_wheel_pos, gyro_angle, initial_pose, state_std_devs=(0.1, 0.1, 0.1), vision_measurement_std_devs=(0.9, 0.9, 0.9))
 
-    TwoDeadWheelOdometry (a forward wheel at y = xWheelYPos, a left wheel at
-    x = yWheelXPos, m; distances in m; a gyro) fused with vision.
+    TwoDeadWheelOdometry (a forward wheel at y = x_wheel_y_pos, a left wheel at
+    x = y_wheel_x_pos, m; distances in m; a gyro) fused with vision.
     """
 
     def __init__(
         self,
-        xWheelYPos: float,
-        yWheelXPos: float,
-        xWheelPos: float,
-        yWheelPos: float,
-        gyroAngle: Rotation2d,
-        initialPose: Pose2d,
-        stateStdDevs: _StdDevs = (0.1, 0.1, 0.1),
-        visionMeasurementStdDevs: _StdDevs = (0.9, 0.9, 0.9),
+        x_wheel_y_pos: float,
+        y_wheel_x_pos: float,
+        x_wheel_pos: float,
+        y_wheel_pos: float,
+        gyro_angle: Rotation2d,
+        initial_pose: Pose2d,
+        state_std_devs: _StdDevs = (0.1, 0.1, 0.1),
+        vision_measurement_std_devs: _StdDevs = (0.9, 0.9, 0.9),
     ) -> None: ...
-    def update(self, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d) -> Pose2d:
+    def update(self, x_wheel_pos: float, y_wheel_pos: float, gyro_angle: Rotation2d) -> Pose2d:
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
 
     def updateWithTime(
-        self, currentTime: float, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d
+        self, current_time: float, x_wheel_pos: float, y_wheel_pos: float, gyro_angle: Rotation2d
     ) -> Pose2d:
         """Update the odometry with the wheel distances (m) and gyro angle read at
-        ``currentTime`` (s); return the new estimate."""
+        ``current_time`` (s); return the new estimate."""
 
     def resetPosition(
-        self, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d, pose: Pose2d
+        self, x_wheel_pos: float, y_wheel_pos: float, gyro_angle: Rotation2d, pose: Pose2d
     ) -> None:
         """Reset the odometry and forget the history and every vision correction."""
 
@@ -298,7 +305,7 @@ class TwoDeadWheelPoseEstimator(_PoseEstimator):
 
 @final
 class DeadWheelPoseEstimator(_PoseEstimator):
-    """DeadWheelPoseEstimator(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d(), stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+    """DeadWheelPoseEstimator(kinematics, wheel_positions, gyro_angle=None, initial_pose=Pose2d(), state_std_devs=(0.1, 0.1, 0.1), vision_measurement_std_devs=(0.9, 0.9, 0.9))
 
     DeadWheelOdometry (any dead-wheel layout, with or without a gyro; distances in m)
     fused with vision.
@@ -307,30 +314,30 @@ class DeadWheelPoseEstimator(_PoseEstimator):
     def __init__(
         self,
         kinematics: DeadWheelKinematics,
-        wheelPositions: _WheelReadings,
-        gyroAngle: Rotation2d | None = None,
-        initialPose: Pose2d | None = None,
-        stateStdDevs: _StdDevs = (0.1, 0.1, 0.1),
-        visionMeasurementStdDevs: _StdDevs = (0.9, 0.9, 0.9),
+        wheel_positions: _WheelReadings,
+        gyro_angle: Rotation2d | None = None,
+        initial_pose: Pose2d | None = None,
+        state_std_devs: _StdDevs = (0.1, 0.1, 0.1),
+        vision_measurement_std_devs: _StdDevs = (0.9, 0.9, 0.9),
     ) -> None: ...
     def update(
-        self, wheelPositions: _WheelReadings, gyroAngle: Rotation2d | None = None
+        self, wheel_positions: _WheelReadings, gyro_angle: Rotation2d | None = None
     ) -> Pose2d:
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
 
     def updateWithTime(
         self,
-        currentTime: float,
-        wheelPositions: _WheelReadings,
-        gyroAngle: Rotation2d | None = None,
+        current_time: float,
+        wheel_positions: _WheelReadings,
+        gyro_angle: Rotation2d | None = None,
     ) -> Pose2d:
         """Update the odometry with the wheel distances (m) (and the gyro angle, when it
-        has one) read at ``currentTime`` (s); return the new estimate."""
+        has one) read at ``current_time`` (s); return the new estimate."""
 
     def resetPosition(
-        self, wheelPositions: _WheelReadings, gyroAngle: Rotation2d | None, pose: Pose2d
+        self, wheel_positions: _WheelReadings, gyro_angle: Rotation2d | None, pose: Pose2d
     ) -> None:
-        """Reset the odometry (``gyroAngle`` None without a gyro) and forget the history
+        """Reset the odometry (``gyro_angle`` None without a gyro) and forget the history
         and every vision correction."""
 
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)

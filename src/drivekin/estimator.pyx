@@ -183,14 +183,14 @@ cdef class _PoseEstimator:
         PyMem_Free(self.buf)
         PyMem_Free(self.rec)
 
-    cdef int _init(self, _Odometry odo, object stateStdDevs, object visionStdDevs) except -1:
+    cdef int _init(self, _Odometry odo, object state_std_devs, object vision_std_devs) except -1:
         # Called by the concrete constructors after they built the odometry and before
         # anything is stored; ``ready`` is set last.
         cdef double sd[3]
         cdef double vd[3]
         cdef Py_ssize_t i
-        read_std_devs(stateStdDevs, "stateStdDevs", sd)
-        read_std_devs(visionStdDevs, "visionMeasurementStdDevs", vd)
+        read_std_devs(state_std_devs, "state_std_devs", sd)
+        read_std_devs(vision_std_devs, "vision_measurement_std_devs", vd)
         cdef sample_t* buf = <sample_t*>PyMem_Malloc(sizeof(sample_t) * INITIAL_SAMPLES)
         cdef record_t* rec = <record_t*>PyMem_Malloc(sizeof(record_t) * INITIAL_RECORDS)
         if buf == NULL or rec == NULL:
@@ -394,25 +394,25 @@ cdef class _PoseEstimator:
             return None
         return new_pose(p)
 
-    def setVisionMeasurementStdDevs(self, visionMeasurementStdDevs):
+    def setVisionMeasurementStdDevs(self, vision_measurement_std_devs):
         """Set how much vision is trusted: standard deviations of the measured x (m),
         y (m) and heading (rad), any sequence of 3 numbers or a float64 array. Larger
         values trust vision less."""
         self._check()
-        self._set_vision_std_devs(visionMeasurementStdDevs)
+        self._set_vision_std_devs(vision_measurement_std_devs)
 
     cdef int _set_vision_std_devs(self, object values) except -1:
         cdef double vd[3]
         cdef Py_ssize_t i
-        read_std_devs(values, "visionMeasurementStdDevs", vd)
+        read_std_devs(values, "vision_measurement_std_devs", vd)
         for i in range(3):
             self.k[i] = gain(self.sd[i], vd[i])
         return 0
 
-    def addVisionMeasurement(self, visionRobotPose: Pose2d, double timestamp,
-                             visionMeasurementStdDevs=None):
+    def addVisionMeasurement(self, vision_robot_pose: Pose2d, double timestamp,
+                             vision_measurement_std_devs=None):
         """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
-        on the estimator's clock). With ``visionMeasurementStdDevs`` (x m, y m, θ rad) those
+        on the estimator's clock). With ``vision_measurement_std_devs`` (x m, y m, θ rad) those
         become the standard deviations for this and later measurements (as
         :meth:`setVisionMeasurementStdDevs`). A measurement older than 1.5 s before the
         newest odometry sample is ignored, as is any before the first update.
@@ -422,7 +422,7 @@ cdef class _PoseEstimator:
         estimator issues a :class:`ClockMismatchWarning`. A measurement that far ahead is
         applied as WPILib does, but replaces the earlier ones that far ahead instead of
         being kept with them, so such a stream keeps one record."""
-        check_type(visionRobotPose, Pose2d, "visionRobotPose")
+        check_type(vision_robot_pose, Pose2d, "vision_robot_pose")
         cdef sample_t* b
         cdef pose2_t odometry_sample, vision_sample, delta, scaled
         cdef record_t* r
@@ -432,8 +432,8 @@ cdef class _PoseEstimator:
         cdef record_t* grown
         self._check()
         finite_time(timestamp, "timestamp")
-        if visionMeasurementStdDevs is not None:
-            self._set_vision_std_devs(visionMeasurementStdDevs)
+        if vision_measurement_std_devs is not None:
+            self._set_vision_std_devs(vision_measurement_std_devs)
         if self.count == 0:
             return
         b = self.buf + self.start
@@ -462,7 +462,7 @@ cdef class _PoseEstimator:
         clamped = min(max(timestamp, b[0].t), newest)
         i = self._first_record_after(clamped) - 1
         vision_sample = odometry_sample if i < 0 else compensate(self.rec + i, odometry_sample)
-        delta = pose_relative_to((<Pose2d>visionRobotPose).p, vision_sample)
+        delta = pose_relative_to((<Pose2d>vision_robot_pose).p, vision_sample)
         scaled = pose(vec(self.k[0] * delta.t.x, self.k[1] * delta.t.y),
                       rot_times(delta.r, self.k[2]))
         # Store under the unclamped timestamp, replacing an equal one; later records go
@@ -539,108 +539,108 @@ _DEFAULT_STATE = (0.1, 0.1, 0.1)
 
 
 cdef class SwerveDrivePoseEstimator(_PoseEstimator):
-    """SwerveDrivePoseEstimator(kinematics, gyroAngle, modulePositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+    """SwerveDrivePoseEstimator(kinematics, gyro_angle, module_positions, initial_pose, state_std_devs=(0.1, 0.1, 0.1), vision_measurement_std_devs=(0.9, 0.9, 0.9))
 
     Swerve odometry (any N ≥ 2 modules) fused with vision. Module positions as for
     SwerveDriveOdometry (SwerveModulePosition objects or an (N, 2) float64 array);
     standard deviations of x (m), y (m) and heading (rad).
     """
 
-    def __init__(self, kinematics, gyroAngle: Rotation2d,
-                 modulePositions, initialPose: Pose2d,
-                 stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(initialPose, Pose2d, "initialPose")
+    def __init__(self, kinematics, gyro_angle: Rotation2d,
+                 module_positions, initial_pose: Pose2d,
+                 state_std_devs=_DEFAULT_STATE, vision_measurement_std_devs=(0.9, 0.9, 0.9)):
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(initial_pose, Pose2d, "initial_pose")
         self._start()
-        odo = SwerveDriveOdometry(kinematics, gyroAngle, modulePositions, initialPose)
-        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        odo = SwerveDriveOdometry(kinematics, gyro_angle, module_positions, initial_pose)
+        self._init(odo, state_std_devs, vision_measurement_std_devs)
         self.swerve = odo
 
-    def update(self, gyroAngle: Rotation2d, modulePositions):
+    def update(self, gyro_angle: Rotation2d, wheel_positions):
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        return self._at(clock_now(), gyroAngle, modulePositions)
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        return self._at(clock_now(), gyro_angle, wheel_positions)
 
-    def updateWithTime(self, double currentTime, gyroAngle: Rotation2d,
-                       modulePositions):
+    def updateWithTime(self, double current_time, gyro_angle: Rotation2d,
+                       wheel_positions):
         """Update the odometry with the gyro angle and module positions read at
-        ``currentTime`` (s); return the new estimate (Pose2d, field frame, m)."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        return self._at(currentTime, gyroAngle, modulePositions)
+        ``current_time`` (s); return the new estimate (Pose2d, field frame, m)."""
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        return self._at(current_time, gyro_angle, wheel_positions)
 
-    cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object modulePositions):
+    cdef Pose2d _at(self, double t, Rotation2d gyro_angle, object wheel_positions):
         if not self.ready:
             self._check()
-        finite_time(t, "currentTime")
+        finite_time(t, "current_time")
         if self.start + self.count == self.cap:
             self._reserve()
-        self.swerve._step(gyroAngle, modulePositions)
+        self.swerve._step(gyro_angle, wheel_positions)
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, gyroAngle: Rotation2d, modulePositions,
+    def resetPosition(self, gyro_angle: Rotation2d, wheel_positions,
                       pose: Pose2d):
         """Reset the odometry (gyro and module baselines, pose) and forget the history
         and every vision correction."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
         check_type(pose, Pose2d, "pose")
         self._check()
-        self.swerve.resetPosition(gyroAngle, modulePositions, pose)
+        self.swerve.resetPosition(gyro_angle, wheel_positions, pose)
         self._reset_done()
 
 
 cdef class MecanumDrivePoseEstimator(_PoseEstimator):
-    """MecanumDrivePoseEstimator(kinematics, gyroAngle, wheelPositions, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.45, 0.45, 0.45))
+    """MecanumDrivePoseEstimator(kinematics, gyro_angle, wheel_positions, initial_pose, state_std_devs=(0.1, 0.1, 0.1), vision_measurement_std_devs=(0.45, 0.45, 0.45))
 
     Mecanum odometry fused with vision; standard deviations of x (m), y (m) and heading
     (rad).
     """
 
-    def __init__(self, kinematics, gyroAngle: Rotation2d,
-                 wheelPositions: MecanumDriveWheelPositions, initialPose: Pose2d,
-                 stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.45, 0.45, 0.45)):
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
-        check_type(initialPose, Pose2d, "initialPose")
+    def __init__(self, kinematics, gyro_angle: Rotation2d,
+                 wheel_positions: MecanumDriveWheelPositions, initial_pose: Pose2d,
+                 state_std_devs=_DEFAULT_STATE, vision_measurement_std_devs=(0.45, 0.45, 0.45)):
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(wheel_positions, MecanumDriveWheelPositions, "wheel_positions")
+        check_type(initial_pose, Pose2d, "initial_pose")
         self._start()
-        odo = MecanumDriveOdometry(kinematics, gyroAngle, wheelPositions, initialPose)
-        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        odo = MecanumDriveOdometry(kinematics, gyro_angle, wheel_positions, initial_pose)
+        self._init(odo, state_std_devs, vision_measurement_std_devs)
         self.mecanum = odo
 
-    def update(self, gyroAngle: Rotation2d,
-               wheelPositions: MecanumDriveWheelPositions):
+    def update(self, gyro_angle: Rotation2d,
+               wheel_positions: MecanumDriveWheelPositions):
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
-        return self._at(clock_now(), gyroAngle, wheelPositions)
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(wheel_positions, MecanumDriveWheelPositions, "wheel_positions")
+        return self._at(clock_now(), gyro_angle, wheel_positions)
 
-    def updateWithTime(self, double currentTime, gyroAngle: Rotation2d,
-                       wheelPositions: MecanumDriveWheelPositions):
+    def updateWithTime(self, double current_time, gyro_angle: Rotation2d,
+                       wheel_positions: MecanumDriveWheelPositions):
         """Update the odometry with the gyro angle and wheel positions (m) read at
-        ``currentTime`` (s); return the new estimate."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
-        return self._at(currentTime, gyroAngle, wheelPositions)
+        ``current_time`` (s); return the new estimate."""
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(wheel_positions, MecanumDriveWheelPositions, "wheel_positions")
+        return self._at(current_time, gyro_angle, wheel_positions)
 
-    cdef Pose2d _at(self, double t, Rotation2d gyroAngle,
-                    MecanumDriveWheelPositions wheelPositions):
+    cdef Pose2d _at(self, double t, Rotation2d gyro_angle,
+                    MecanumDriveWheelPositions wheel_positions):
         if not self.ready:
             self._check()
-        finite_time(t, "currentTime")
+        finite_time(t, "current_time")
         if self.start + self.count == self.cap:
             self._reserve()
-        self.mecanum._step(gyroAngle, wheelPositions)
+        self.mecanum._step(gyro_angle, wheel_positions)
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, gyroAngle: Rotation2d,
-                      wheelPositions: MecanumDriveWheelPositions, pose: Pose2d):
+    def resetPosition(self, gyro_angle: Rotation2d,
+                      wheel_positions: MecanumDriveWheelPositions, pose: Pose2d):
         """Reset the odometry and forget the history and every vision correction."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(wheel_positions, MecanumDriveWheelPositions, "wheel_positions")
         check_type(pose, Pose2d, "pose")
         self._check()
-        self.mecanum.resetPosition(gyroAngle, wheelPositions, pose)
+        self.mecanum.resetPosition(gyro_angle, wheel_positions, pose)
         self._reset_done()
 
 
@@ -667,154 +667,155 @@ cdef inline int wheel_pair(object first, object second, double* l, double* r,
 
 
 cdef class DifferentialDrivePoseEstimator(_PoseEstimator):
-    """DifferentialDrivePoseEstimator(gyroAngle, leftDistance, rightDistance, initialPose, stateStdDevs=(0.02, 0.02, 0.01), visionMeasurementStdDevs=(0.1, 0.1, 0.1))
+    """DifferentialDrivePoseEstimator(gyro_angle, left_distance, right_distance, initial_pose, state_std_devs=(0.02, 0.02, 0.01), vision_measurement_std_devs=(0.1, 0.1, 0.1))
 
     Differential-drive odometry fused with vision (2027: no kinematics argument).
     Distances in m; ``update``, ``updateWithTime`` and ``resetPosition`` also take one
     DifferentialDriveWheelPositions instead of the two distances.
     """
 
-    def __init__(self, gyroAngle: Rotation2d, double leftDistance,
-                 double rightDistance, initialPose: Pose2d,
-                 stateStdDevs=(0.02, 0.02, 0.01), visionMeasurementStdDevs=(0.1, 0.1, 0.1)):
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(initialPose, Pose2d, "initialPose")
+    def __init__(self, gyro_angle: Rotation2d, double left_distance,
+                 double right_distance, initial_pose: Pose2d,
+                 state_std_devs=(0.02, 0.02, 0.01), vision_measurement_std_devs=(0.1, 0.1, 0.1)):
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(initial_pose, Pose2d, "initial_pose")
         self._start()
-        odo = DifferentialDriveOdometry(gyroAngle, leftDistance, rightDistance, initialPose)
-        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        odo = DifferentialDriveOdometry(gyro_angle, left_distance, right_distance, initial_pose)
+        self._init(odo, state_std_devs, vision_measurement_std_devs)
         self.differential = odo
 
-    def update(self, gyroAngle: Rotation2d, leftDistance, rightDistance=None):
-        """update(gyroAngle, leftDistance, rightDistance) or update(gyroAngle,
-        wheelPositions): updateWithTime at :meth:`MathSharedStore.getTimestamp`."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        return self._at(clock_now(), gyroAngle, leftDistance, rightDistance)
+    def update(self, gyro_angle: Rotation2d, left_distance, right_distance=None):
+        """update(gyro_angle, left_distance, right_distance) or update(gyro_angle,
+        wheel_positions): updateWithTime at :meth:`MathSharedStore.getTimestamp`."""
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        return self._at(clock_now(), gyro_angle, left_distance, right_distance)
 
-    def updateWithTime(self, double currentTime, gyroAngle: Rotation2d, leftDistance,
-                       rightDistance=None):
+    def updateWithTime(self, double current_time, gyro_angle: Rotation2d, left_distance,
+                       right_distance=None):
         """Update the odometry with the gyro angle and the wheel distances (m) read at
-        ``currentTime`` (s); return the new estimate."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        return self._at(currentTime, gyroAngle, leftDistance, rightDistance)
+        ``current_time`` (s); return the new estimate."""
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        return self._at(current_time, gyro_angle, left_distance, right_distance)
 
-    cdef Pose2d _at(self, double t, Rotation2d gyroAngle, object leftDistance,
-                    object rightDistance):
+    cdef Pose2d _at(self, double t, Rotation2d gyro_angle, object left_distance,
+                    object right_distance):
         cdef double l, r
         if not self.ready:
             self._check()
-        finite_time(t, "currentTime")
-        wheel_pair(leftDistance, rightDistance, &l, &r, "update")
+        finite_time(t, "current_time")
+        wheel_pair(left_distance, right_distance, &l, &r, "update")
         if self.start + self.count == self.cap:
             self._reserve()
-        self.differential._step(gyroAngle, l, r)
+        self.differential._step(gyro_angle, l, r)
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, gyroAngle: Rotation2d, leftDistance, rightDistance,
+    def resetPosition(self, gyro_angle: Rotation2d, left_distance, right_distance,
                       pose=None):
-        """resetPosition(gyroAngle, leftDistance, rightDistance, pose) or
-        resetPosition(gyroAngle, wheelPositions, pose): reset the odometry and forget the
+        """resetPosition(gyro_angle, left_distance, right_distance, pose) or
+        resetPosition(gyro_angle, wheel_positions, pose): reset the odometry and forget the
         history and every vision correction."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
         cdef double l, r
         self._check()
         if pose is None:
-            pose, rightDistance = rightDistance, None
+            pose, right_distance = right_distance, None
         if type(pose) is not Pose2d:
             raise TypeError(f"pose must be a Pose2d, got {type_name(pose)}")
-        wheel_pair(leftDistance, rightDistance, &l, &r, "resetPosition")
-        self.differential.resetPosition(gyroAngle, l, r, pose)
+        wheel_pair(left_distance, right_distance, &l, &r, "resetPosition")
+        self.differential.resetPosition(gyro_angle, l, r, pose)
         self._reset_done()
 
 
 cdef class TwoDeadWheelPoseEstimator(_PoseEstimator):
-    """TwoDeadWheelPoseEstimator(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose, stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+    """TwoDeadWheelPoseEstimator(x_wheel_y_pos, y_wheel_x_pos, x_wheel_pos, y_wheel_pos, gyro_angle, initial_pose, state_std_devs=(0.1, 0.1, 0.1), vision_measurement_std_devs=(0.9, 0.9, 0.9))
 
-    TwoDeadWheelOdometry (a forward wheel at y = xWheelYPos, a left wheel at
-    x = yWheelXPos, m; distances in m; a gyro) fused with vision.
+    TwoDeadWheelOdometry (a forward wheel at y = x_wheel_y_pos, a left wheel at
+    x = y_wheel_x_pos, m; distances in m; a gyro) fused with vision.
     """
 
-    def __init__(self, double xWheelYPos, double yWheelXPos, double xWheelPos,
-                 double yWheelPos, gyroAngle: Rotation2d, initialPose: Pose2d,
-                 stateStdDevs=_DEFAULT_STATE, visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(initialPose, Pose2d, "initialPose")
+    def __init__(self, double x_wheel_y_pos, double y_wheel_x_pos, double x_wheel_pos,
+                 double y_wheel_pos, gyro_angle: Rotation2d, initial_pose: Pose2d,
+                 state_std_devs=_DEFAULT_STATE, vision_measurement_std_devs=(0.9, 0.9, 0.9)):
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(initial_pose, Pose2d, "initial_pose")
         self._start()
-        odo = TwoDeadWheelOdometry(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle,
-                                   initialPose)
-        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        odo = TwoDeadWheelOdometry(x_wheel_y_pos, y_wheel_x_pos, x_wheel_pos, y_wheel_pos,
+                                   gyro_angle, initial_pose)
+        self._init(odo, state_std_devs, vision_measurement_std_devs)
         self.two = odo
 
-    def update(self, double xWheelPos, double yWheelPos, gyroAngle: Rotation2d):
+    def update(self, double x_wheel_pos, double y_wheel_pos, gyro_angle: Rotation2d):
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        return self._at(clock_now(), xWheelPos, yWheelPos, gyroAngle)
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        return self._at(clock_now(), x_wheel_pos, y_wheel_pos, gyro_angle)
 
-    def updateWithTime(self, double currentTime, double xWheelPos, double yWheelPos,
-                       gyroAngle: Rotation2d):
+    def updateWithTime(self, double current_time, double x_wheel_pos, double y_wheel_pos,
+                       gyro_angle: Rotation2d):
         """Update the odometry with the wheel distances (m) and gyro angle read at
-        ``currentTime`` (s); return the new estimate."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        return self._at(currentTime, xWheelPos, yWheelPos, gyroAngle)
+        ``current_time`` (s); return the new estimate."""
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        return self._at(current_time, x_wheel_pos, y_wheel_pos, gyro_angle)
 
-    cdef Pose2d _at(self, double t, double xWheelPos, double yWheelPos, Rotation2d gyroAngle):
+    cdef Pose2d _at(self, double t, double x_wheel_pos, double y_wheel_pos,
+                    Rotation2d gyro_angle):
         if not self.ready:
             self._check()
-        finite_time(t, "currentTime")
+        finite_time(t, "current_time")
         if self.start + self.count == self.cap:
             self._reserve()
-        self.two._step(xWheelPos, yWheelPos, gyroAngle)
+        self.two._step(x_wheel_pos, y_wheel_pos, gyro_angle)
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, double xWheelPos, double yWheelPos, gyroAngle: Rotation2d,
+    def resetPosition(self, double x_wheel_pos, double y_wheel_pos, gyro_angle: Rotation2d,
                       pose: Pose2d):
         """Reset the odometry and forget the history and every vision correction."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
         check_type(pose, Pose2d, "pose")
         self._check()
-        self.two.resetPosition(xWheelPos, yWheelPos, gyroAngle, pose)
+        self.two.resetPosition(x_wheel_pos, y_wheel_pos, gyro_angle, pose)
         self._reset_done()
 
 
 cdef class DeadWheelPoseEstimator(_PoseEstimator):
-    """DeadWheelPoseEstimator(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d(), stateStdDevs=(0.1, 0.1, 0.1), visionMeasurementStdDevs=(0.9, 0.9, 0.9))
+    """DeadWheelPoseEstimator(kinematics, wheel_positions, gyro_angle=None, initial_pose=Pose2d(), state_std_devs=(0.1, 0.1, 0.1), vision_measurement_std_devs=(0.9, 0.9, 0.9))
 
     DeadWheelOdometry (any dead-wheel layout, with or without a gyro; distances in m)
     fused with vision.
     """
 
-    def __init__(self, kinematics, wheelPositions,
-                 gyroAngle=None, initialPose=None, stateStdDevs=_DEFAULT_STATE,
-                 visionMeasurementStdDevs=(0.9, 0.9, 0.9)):
+    def __init__(self, kinematics, wheel_positions,
+                 gyro_angle=None, initial_pose=None, state_std_devs=_DEFAULT_STATE,
+                 vision_measurement_std_devs=(0.9, 0.9, 0.9)):
         self._start()
-        odo = DeadWheelOdometry(kinematics, wheelPositions, gyroAngle, initialPose)
-        self._init(odo, stateStdDevs, visionMeasurementStdDevs)
+        odo = DeadWheelOdometry(kinematics, wheel_positions, gyro_angle, initial_pose)
+        self._init(odo, state_std_devs, vision_measurement_std_devs)
         self.dead = odo
 
-    def update(self, wheelPositions, gyroAngle=None):
+    def update(self, wheel_positions, gyro_angle=None):
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
-        return self._at(clock_now(), wheelPositions, gyroAngle)
+        return self._at(clock_now(), wheel_positions, gyro_angle)
 
-    def updateWithTime(self, double currentTime, wheelPositions, gyroAngle=None):
+    def updateWithTime(self, double current_time, wheel_positions, gyro_angle=None):
         """Update the odometry with the wheel distances (m) (and the gyro angle, when it
-        has one) read at ``currentTime`` (s); return the new estimate."""
-        return self._at(currentTime, wheelPositions, gyroAngle)
+        has one) read at ``current_time`` (s); return the new estimate."""
+        return self._at(current_time, wheel_positions, gyro_angle)
 
-    cdef Pose2d _at(self, double t, object wheelPositions, object gyroAngle):
+    cdef Pose2d _at(self, double t, object wheel_positions, object gyro_angle):
         if not self.ready:
             self._check()
-        finite_time(t, "currentTime")
+        finite_time(t, "current_time")
         if self.start + self.count == self.cap:
             self._reserve()
-        self.dead._step(wheelPositions, gyroAngle)
+        self.dead._step(wheel_positions, gyro_angle)
         self._after_update(t)
         return new_pose(self.estimate)
 
-    def resetPosition(self, wheelPositions, gyroAngle, pose: Pose2d):
-        """Reset the odometry (``gyroAngle`` None without a gyro) and forget the history
+    def resetPosition(self, wheel_positions, gyro_angle, pose: Pose2d):
+        """Reset the odometry (``gyro_angle`` None without a gyro) and forget the history
         and every vision correction."""
         check_type(pose, Pose2d, "pose")
         self._check()
-        self.dead.resetPosition(wheelPositions, gyroAngle, pose)
+        self.dead.resetPosition(wheel_positions, gyro_angle, pose)
         self._reset_done()

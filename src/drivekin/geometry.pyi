@@ -102,8 +102,8 @@ class Translation2d:
     def nearest(self, translations: Iterable[Translation2d]) -> Translation2d:
         """Return the element of ``translations`` closest to this point (first on ties)."""
 
-    def interpolate(self, endValue: Translation2d, t: float) -> Translation2d:
-        """Return the linear interpolation towards ``endValue``; ``t`` is not clamped."""
+    def interpolate(self, end_value: Translation2d, t: float) -> Translation2d:
+        """Return the linear interpolation towards ``end_value``; ``t`` is not clamped."""
 
     def toVector(self) -> npt.NDArray[np.float64]:
         """Return ``numpy.array([x, y])``."""
@@ -233,8 +233,8 @@ class Rotation2d:
     def div(self, scalar: float) -> Rotation2d:
         """Return ``times(1 / scalar)``."""
 
-    def interpolate(self, endValue: Rotation2d, t: float) -> Rotation2d:
-        """Return ``self + (endValue − self) · t``, the short way round; ``t`` is not
+    def interpolate(self, end_value: Rotation2d, t: float) -> Rotation2d:
+        """Return ``self + (end_value − self) · t``, the short way round; ``t`` is not
         clamped (2027)."""
 
     def toMatrix(self) -> npt.NDArray[np.float64]:
@@ -363,10 +363,10 @@ class Pose2d(_Frame2d):
         """Return the pose in ``poses`` closest to this one: smallest translation distance,
         ties broken by the smallest heading difference."""
 
-    def interpolate(self, endValue: Pose2d, t: float) -> Pose2d:
-        """Interpolate along the constant-curvature arc to ``endValue``.
+    def interpolate(self, end_value: Pose2d, t: float) -> Pose2d:
+        """Interpolate along the constant-curvature arc to ``end_value``.
 
-        ``t < 0`` returns this pose and ``t ≥ 1`` returns ``endValue`` (WPILib's clamp)."""
+        ``t < 0`` returns this pose and ``t ≥ 1`` returns ``end_value`` (WPILib's clamp)."""
 
     @staticmethod
     def fromFeet(x: float, y: float, angle: Rotation2d | float) -> Pose2d:
@@ -400,11 +400,11 @@ class Pose2d(_Frame2d):
 @final
 class Transform2d(_Frame2d):
     """Transform2d() or Transform2d(translation, rotation) or Transform2d(x, y, rotation)
-    or Transform2d(initial, last) or Transform2d(matrix)
+    or Transform2d(initial, final) or Transform2d(matrix)
 
     A rigid motion: a translation in m followed by a rotation, expressed in the frame it
-    is applied to. ``Transform2d(initial, last)`` with two :class:`Pose2d` gives the
-    transform that maps ``initial`` onto ``last``. Immutable; ``==`` as for Pose2d.
+    is applied to. ``Transform2d(initial, final)`` with two :class:`Pose2d` gives the
+    transform that maps ``initial`` onto ``final``. Immutable; ``==`` as for Pose2d.
     """
 
     kZero: ClassVar[Transform2d]
@@ -418,7 +418,7 @@ class Transform2d(_Frame2d):
     @overload
     def __init__(self, matrix: npt.NDArray[np.float64], /) -> None: ...
     @overload
-    def __init__(self, initial: Pose2d, last: Pose2d) -> None: ...
+    def __init__(self, initial: Pose2d, final: Pose2d) -> None: ...
     def inverse(self) -> Transform2d:
         """Return the transform that undoes this one."""
 

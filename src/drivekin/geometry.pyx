@@ -189,10 +189,10 @@ cdef class Translation2d:
         """Return the element of ``translations`` closest to this point (first on ties)."""
         return min(translations, key=self.getDistance)
 
-    def interpolate(self, endValue: Translation2d, double t):
-        """Return the linear interpolation towards ``endValue``; ``t`` is not clamped."""
-        check_type(endValue, Translation2d, "endValue")
-        cdef vec2_t e = (<Translation2d>endValue).v
+    def interpolate(self, end_value: Translation2d, double t):
+        """Return the linear interpolation towards ``end_value``; ``t`` is not clamped."""
+        check_type(end_value, Translation2d, "end_value")
+        cdef vec2_t e = (<Translation2d>end_value).v
         return new_translation(vec(self.v.x + (e.x - self.v.x) * t,
                                    self.v.y + (e.y - self.v.y) * t))
 
@@ -372,11 +372,11 @@ cdef class Rotation2d:
         """Return ``times(1 / scalar)``."""
         return new_rotation(rot_times(self.r, 1.0 / scalar))
 
-    def interpolate(self, endValue: Rotation2d, double t):
-        """Return ``self + (endValue − self) · t``, the short way round; ``t`` is not
+    def interpolate(self, end_value: Rotation2d, double t):
+        """Return ``self + (end_value − self) · t``, the short way round; ``t`` is not
         clamped (2027)."""
-        check_type(endValue, Rotation2d, "endValue")
-        return new_rotation(rot_interp(self.r, (<Rotation2d>endValue).r, t))
+        check_type(end_value, Rotation2d, "end_value")
+        return new_rotation(rot_interp(self.r, (<Rotation2d>end_value).r, t))
 
     def toMatrix(self):
         """Return the 2×2 rotation matrix ``[[cos, −sin], [sin, cos]]``."""
@@ -684,16 +684,16 @@ cdef class Pose2d(_Frame2d):
             raise ValueError("nearest() of an empty sequence")
         return best
 
-    def interpolate(self, endValue: Pose2d, double t):
-        """Interpolate along the constant-curvature arc to ``endValue``.
+    def interpolate(self, end_value: Pose2d, double t):
+        """Interpolate along the constant-curvature arc to ``end_value``.
 
-        ``t < 0`` returns this pose and ``t ≥ 1`` returns ``endValue`` (WPILib's clamp)."""
-        check_type(endValue, Pose2d, "endValue")
+        ``t < 0`` returns this pose and ``t ≥ 1`` returns ``end_value`` (WPILib's clamp)."""
+        check_type(end_value, Pose2d, "end_value")
         if t < 0.0:
             return self
         if t >= 1.0:
-            return endValue
-        return new_pose(pose_interpolate(self.p, (<Pose2d>endValue).p, t))
+            return end_value
+        return new_pose(pose_interpolate(self.p, (<Pose2d>end_value).p, t))
 
     def __add__(self, other):
         if isinstance(other, Transform2d):
@@ -717,23 +717,23 @@ cdef class Pose2d(_Frame2d):
 # ---------------------------------------------------------------------------------------
 cdef class Transform2d(_Frame2d):
     """Transform2d() or Transform2d(translation, rotation) or Transform2d(x, y, rotation)
-    or Transform2d(initial, last) or Transform2d(matrix)
+    or Transform2d(initial, final) or Transform2d(matrix)
 
     A rigid motion: a translation in m followed by a rotation, expressed in the frame it
-    is applied to. ``Transform2d(initial, last)`` with two :class:`Pose2d` gives the
-    transform that maps ``initial`` onto ``last``. Immutable; ``==`` as for Pose2d.
+    is applied to. ``Transform2d(initial, final)`` with two :class:`Pose2d` gives the
+    transform that maps ``initial`` onto ``final``. Immutable; ``==`` as for Pose2d.
     """
 
     def __init__(self, a=None, b=None, c=None, /, *, translation=MISSING, rotation=MISSING,
-                 x=MISSING, y=MISSING, initial=MISSING, last=MISSING):
+                 x=MISSING, y=MISSING, initial=MISSING, final=MISSING):
         refuse_reinit(self.frozen, self)
-        if initial is not MISSING or last is not MISSING:
+        if initial is not MISSING or final is not MISSING:
             if a is not None or b is not None:
                 raise TypeError("Transform2d() got an argument both by position and by keyword")
             a = None if initial is MISSING else initial
-            b = None if last is MISSING else last
+            b = None if final is MISSING else final
             if not (isinstance(a, Pose2d) and isinstance(b, Pose2d)):
-                raise TypeError("Transform2d(initial, last) takes two Pose2d, got "
+                raise TypeError("Transform2d(initial, final) takes two Pose2d, got "
                                 f"{type_name(a)} and {type_name(b)}")
         if c is None and isinstance(a, Pose2d) and isinstance(b, Pose2d):
             self.p = pose_relative_to((<Pose2d>b).p, (<Pose2d>a).p)

@@ -48,27 +48,25 @@ def _time(entry: Tuple[float, Any]) -> float:
 
 
 class TimeInterpolatableBuffer(Generic[T]):
-    """TimeInterpolatableBuffer(interpolateFunction, historySize)
+    """TimeInterpolatableBuffer(func, history_size)
 
-    Samples keyed by time (s), keeping ``historySize`` seconds of history measured back
+    Samples keyed by time (s), keeping ``history_size`` seconds of history measured back
     from each newly added time. Build one with :meth:`createBuffer` or
     :meth:`createDoubleBuffer` (the constructor is the two-argument ``createBuffer``).
     """
 
     _ready = False     # set last by __init__: a __new__'d or failed object refuses work
 
-    def __init__(self, interpolateFunction: Callable[[T, T, float], T],
-                 historySize: float) -> None:
+    def __init__(self, func: Callable[[T, T, float], T], history_size: float) -> None:
         if self._ready:
             raise TypeError("TimeInterpolatableBuffer is already initialised: __init__ "
                             "cannot be called again (use clear)")
-        if not callable(interpolateFunction):
-            raise TypeError("interpolateFunction must be a callable f(start, end, t), got "
-                            f"{type_name(interpolateFunction)}")
-        history = _seconds(historySize, "historySize")
+        if not callable(func):
+            raise TypeError(f"func must be a callable f(start, end, t), got {type_name(func)}")
+        history = _seconds(history_size, "history_size")
         if history <= 0.0:
-            raise ValueError(f"historySize must be positive (s), got {history!r}")
-        self._f = interpolateFunction
+            raise ValueError(f"history_size must be positive (s), got {history!r}")
+        self._f = func
         self._history = history
         # An immutable snapshot, replaced whole: readers need no lock, and a writer
         # whose snapshot changed while it worked (another thread, or a finalizer that
@@ -83,22 +81,22 @@ class TimeInterpolatableBuffer(Generic[T]):
 
     @staticmethod
     def createBuffer(*args: Any) -> "TimeInterpolatableBuffer[Any]":
-        """createBuffer(historySize) or createBuffer(interpolateFunction, historySize).
+        """createBuffer(history_size) or createBuffer(func, history_size).
 
         With one argument the samples must have an ``interpolate(end, t)`` method
-        (Pose2d, Rotation2d, Translation2d, …); with two, ``interpolateFunction(start,
-        end, t)`` blends two samples (t in [0, 1]). ``historySize`` in s."""
+        (Pose2d, Rotation2d, Translation2d, …); with two, ``func(start, end, t)``
+        blends two samples (t in [0, 1]). ``history_size`` in s."""
         if len(args) == 1:
             return TimeInterpolatableBuffer(_interpolate_method, args[0])
         if len(args) == 2:
             return TimeInterpolatableBuffer(args[0], args[1])
-        raise TypeError("createBuffer takes (historySize) or (interpolateFunction, "
-                        f"historySize), got {len(args)} arguments")
+        raise TypeError("createBuffer takes (history_size) or (func, history_size), "
+                        f"got {len(args)} arguments")
 
     @staticmethod
-    def createDoubleBuffer(historySize: float) -> "TimeInterpolatableBuffer[float]":
-        """A buffer of floats, interpolated linearly; ``historySize`` in s."""
-        return TimeInterpolatableBuffer(_lerp, historySize)
+    def createDoubleBuffer(history_size: float) -> "TimeInterpolatableBuffer[float]":
+        """A buffer of floats, interpolated linearly; ``history_size`` in s."""
+        return TimeInterpolatableBuffer(_lerp, history_size)
 
     def _check(self) -> None:
         if not self._ready:
@@ -106,7 +104,7 @@ class TimeInterpolatableBuffer(Generic[T]):
 
     def addSample(self, time: float, sample: T) -> None:
         """Add ``sample`` taken at ``time`` (s). First every sample at least
-        ``historySize`` older than ``time`` is dropped (so an old sample drops nothing);
+        ``history_size`` older than ``time`` is dropped (so an old sample drops nothing);
         a sample already stored at ``time`` is replaced."""
         self._check()
         t = _seconds(time, "time")

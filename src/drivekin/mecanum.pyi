@@ -28,10 +28,10 @@ class _Wheel4(_WheelValues):
 
     def __init__(
         self,
-        frontLeft: float = 0.0,
-        frontRight: float = 0.0,
-        rearLeft: float = 0.0,
-        rearRight: float = 0.0,
+        front_left: float = 0.0,
+        front_right: float = 0.0,
+        rear_left: float = 0.0,
+        rear_right: float = 0.0,
     ) -> None: ...
     @property
     def frontLeft(self) -> float:
@@ -78,7 +78,7 @@ class _Wheel4(_WheelValues):
 
 @final
 class MecanumDriveWheelVelocities(_Wheel4):
-    """MecanumDriveWheelVelocities(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+    """MecanumDriveWheelVelocities(front_left=0.0, front_right=0.0, rear_left=0.0, rear_right=0.0)
 
     Wheel velocities of a mecanum drive, m/s. Mutable. As in WPILib Java there is no value
     equality: ``==`` is identity.
@@ -86,19 +86,19 @@ class MecanumDriveWheelVelocities(_Wheel4):
 
     @staticmethod
     def fromFeet(
-        frontLeft: float, frontRight: float, rearLeft: float, rearRight: float
+        front_left: float, front_right: float, rear_left: float, rear_right: float
     ) -> MecanumDriveWheelVelocities:
         """Return the wheel velocities given in ft/s, in m/s (the same bits as
         robotpy-wpimath's ``MecanumDriveWheelSpeeds.fromFeet``)."""
-    def desaturate(self, attainableMaxSpeed: float, /) -> MecanumDriveWheelVelocities:
-        """Return new velocities scaled so no wheel exceeds ``attainableMaxSpeed`` (m/s),
+    def desaturate(self, attainable_max_velocity: float, /) -> MecanumDriveWheelVelocities:
+        """Return new velocities scaled so no wheel exceeds ``attainable_max_velocity`` (m/s),
         keeping their ratios; an unchanged copy if already within it (2027)."""
 
-    def desaturateInPlace(self, attainableMaxSpeed: float, /) -> None:
+    def desaturateInPlace(self, attainable_max_velocity: float, /) -> None:
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
 
     def interpolate(
-        self, endValue: MecanumDriveWheelVelocities, t: float
+        self, end_value: MecanumDriveWheelVelocities, t: float
     ) -> MecanumDriveWheelVelocities:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
@@ -130,7 +130,7 @@ class MecanumDriveWheelVelocities(_Wheel4):
 
 @final
 class MecanumDriveWheelPositions(_Wheel4):
-    """MecanumDriveWheelPositions(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+    """MecanumDriveWheelPositions(front_left=0.0, front_right=0.0, rear_left=0.0, rear_right=0.0)
 
     Distances driven by each wheel, m. Mutable; ``==`` compares each wheel within 1e-9 m
     (so instances are unhashable).
@@ -140,7 +140,7 @@ class MecanumDriveWheelPositions(_Wheel4):
         """Return an independent copy."""
 
     def interpolate(
-        self, endValue: MecanumDriveWheelPositions, t: float
+        self, end_value: MecanumDriveWheelPositions, t: float
     ) -> MecanumDriveWheelPositions:
         """Linear interpolation; ``t`` is not clamped."""
 
@@ -149,7 +149,7 @@ class MecanumDriveWheelPositions(_Wheel4):
 
 @final
 class MecanumDriveWheelAccelerations(_Wheel4):
-    """MecanumDriveWheelAccelerations(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+    """MecanumDriveWheelAccelerations(front_left=0.0, front_right=0.0, rear_left=0.0, rear_right=0.0)
 
     Wheel accelerations of a mecanum drive, m/s². Mutable; ``==`` compares every wheel
     exactly (WPILib C++'s and robotpy's ``==``; Java has no ``equals``), so instances are
@@ -157,7 +157,7 @@ class MecanumDriveWheelAccelerations(_Wheel4):
     """
 
     def interpolate(
-        self, endValue: MecanumDriveWheelAccelerations, t: float
+        self, end_value: MecanumDriveWheelAccelerations, t: float
     ) -> MecanumDriveWheelAccelerations:
         """Linear interpolation with ``t`` clamped to [0, 1]."""
 
@@ -194,20 +194,20 @@ class MecanumDriveWheelAccelerations(_Wheel4):
 
 @final
 class MecanumDriveKinematics(Drivetrain):
-    """MecanumDriveKinematics(frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
+    """MecanumDriveKinematics(front_left_wheel, front_right_wheel, rear_left_wheel, rear_right_wheel)
 
     Kinematics of a mecanum drive with the four wheel positions (Translation2d, m, robot
     frame). The forward (pseudo-inverse) matrix is computed once for the robot origin and
-    never changes; a ``centerOfRotation`` passed to inverse kinematics moves only the
+    never changes; a ``center_of_rotation`` passed to inverse kinematics moves only the
     inverse rows and stays in effect until a different one is passed (within 1e-9 m).
     """
 
     def __init__(
         self,
-        frontLeftWheel: Translation2d,
-        frontRightWheel: Translation2d,
-        rearLeftWheel: Translation2d,
-        rearRightWheel: Translation2d,
+        front_left_wheel: Translation2d,
+        front_right_wheel: Translation2d,
+        rear_left_wheel: Translation2d,
+        rear_right_wheel: Translation2d,
     ) -> None: ...
     def getFrontLeft(self) -> Translation2d:
         """Return the front-left wheel position (Translation2d, m)."""
@@ -222,55 +222,55 @@ class MecanumDriveKinematics(Drivetrain):
         """Return the rear-right wheel position (Translation2d, m)."""
 
     def toWheelVelocities(
-        self, chassisVelocities: ChassisVelocities, centerOfRotation: Translation2d = ...
+        self, chassis_velocities: ChassisVelocities, center_of_rotation: Translation2d = ...
     ) -> MecanumDriveWheelVelocities:
         """Return the wheel velocities (m/s) for a robot-relative chassis velocity,
-        rotating about ``centerOfRotation`` (robot frame, m). Not desaturated."""
+        rotating about ``center_of_rotation`` (robot frame, m). Not desaturated."""
 
     def toWheelVelocitiesInto(
         self,
-        chassisVelocities: ChassisVelocities,
+        chassis_velocities: ChassisVelocities,
         out: MecanumDriveWheelVelocities,
-        centerOfRotation: Translation2d = ...,
+        center_of_rotation: Translation2d = ...,
     ) -> None:
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
 
     def toChassisVelocities(
-        self, wheelVelocities: MecanumDriveWheelVelocities
+        self, wheel_velocities: MecanumDriveWheelVelocities
     ) -> ChassisVelocities:
         """Return the least-squares robot velocity for measured wheel velocities."""
 
     def toChassisVelocitiesInto(
-        self, wheelVelocities: MecanumDriveWheelVelocities, out: ChassisVelocities
+        self, wheel_velocities: MecanumDriveWheelVelocities, out: ChassisVelocities
     ) -> None:
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
 
     def toTwist2d(
         self, start: MecanumDriveWheelPositions, end: MecanumDriveWheelPositions | None = None
     ) -> Twist2d:
-        """toTwist2d(wheelDeltas) or toTwist2d(start, end)
+        """toTwist2d(wheel_deltas) or toTwist2d(start, end)
 
         Return the Twist2d (m, rad) for wheel distance changes, either given directly or
         as ``end − start`` of two MecanumDriveWheelPositions."""
 
     def toWheelAccelerations(
-        self, chassisAccelerations: ChassisAccelerations, centerOfRotation: Translation2d = ...
+        self, chassis_accelerations: ChassisAccelerations, center_of_rotation: Translation2d = ...
     ) -> MecanumDriveWheelAccelerations:
         """Return the wheel accelerations (m/s²) for a chassis acceleration; the same
         matrix as for velocities (no centripetal term, as in WPILib)."""
 
     def toChassisAccelerations(
-        self, wheelAccelerations: MecanumDriveWheelAccelerations
+        self, wheel_accelerations: MecanumDriveWheelAccelerations
     ) -> ChassisAccelerations:
         """Return the least-squares chassis acceleration for wheel accelerations."""
 
     def interpolate(
         self,
-        startValue: MecanumDriveWheelPositions,
-        endValue: MecanumDriveWheelPositions,
+        start: MecanumDriveWheelPositions,
+        end: MecanumDriveWheelPositions,
         t: float,
     ) -> MecanumDriveWheelPositions:
-        """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
+        """Return ``start.interpolate(end, t)`` (not clamped)."""
 
     def copy(self, positions: MecanumDriveWheelPositions) -> MecanumDriveWheelPositions:
         """Return an independent copy of ``positions``."""

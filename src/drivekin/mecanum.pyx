@@ -25,13 +25,13 @@ cdef tuple LABELS = ("Front Left", "Front Right", "Rear Left", "Rear Right")
 cdef class _Wheel4(_WheelValues):
     """Front-left, front-right, rear-left and rear-right wheel values."""
 
-    def __init__(self, double frontLeft=0.0, double frontRight=0.0, double rearLeft=0.0,
-                 double rearRight=0.0):
+    def __init__(self, double front_left=0.0, double front_right=0.0, double rear_left=0.0,
+                 double rear_right=0.0):
         self.k = 4
-        self.w[0] = frontLeft
-        self.w[1] = frontRight
-        self.w[2] = rearLeft
-        self.w[3] = rearRight
+        self.w[0] = front_left
+        self.w[1] = front_right
+        self.w[2] = rear_left
+        self.w[3] = rear_right
 
     @property
     def frontLeft(self):
@@ -70,8 +70,8 @@ cdef class _Wheel4(_WheelValues):
         self.w[3] = value
 
     def __repr__(self):
-        return (f"{type(self).__name__}(frontLeft={self.w[0]!r}, frontRight={self.w[1]!r}, "
-                f"rearLeft={self.w[2]!r}, rearRight={self.w[3]!r})")
+        return (f"{type(self).__name__}(front_left={self.w[0]!r}, front_right={self.w[1]!r}, "
+                f"rear_left={self.w[2]!r}, rear_right={self.w[3]!r})")
 
 
 cdef inline _Wheel4 blank4(_Wheel4 o):
@@ -80,7 +80,7 @@ cdef inline _Wheel4 blank4(_Wheel4 o):
 
 
 cdef class MecanumDriveWheelVelocities(_Wheel4):
-    """MecanumDriveWheelVelocities(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+    """MecanumDriveWheelVelocities(front_left=0.0, front_right=0.0, rear_left=0.0, rear_right=0.0)
 
     Wheel velocities of a mecanum drive, m/s. Mutable. As in WPILib Java there is no value
     equality: ``==`` is identity.
@@ -90,40 +90,40 @@ cdef class MecanumDriveWheelVelocities(_Wheel4):
         return blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
 
     @staticmethod
-    def fromFeet(double frontLeft, double frontRight, double rearLeft, double rearRight):
+    def fromFeet(double front_left, double front_right, double rear_left, double rear_right):
         """Return the wheel velocities given in ft/s, in m/s (the same bits as
         robotpy-wpimath's ``MecanumDriveWheelSpeeds.fromFeet``)."""
         cdef _WheelValues out = blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
-        out.w[0] = feet_to_meters(frontLeft)
-        out.w[1] = feet_to_meters(frontRight)
-        out.w[2] = feet_to_meters(rearLeft)
-        out.w[3] = feet_to_meters(rearRight)
+        out.w[0] = feet_to_meters(front_left)
+        out.w[1] = feet_to_meters(front_right)
+        out.w[2] = feet_to_meters(rear_left)
+        out.w[3] = feet_to_meters(rear_right)
         return out
 
     @cython.always_allow_keywords(False)   # METH_O: the 1-argument fast call (~3 ns)
-    def desaturate(self, double attainableMaxSpeed):
-        """Return new velocities scaled so no wheel exceeds ``attainableMaxSpeed`` (m/s),
+    def desaturate(self, double attainable_max_velocity):
+        """Return new velocities scaled so no wheel exceeds ``attainable_max_velocity`` (m/s),
         keeping their ratios; an unchanged copy if already within it (2027)."""
         cdef _WheelValues out = blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
-        wheels_desaturate(4, self.w, attainableMaxSpeed, out.w)
+        wheels_desaturate(4, self.w, attainable_max_velocity, out.w)
         return out
 
     @cython.always_allow_keywords(False)
-    def desaturateInPlace(self, double attainableMaxSpeed):
+    def desaturateInPlace(self, double attainable_max_velocity):
         """Allocation-free :meth:`desaturate`: rescale this object. Returns None."""
-        wheels_desaturate(4, self.w, attainableMaxSpeed, self.w)
+        wheels_desaturate(4, self.w, attainable_max_velocity, self.w)
 
-    def interpolate(self, endValue: MecanumDriveWheelVelocities, double t):
+    def interpolate(self, end_value: MecanumDriveWheelVelocities, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        check_type(endValue, MecanumDriveWheelVelocities, "endValue")
-        return self._lerp(<_WheelValues>endValue, clamp01(t))
+        check_type(end_value, MecanumDriveWheelVelocities, "end_value")
+        return self._lerp(<_WheelValues>end_value, clamp01(t))
 
     def __str__(self):
         return self._fmt(LABELS, "m/s")
 
 
 cdef class MecanumDriveWheelPositions(_Wheel4):
-    """MecanumDriveWheelPositions(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+    """MecanumDriveWheelPositions(front_left=0.0, front_right=0.0, rear_left=0.0, rear_right=0.0)
 
     Distances driven by each wheel, m. Mutable; ``==`` compares each wheel within 1e-9 m
     (so instances are unhashable).
@@ -138,10 +138,10 @@ cdef class MecanumDriveWheelPositions(_Wheel4):
         o.w = self.w
         return o
 
-    def interpolate(self, endValue: MecanumDriveWheelPositions, double t):
+    def interpolate(self, end_value: MecanumDriveWheelPositions, double t):
         """Linear interpolation; ``t`` is not clamped."""
-        check_type(endValue, MecanumDriveWheelPositions, "endValue")
-        return self._lerp(<_WheelValues>endValue, t)
+        check_type(end_value, MecanumDriveWheelPositions, "end_value")
+        return self._lerp(<_WheelValues>end_value, t)
 
     def __eq__(self, other):
         if type(other) is MecanumDriveWheelPositions:
@@ -155,7 +155,7 @@ cdef class MecanumDriveWheelPositions(_Wheel4):
 
 
 cdef class MecanumDriveWheelAccelerations(_Wheel4):
-    """MecanumDriveWheelAccelerations(frontLeft=0.0, frontRight=0.0, rearLeft=0.0, rearRight=0.0)
+    """MecanumDriveWheelAccelerations(front_left=0.0, front_right=0.0, rear_left=0.0, rear_right=0.0)
 
     Wheel accelerations of a mecanum drive, m/s². Mutable; ``==`` compares every wheel
     exactly (WPILib C++'s and robotpy's ``==``; Java has no ``equals``), so instances are
@@ -165,10 +165,10 @@ cdef class MecanumDriveWheelAccelerations(_Wheel4):
     cdef _WheelValues _new(self):
         return blank4(MecanumDriveWheelAccelerations.__new__(MecanumDriveWheelAccelerations))
 
-    def interpolate(self, endValue: MecanumDriveWheelAccelerations, double t):
+    def interpolate(self, end_value: MecanumDriveWheelAccelerations, double t):
         """Linear interpolation with ``t`` clamped to [0, 1]."""
-        check_type(endValue, MecanumDriveWheelAccelerations, "endValue")
-        return self._lerp(<_WheelValues>endValue, clamp01(t))
+        check_type(end_value, MecanumDriveWheelAccelerations, "end_value")
+        return self._lerp(<_WheelValues>end_value, clamp01(t))
 
     def __eq__(self, other):
         if type(other) is MecanumDriveWheelAccelerations:
@@ -199,26 +199,27 @@ cdef inline void inverse_rows(const double* wx, const double* wy, vec2_t cor,
 
 
 cdef class MecanumDriveKinematics(Drivetrain):
-    """MecanumDriveKinematics(frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
+    """MecanumDriveKinematics(front_left_wheel, front_right_wheel, rear_left_wheel, rear_right_wheel)
 
     Kinematics of a mecanum drive with the four wheel positions (Translation2d, m, robot
     frame). The forward (pseudo-inverse) matrix is computed once for the robot origin and
-    never changes; a ``centerOfRotation`` passed to inverse kinematics moves only the
+    never changes; a ``center_of_rotation`` passed to inverse kinematics moves only the
     inverse rows and stays in effect until a different one is passed (within 1e-9 m).
     """
 
-    def __init__(self, frontLeftWheel: Translation2d, frontRightWheel: Translation2d,
-                 rearLeftWheel: Translation2d, rearRightWheel: Translation2d):
-        check_type(frontLeftWheel, Translation2d, "frontLeftWheel")
-        check_type(frontRightWheel, Translation2d, "frontRightWheel")
-        check_type(rearLeftWheel, Translation2d, "rearLeftWheel")
-        check_type(rearRightWheel, Translation2d, "rearRightWheel")
+    def __init__(self, front_left_wheel: Translation2d, front_right_wheel: Translation2d,
+                 rear_left_wheel: Translation2d, rear_right_wheel: Translation2d):
+        check_type(front_left_wheel, Translation2d, "front_left_wheel")
+        check_type(front_right_wheel, Translation2d, "front_right_wheel")
+        check_type(rear_left_wheel, Translation2d, "rear_left_wheel")
+        check_type(rear_right_wheel, Translation2d, "rear_right_wheel")
         cdef Py_ssize_t i
         cdef Translation2d t
         cdef double wx[4]
         cdef double wy[4]
         cdef double m[12]
-        cdef tuple wheels = (frontLeftWheel, frontRightWheel, rearLeftWheel, rearRightWheel)
+        cdef tuple wheels = (front_left_wheel, front_right_wheel, rear_left_wheel,
+                             rear_right_wheel)
         if self.wheels is not None:
             raise TypeError("MecanumDriveKinematics is already initialised: __init__ cannot "
                             "be called again")
@@ -265,7 +266,7 @@ cdef class MecanumDriveKinematics(Drivetrain):
     cdef void _inverse(self, const double* x, object cor, double* out) except *:
         self._ready()
         if not isinstance(cor, Translation2d):
-            raise TypeError(f"centerOfRotation must be a Translation2d, got {type_name(cor)}")
+            raise TypeError(f"center_of_rotation must be a Translation2d, got {type_name(cor)}")
         self._set_cor((<Translation2d>cor).v)
         mat_vec(4, 3, self.m, x, out)
 
@@ -314,41 +315,41 @@ cdef class MecanumDriveKinematics(Drivetrain):
         self._ready()
         return self.wheels[3]
 
-    def toWheelVelocities(self, chassisVelocities: ChassisVelocities,
-                          centerOfRotation=ORIGIN):
+    def toWheelVelocities(self, chassis_velocities: ChassisVelocities,
+                          center_of_rotation=ORIGIN):
         """Return the wheel velocities (m/s) for a robot-relative chassis velocity,
-        rotating about ``centerOfRotation`` (robot frame, m). Not desaturated."""
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        rotating about ``center_of_rotation`` (robot frame, m). Not desaturated."""
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
         cdef _WheelValues out = blank4(MecanumDriveWheelVelocities.__new__(MecanumDriveWheelVelocities))
-        self._inverse(&(<ChassisVelocities>chassisVelocities).v.x, centerOfRotation, out.w)
+        self._inverse(&(<ChassisVelocities>chassis_velocities).v.x, center_of_rotation, out.w)
         return out
 
-    def toWheelVelocitiesInto(self, chassisVelocities: ChassisVelocities,
-                              out: MecanumDriveWheelVelocities, centerOfRotation=ORIGIN):
+    def toWheelVelocitiesInto(self, chassis_velocities: ChassisVelocities,
+                              out: MecanumDriveWheelVelocities, center_of_rotation=ORIGIN):
         """Allocation-free :meth:`toWheelVelocities`: write into ``out``. Returns None."""
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
         check_type(out, MecanumDriveWheelVelocities, "out")
-        self._inverse(&(<ChassisVelocities>chassisVelocities).v.x, centerOfRotation,
+        self._inverse(&(<ChassisVelocities>chassis_velocities).v.x, center_of_rotation,
                       (<_WheelValues>out).w)
 
-    def toChassisVelocities(self, wheelVelocities: MecanumDriveWheelVelocities):
+    def toChassisVelocities(self, wheel_velocities: MecanumDriveWheelVelocities):
         """Return the least-squares robot velocity for measured wheel velocities."""
-        check_type(wheelVelocities, MecanumDriveWheelVelocities, "wheelVelocities")
+        check_type(wheel_velocities, MecanumDriveWheelVelocities, "wheel_velocities")
         self._ready()
         cdef ChassisVelocities out = new_chassis_velocities(0.0, 0.0, 0.0)
-        mat_vec(3, 4, self.f, (<_WheelValues>wheelVelocities).w, &out.v.x)
+        mat_vec(3, 4, self.f, (<_WheelValues>wheel_velocities).w, &out.v.x)
         return out
 
-    def toChassisVelocitiesInto(self, wheelVelocities: MecanumDriveWheelVelocities,
+    def toChassisVelocitiesInto(self, wheel_velocities: MecanumDriveWheelVelocities,
                                 out: ChassisVelocities):
         """Allocation-free :meth:`toChassisVelocities`: write into ``out``. Returns None."""
-        check_type(wheelVelocities, MecanumDriveWheelVelocities, "wheelVelocities")
+        check_type(wheel_velocities, MecanumDriveWheelVelocities, "wheel_velocities")
         check_type(out, ChassisVelocities, "out")
         self._ready()
-        mat_vec(3, 4, self.f, (<_WheelValues>wheelVelocities).w, &(<ChassisVelocities>out).v.x)
+        mat_vec(3, 4, self.f, (<_WheelValues>wheel_velocities).w, &(<ChassisVelocities>out).v.x)
 
     def toTwist2d(self, start: MecanumDriveWheelPositions, end=None):
-        """toTwist2d(wheelDeltas) or toTwist2d(start, end)
+        """toTwist2d(wheel_deltas) or toTwist2d(start, end)
 
         Return the Twist2d (m, rad) for wheel distance changes, either given directly or
         as ``end − start`` of two MecanumDriveWheelPositions."""
@@ -367,30 +368,31 @@ cdef class MecanumDriveKinematics(Drivetrain):
         mat_vec(3, 4, self.f, d, r)
         return new_twist(r[0], r[1], r[2])
 
-    def toWheelAccelerations(self, chassisAccelerations: ChassisAccelerations,
-                             centerOfRotation=ORIGIN):
+    def toWheelAccelerations(self, chassis_accelerations: ChassisAccelerations,
+                             center_of_rotation=ORIGIN):
         """Return the wheel accelerations (m/s²) for a chassis acceleration; the same
         matrix as for velocities (no centripetal term, as in WPILib)."""
-        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
+        check_type(chassis_accelerations, ChassisAccelerations, "chassis_accelerations")
         cdef _WheelValues out = blank4(MecanumDriveWheelAccelerations.__new__(MecanumDriveWheelAccelerations))
-        self._inverse(&(<ChassisAccelerations>chassisAccelerations).v.x, centerOfRotation, out.w)
+        self._inverse(&(<ChassisAccelerations>chassis_accelerations).v.x, center_of_rotation,
+                      out.w)
         return out
 
-    def toChassisAccelerations(self, wheelAccelerations: MecanumDriveWheelAccelerations):
+    def toChassisAccelerations(self, wheel_accelerations: MecanumDriveWheelAccelerations):
         """Return the least-squares chassis acceleration for wheel accelerations."""
         cdef double r[3]
-        check_type(wheelAccelerations, MecanumDriveWheelAccelerations, "wheelAccelerations")
+        check_type(wheel_accelerations, MecanumDriveWheelAccelerations, "wheel_accelerations")
         self._ready()
-        mat_vec(3, 4, self.f, (<_WheelValues>wheelAccelerations).w, r)
+        mat_vec(3, 4, self.f, (<_WheelValues>wheel_accelerations).w, r)
         return ChassisAccelerations(r[0], r[1], r[2])
 
-    def interpolate(self, startValue: MecanumDriveWheelPositions,
-                    endValue: MecanumDriveWheelPositions, double t):
-        """Return ``startValue.interpolate(endValue, t)`` (not clamped)."""
-        check_type(startValue, MecanumDriveWheelPositions, "startValue")
-        check_type(endValue, MecanumDriveWheelPositions, "endValue")
+    def interpolate(self, start: MecanumDriveWheelPositions,
+                    end: MecanumDriveWheelPositions, double t):
+        """Return ``start.interpolate(end, t)`` (not clamped)."""
+        check_type(start, MecanumDriveWheelPositions, "start")
+        check_type(end, MecanumDriveWheelPositions, "end")
         self._ready()
-        return startValue.interpolate(endValue, t)
+        return start.interpolate(end, t)
 
     def copy(self, positions: MecanumDriveWheelPositions):
         """Return an independent copy of ``positions``."""

@@ -17,5 +17,5 @@ cdef class DCMotor:
 
 
 cdef inline double motor_current(double kv, double r, double w, double u) noexcept nogil:
-    # DCMotor.getCurrent(velocity w, voltageInput u) in WPILib's order of operations.
+    # DCMotor.getCurrent(velocity w, input_voltage u) in WPILib's order of operations.
     return -1.0 / kv / r * w + 1.0 / r * u

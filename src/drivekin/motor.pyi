@@ -2,7 +2,7 @@
 
 Units: V, N·m, A, rad/s, ohm. A motor is described by five measured constants at its
 nominal voltage (stall torque, stall current, free current, free speed); a gearbox of
-``numMotors`` identical motors adds their torques and currents. The derived constants are
+``num_motors`` identical motors adds their torques and currents. The derived constants are
 computed as WPILib computes them::
 
     R  = nominalVoltage / stallCurrent
@@ -22,22 +22,22 @@ __all__ = ["DCMotor"]
 
 @final
 class DCMotor:
-    """DCMotor(nominalVoltage, stallTorque, stallCurrent, freeCurrent, freeSpeed, numMotors=1)
+    """DCMotor(nominal_voltage, stall_torque, stall_current, free_current, free_speed, num_motors=1)
 
-    The constants of a DC motor, or of a gearbox of ``numMotors`` identical motors:
-    ``nominalVoltage`` (V) at which the others were measured, ``stallTorque`` (N·m),
-    ``stallCurrent`` and ``freeCurrent`` (A), ``freeSpeed`` (rad/s). The gearbox's stall
-    torque, stall current and free current are ``numMotors`` times the motor's; its free
+    The constants of a DC motor, or of a gearbox of ``num_motors`` identical motors:
+    ``nominal_voltage`` (V) at which the others were measured, ``stall_torque`` (N·m),
+    ``stall_current`` and ``free_current`` (A), ``free_speed`` (rad/s). The gearbox's stall
+    torque, stall current and free current are ``num_motors`` times the motor's; its free
     speed is the motor's. ``R``, ``Kv`` and ``Kt`` are derived from them as WPILib does.
 
-    The constants must be positive and finite (``freeCurrent`` may be 0 and must be less
-    than ``stallCurrent``), ``numMotors`` an int from 1 to 2**31 − 1 (ValueError or
+    The constants must be positive and finite (``free_current`` may be 0 and must be less
+    than ``stall_current``), ``num_motors`` an int from 1 to 2**31 − 1 (ValueError or
     TypeError otherwise; WPILib does not check). Immutable; ``==`` compares every
     constant exactly (so instances are unhashable, like drivekin's other values).
     """
 
-    def __init__(self, nominalVoltage: float, stallTorque: float, stallCurrent: float,
-                 freeCurrent: float, freeSpeed: float, numMotors: int = 1) -> None: ...
+    def __init__(self, nominal_voltage: float, stall_torque: float, stall_current: float,
+                 free_current: float, free_speed: float, num_motors: int = 1) -> None: ...
     @property
     def nominalVoltage(self) -> float:
         """Voltage at which the motor constants were measured, V."""
@@ -72,11 +72,11 @@ class DCMotor:
         """Motor torque constant, N·m/A: ``stallTorque / stallCurrent``."""
 
     @overload
-    def getCurrent(self, velocity: float, voltageInput: float) -> float:
-        """getCurrent(velocity, voltageInput) or getCurrent(torque)
+    def getCurrent(self, velocity: float, input_voltage: float) -> float:
+        """getCurrent(velocity, input_voltage) or getCurrent(torque)
 
         The current drawn, A: by the motor turning at ``velocity`` (rad/s) with
-        ``voltageInput`` (V) applied, ``−velocity / Kv / R + voltageInput / R``; or the
+        ``input_voltage`` (V) applied, ``−velocity / Kv / R + input_voltage / R``; or the
         current that produces ``torque`` (N·m), ``torque / Kt``. One positional argument
         is the torque."""
 
@@ -91,12 +91,13 @@ class DCMotor:
         """Return the voltage applied to the motor producing ``torque`` (N·m) while
         turning at ``velocity`` (rad/s), V: ``velocity / Kv + R · torque / Kt``."""
 
-    def getVelocity(self, torque: float, voltageInput: float) -> float:
+    def getVelocity(self, torque: float, input_voltage: float) -> float:
         """Return the angular velocity of the motor producing ``torque`` (N·m) with
-        ``voltageInput`` (V) applied, rad/s: ``voltageInput · Kv − torque · R · Kv / Kt``."""
+        ``input_voltage`` (V) applied, rad/s:
+        ``input_voltage · Kv − torque · R · Kv / Kt``."""
 
-    def withReduction(self, gearboxReduction: float) -> DCMotor:
-        """Return this motor behind a gearbox of ``gearboxReduction`` motor turns per
+    def withReduction(self, gearbox_reduction: float) -> DCMotor:
+        """Return this motor behind a gearbox of ``gearbox_reduction`` motor turns per
         output turn (a new DCMotor): the stall torque times the reduction, the free speed
         divided by it, the currents unchanged. The reduction must be positive and
         finite."""
@@ -104,98 +105,98 @@ class DCMotor:
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
     @staticmethod
-    def getCIM(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` CIM motors (12 V, 2.42 N·m, 133 A, 2.7 A,
+    def getCIM(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` CIM motors (12 V, 2.42 N·m, 133 A, 2.7 A,
         5310 rpm)."""
 
     @staticmethod
-    def getVex775Pro(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` 775Pro motors (12 V, 0.71 N·m, 134 A, 0.7 A,
+    def getVex775Pro(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` 775Pro motors (12 V, 0.71 N·m, 134 A, 0.7 A,
         18730 rpm)."""
 
     @staticmethod
-    def getNEO(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` NEO motors (12 V, 2.6 N·m, 105 A, 1.8 A,
+    def getNEO(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` NEO motors (12 V, 2.6 N·m, 105 A, 1.8 A,
         5676 rpm)."""
 
     @staticmethod
-    def getMiniCIM(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` MiniCIM motors (12 V, 1.41 N·m, 89 A, 3 A,
+    def getMiniCIM(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` MiniCIM motors (12 V, 1.41 N·m, 89 A, 3 A,
         5840 rpm)."""
 
     @staticmethod
-    def getBag(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Bag motors (12 V, 0.43 N·m, 53 A, 1.8 A,
+    def getBag(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Bag motors (12 V, 0.43 N·m, 53 A, 1.8 A,
         13180 rpm)."""
 
     @staticmethod
-    def getAndymarkRs775_125(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Andymark RS775-125 motors (12 V, 0.28 N·m,
+    def getAndymarkRs775_125(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Andymark RS775-125 motors (12 V, 0.28 N·m,
         18 A, 1.6 A, 5800 rpm)."""
 
     @staticmethod
-    def getBanebotsRs775(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Banebots RS775 motors (12 V, 0.72 N·m, 97 A,
+    def getBanebotsRs775(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Banebots RS775 motors (12 V, 0.72 N·m, 97 A,
         2.7 A, 13050 rpm)."""
 
     @staticmethod
-    def getAndymark9015(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Andymark 9015 motors (12 V, 0.36 N·m, 71 A,
+    def getAndymark9015(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Andymark 9015 motors (12 V, 0.36 N·m, 71 A,
         3.7 A, 14270 rpm)."""
 
     @staticmethod
-    def getBanebotsRs550(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Banebots RS 550 motors (12 V, 0.38 N·m,
+    def getBanebotsRs550(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Banebots RS 550 motors (12 V, 0.38 N·m,
         84 A, 0.4 A, 19000 rpm)."""
 
     @staticmethod
-    def getNeo550(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` NEO 550 motors (12 V, 0.97 N·m, 100 A,
+    def getNeo550(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` NEO 550 motors (12 V, 0.97 N·m, 100 A,
         1.4 A, 11000 rpm)."""
 
     @staticmethod
-    def getFalcon500(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Falcon 500 motors (12 V, 4.69 N·m, 257 A,
+    def getFalcon500(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Falcon 500 motors (12 V, 4.69 N·m, 257 A,
         1.5 A, 6380 rpm)."""
 
     @staticmethod
-    def getFalcon500Foc(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Falcon 500 motors with FOC (field-oriented
+    def getFalcon500Foc(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Falcon 500 motors with FOC (field-oriented
         control) enabled (12 V, 5.84 N·m, 304 A, 1.5 A, 6080 rpm)."""
 
     @staticmethod
-    def getRomiBuiltIn(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Romi/TI_RSLK MAX motors (4.5 V, 0.1765 N·m,
+    def getRomiBuiltIn(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Romi/TI_RSLK MAX motors (4.5 V, 0.1765 N·m,
         1.25 A, 0.13 A, 150 rpm)."""
 
     @staticmethod
-    def getKrakenX60(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Kraken X60 motors (12 V, 7.09 N·m, 366 A,
+    def getKrakenX60(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Kraken X60 motors (12 V, 7.09 N·m, 366 A,
         2 A, 6000 rpm)."""
 
     @staticmethod
-    def getKrakenX60Foc(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Kraken X60 motors with FOC enabled (12 V,
+    def getKrakenX60Foc(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Kraken X60 motors with FOC enabled (12 V,
         9.37 N·m, 483 A, 2 A, 5800 rpm)."""
 
     @staticmethod
-    def getKrakenX44(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Kraken X44 motors (12 V, 4.11 N·m, 279 A,
+    def getKrakenX44(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Kraken X44 motors (12 V, 4.11 N·m, 279 A,
         2 A, 7758 rpm)."""
 
     @staticmethod
-    def getKrakenX44Foc(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Kraken X44 motors with FOC enabled (12 V,
+    def getKrakenX44Foc(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Kraken X44 motors with FOC enabled (12 V,
         5.01 N·m, 329 A, 2 A, 7368 rpm)."""
 
     @staticmethod
-    def getMinion(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` Minion motors (12 V, 3.17 N·m, 211 A, 2 A,
+    def getMinion(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` Minion motors (12 V, 3.17 N·m, 211 A, 2 A,
         7704 rpm)."""
 
     @staticmethod
-    def getNeoVortex(numMotors: int = 1) -> DCMotor:
-        """Return a gearbox of ``numMotors`` NEO Vortex motors (12 V, 3.60 N·m, 211 A,
+    def getNeoVortex(num_motors: int = 1) -> DCMotor:
+        """Return a gearbox of ``num_motors`` NEO Vortex motors (12 V, 3.60 N·m, 211 A,
         3.6 A, 6784 rpm)."""
 
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)

@@ -36,7 +36,7 @@ cdef class _Odometry:
 cdef class SwerveDriveOdometry(_Odometry):
     cdef SwerveDriveKinematics kin
     cdef double* prev            # module distances at the last update, m (n values)
-    cdef int _step(self, Rotation2d gyroAngle, object modulePositions) except -1
+    cdef int _step(self, Rotation2d gyro_angle, object wheel_positions) except -1
     cdef void _motion(self, double* dist, const double* c, const double* s,
                       double* r) noexcept nogil
 
@@ -44,30 +44,32 @@ cdef class SwerveDriveOdometry(_Odometry):
 cdef class MecanumDriveOdometry(_Odometry):
     cdef MecanumDriveKinematics kin
     cdef double prev[4]          # wheel distances at the last update, m
-    cdef int _step(self, Rotation2d gyroAngle, MecanumDriveWheelPositions wheelPositions) except -1
+    cdef int _step(self, Rotation2d gyro_angle,
+                   MecanumDriveWheelPositions wheel_positions) except -1
     cdef void _motion(self, const double* w, double* r) noexcept nogil
 
 @cython.final
 cdef class DifferentialDriveOdometry(_Odometry):
     cdef double prev_l, prev_r   # wheel distances at the last update, m
-    cdef int _step(self, Rotation2d gyroAngle, double leftDistance,
-                   double rightDistance) except -1
-    cdef void _motion(self, double leftDistance, double rightDistance,
+    cdef int _step(self, Rotation2d gyro_angle, double left_distance,
+                   double right_distance) except -1
+    cdef void _motion(self, double left_distance, double right_distance,
                       double* r) noexcept nogil
 
 @cython.final
 cdef class TwoDeadWheelOdometry(_Odometry):
-    cdef double x_wheel_y        # xWheelYPos: y of the forward-facing wheel, m
-    cdef double y_wheel_x        # yWheelXPos: x of the left-facing wheel, m
+    cdef double x_wheel_y        # x_wheel_y_pos: y of the forward-facing wheel, m
+    cdef double y_wheel_x        # y_wheel_x_pos: x of the left-facing wheel, m
     cdef double prev_x, prev_y   # wheel distances at the last update, m
-    cdef int _step(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle) except -1
-    cdef void _motion(self, double xWheelPos, double yWheelPos, double dtheta,
+    cdef int _step(self, double x_wheel_pos, double y_wheel_pos,
+                   Rotation2d gyro_angle) except -1
+    cdef void _motion(self, double x_wheel_pos, double y_wheel_pos, double dtheta,
                       double* r) noexcept nogil
 
 @cython.final
 cdef class DeadWheelOdometry(_Odometry):
     cdef DeadWheelKinematics kin
     cdef double* prev            # wheel distances at the last update, m (n values)
-    cdef int _gyro_arg(self, object gyroAngle, str call) except -1
-    cdef int _step(self, object wheelPositions, object gyroAngle) except -1
+    cdef int _gyro_arg(self, object gyro_angle, str call) except -1
+    cdef int _step(self, object wheel_positions, object gyro_angle) except -1
     cdef void _motion(self, double* dist, double dtheta, double* r) noexcept nogil

@@ -55,7 +55,7 @@ class _Odometry:
 
 @final
 class SwerveDriveOdometry(_Odometry):
-    """SwerveDriveOdometry(kinematics, gyroAngle, modulePositions, initialPose=Pose2d())
+    """SwerveDriveOdometry(kinematics, gyro_angle, module_positions, initial_pose=Pose2d())
 
     Tracks a swerve robot's pose from N module positions (SwerveModulePosition objects or
     an (N, 2) float64 array ``[distance m, angle rad]``) and a gyro angle (Rotation2d).
@@ -64,22 +64,22 @@ class SwerveDriveOdometry(_Odometry):
     def __init__(
         self,
         kinematics: SwerveDriveKinematics,
-        gyroAngle: Rotation2d,
-        modulePositions: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
-        initialPose: Pose2d | None = None,
+        gyro_angle: Rotation2d,
+        module_positions: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
+        initial_pose: Pose2d | None = None,
     ) -> None: ...
     def resetPosition(
         self,
-        gyroAngle: Rotation2d,
-        modulePositions: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
+        gyro_angle: Rotation2d,
+        wheel_positions: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
         pose: Pose2d,
     ) -> None:
         """Reset the pose, the gyro baseline and the module-position baseline."""
 
     def update(
         self,
-        gyroAngle: Rotation2d,
-        modulePositions: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
+        gyro_angle: Rotation2d,
+        wheel_positions: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
     ) -> Pose2d:
         """Integrate the module-distance changes since the last call (at the current module
         angles) and the gyro change; return the new pose."""
@@ -89,7 +89,7 @@ class SwerveDriveOdometry(_Odometry):
 
 @final
 class MecanumDriveOdometry(_Odometry):
-    """MecanumDriveOdometry(kinematics, gyroAngle, wheelPositions, initialPose=Pose2d())
+    """MecanumDriveOdometry(kinematics, gyro_angle, wheel_positions, initial_pose=Pose2d())
 
     Tracks a mecanum robot's pose from MecanumDriveWheelPositions (m) and a gyro angle.
     """
@@ -97,16 +97,16 @@ class MecanumDriveOdometry(_Odometry):
     def __init__(
         self,
         kinematics: MecanumDriveKinematics,
-        gyroAngle: Rotation2d,
-        wheelPositions: MecanumDriveWheelPositions,
-        initialPose: Pose2d | None = None,
+        gyro_angle: Rotation2d,
+        wheel_positions: MecanumDriveWheelPositions,
+        initial_pose: Pose2d | None = None,
     ) -> None: ...
     def resetPosition(
-        self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions, pose: Pose2d
+        self, gyro_angle: Rotation2d, wheel_positions: MecanumDriveWheelPositions, pose: Pose2d
     ) -> None:
         """Reset the pose, the gyro baseline and the wheel-position baseline."""
 
-    def update(self, gyroAngle: Rotation2d, wheelPositions: MecanumDriveWheelPositions) -> Pose2d:
+    def update(self, gyro_angle: Rotation2d, wheel_positions: MecanumDriveWheelPositions) -> Pose2d:
         """Integrate the wheel-distance changes since the last call and the gyro change;
         return the new pose."""
 
@@ -115,7 +115,7 @@ class MecanumDriveOdometry(_Odometry):
 
 @final
 class DifferentialDriveOdometry(_Odometry):
-    """DifferentialDriveOdometry(gyroAngle, leftDistance, rightDistance, initialPose=Pose2d())
+    """DifferentialDriveOdometry(gyro_angle, left_distance, right_distance, initial_pose=Pose2d())
 
     Tracks a differential-drive robot's pose from the left and right wheel distances (m)
     and a gyro angle. No trackwidth is needed: the heading comes from the gyro.
@@ -123,17 +123,17 @@ class DifferentialDriveOdometry(_Odometry):
 
     def __init__(
         self,
-        gyroAngle: Rotation2d,
-        leftDistance: float,
-        rightDistance: float,
-        initialPose: Pose2d | None = None,
+        gyro_angle: Rotation2d,
+        left_distance: float,
+        right_distance: float,
+        initial_pose: Pose2d | None = None,
     ) -> None: ...
     def resetPosition(
-        self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float, pose: Pose2d
+        self, gyro_angle: Rotation2d, left_distance: float, right_distance: float, pose: Pose2d
     ) -> None:
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""
 
-    def update(self, gyroAngle: Rotation2d, leftDistance: float, rightDistance: float) -> Pose2d:
+    def update(self, gyro_angle: Rotation2d, left_distance: float, right_distance: float) -> Pose2d:
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
 
@@ -142,39 +142,39 @@ class DifferentialDriveOdometry(_Odometry):
 
 @final
 class TwoDeadWheelOdometry(_Odometry):
-    """TwoDeadWheelOdometry(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose=Pose2d())
+    """TwoDeadWheelOdometry(x_wheel_y_pos, y_wheel_x_pos, x_wheel_pos, y_wheel_pos, gyro_angle, initial_pose=Pose2d())
 
     WPILib's two-dead-wheel odometry (goBILDA Pinpoint's layout): a forward-facing wheel
-    at y = ``xWheelYPos`` (m) reading forward motion, a left-facing wheel at
-    x = ``yWheelXPos`` (m) reading leftward motion, and a gyro for the heading. The
+    at y = ``x_wheel_y_pos`` (m) reading forward motion, a left-facing wheel at
+    x = ``y_wheel_x_pos`` (m) reading leftward motion, and a gyro for the heading. The
     offsets are Pinpoint's: X-pod offset positive to the left, Y-pod offset positive
-    forward. ``xWheelPos``/``yWheelPos`` are the wheels' current distances (m).
-    Each update uses dθ = the wrapped gyro change, dx = Δx + dθ·xWheelYPos and
-    dy = Δy − dθ·yWheelXPos.
+    forward. ``x_wheel_pos``/``y_wheel_pos`` are the wheels' current distances (m).
+    Each update uses dθ = the wrapped gyro change, dx = Δx + dθ·x_wheel_y_pos and
+    dy = Δy − dθ·y_wheel_x_pos.
     """
 
     def __init__(
         self,
-        xWheelYPos: float,
-        yWheelXPos: float,
-        xWheelPos: float,
-        yWheelPos: float,
-        gyroAngle: Rotation2d,
-        initialPose: Pose2d | None = None,
+        x_wheel_y_pos: float,
+        y_wheel_x_pos: float,
+        x_wheel_pos: float,
+        y_wheel_pos: float,
+        gyro_angle: Rotation2d,
+        initial_pose: Pose2d | None = None,
     ) -> None: ...
     def resetPosition(
-        self, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d, pose: Pose2d
+        self, x_wheel_pos: float, y_wheel_pos: float, gyro_angle: Rotation2d, pose: Pose2d
     ) -> None:
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""
 
-    def update(self, xWheelPos: float, yWheelPos: float, gyroAngle: Rotation2d) -> Pose2d:
+    def update(self, x_wheel_pos: float, y_wheel_pos: float, gyro_angle: Rotation2d) -> Pose2d:
         """Integrate the wheel-distance changes (m) since the last call and the gyro
         change; return the new pose."""
 
     def toChassisVelocities(self, vx: float, vy: float, omega: float) -> ChassisVelocities:
         """Return the robot velocity from the forward wheel's and left wheel's surface
         velocities ``vx``, ``vy`` (m/s) and the gyro rate ``omega`` (rad/s):
-        (vx + omega·xWheelYPos, vy − omega·yWheelXPos, omega)."""
+        (vx + omega·x_wheel_y_pos, vy − omega·y_wheel_x_pos, omega)."""
 
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
     reset_position = resetPosition
@@ -182,11 +182,11 @@ class TwoDeadWheelOdometry(_Odometry):
 
 @final
 class DeadWheelOdometry(_Odometry):
-    """DeadWheelOdometry(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d())
+    """DeadWheelOdometry(kinematics, wheel_positions, gyro_angle=None, initial_pose=Pose2d())
 
     Tracks a robot's pose from N dead wheels (DeadWheelKinematics) and, optionally, a
-    gyro. ``wheelPositions`` are the wheels' distances (m): a list or tuple of floats or a
-    1-D float64 array, in the kinematics' wheel order. With a gyro (``gyroAngle`` a
+    gyro. ``wheel_positions`` are the wheels' distances (m): a list or tuple of floats or a
+    1-D float64 array, in the kinematics' wheel order. With a gyro (``gyro_angle`` a
     Rotation2d) every update takes dθ from its wrapped change and fits (dx, dy) to the
     wheels; without one, all three come from the wheels (the layout must observe
     rotation). Whether a gyro is used is fixed here: ``update`` and ``resetPosition``
@@ -196,23 +196,23 @@ class DeadWheelOdometry(_Odometry):
     def __init__(
         self,
         kinematics: DeadWheelKinematics,
-        wheelPositions: Sequence[float] | npt.NDArray[np.float64],
-        gyroAngle: Rotation2d | None = None,
-        initialPose: Pose2d | None = None,
+        wheel_positions: Sequence[float] | npt.NDArray[np.float64],
+        gyro_angle: Rotation2d | None = None,
+        initial_pose: Pose2d | None = None,
     ) -> None: ...
     def resetPosition(
         self,
-        wheelPositions: Sequence[float] | npt.NDArray[np.float64],
-        gyroAngle: Rotation2d | None,
+        wheel_positions: Sequence[float] | npt.NDArray[np.float64],
+        gyro_angle: Rotation2d | None,
         pose: Pose2d,
     ) -> None:
         """Reset the pose, the wheel-position baselines and (with a gyro) the gyro
-        baseline; pass ``gyroAngle=None`` for an odometry without a gyro."""
+        baseline; pass ``gyro_angle=None`` for an odometry without a gyro."""
 
     def update(
         self,
-        wheelPositions: Sequence[float] | npt.NDArray[np.float64],
-        gyroAngle: Rotation2d | None = None,
+        wheel_positions: Sequence[float] | npt.NDArray[np.float64],
+        gyro_angle: Rotation2d | None = None,
     ) -> Pose2d:
         """Integrate the wheel-distance changes (m) since the last call (and the gyro
         change, with a gyro); return the new pose."""

@@ -31,7 +31,7 @@ cdef pose2_t initial(object p) except *:
     if p is None:
         return pose(vec(0.0, 0.0), rot_xy(1.0, 0.0))
     if not isinstance(p, Pose2d):
-        raise TypeError(f"initialPose must be a Pose2d, got {type_name(p)}")
+        raise TypeError(f"initial_pose must be a Pose2d, got {type_name(p)}")
     return (<Pose2d>p).p
 
 
@@ -83,7 +83,7 @@ cdef class _Odometry:
 
 
 cdef class SwerveDriveOdometry(_Odometry):
-    """SwerveDriveOdometry(kinematics, gyroAngle, modulePositions, initialPose=Pose2d())
+    """SwerveDriveOdometry(kinematics, gyro_angle, module_positions, initial_pose=Pose2d())
 
     Tracks a swerve robot's pose from N module positions (SwerveModulePosition objects or
     an (N, 2) float64 array ``[distance m, angle rad]``) and a gyro angle (Rotation2d).
@@ -92,15 +92,15 @@ cdef class SwerveDriveOdometry(_Odometry):
     def __cinit__(self, *args, **kwargs):
         self.prev = NULL
 
-    def __init__(self, kinematics: SwerveDriveKinematics, gyroAngle: Rotation2d,
-                 modulePositions, initialPose=None):
+    def __init__(self, kinematics: SwerveDriveKinematics, gyro_angle: Rotation2d,
+                 module_positions, initial_pose=None):
         cdef Py_ssize_t i
         check_type(kinematics, SwerveDriveKinematics, "kinematics")
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
         cdef SwerveDriveKinematics kin = <SwerveDriveKinematics>kinematics
         self._start_init()
-        cdef pose2_t p = initial(initialPose)
-        kin._read(modulePositions, SwerveModulePosition, "modulePositions")
+        cdef pose2_t p = initial(initial_pose)
+        kin._read(module_positions, SwerveModulePosition, "module_positions")
         self._start_init()      # again: reading an iterable ran Python code
         cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kin.n)
         if prev == NULL:
@@ -112,41 +112,41 @@ cdef class SwerveDriveOdometry(_Odometry):
         self.width = kin.n
         self.steered = True
         self.gyro = True
-        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.pose = p
         self.ready = True
 
     def __dealloc__(self):
         PyMem_Free(self.prev)
 
-    def resetPosition(self, gyroAngle: Rotation2d, modulePositions, pose: Pose2d):
+    def resetPosition(self, gyro_angle: Rotation2d, wheel_positions, pose: Pose2d):
         """Reset the pose, the gyro baseline and the module-position baseline."""
         cdef Py_ssize_t i
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self.kin._read(modulePositions, SwerveModulePosition, "modulePositions")
+        self.kin._read(wheel_positions, SwerveModulePosition, "wheel_positions")
         for i in range(self.kin.n):
             self.prev[i] = self.kin.s0[i]
-        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.pose = (<Pose2d>pose).p
 
-    def update(self, gyroAngle: Rotation2d, modulePositions):
+    def update(self, gyro_angle: Rotation2d, wheel_positions):
         """Integrate the module-distance changes since the last call (at the current module
         angles) and the gyro change; return the new pose."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        self._step(<Rotation2d>gyroAngle, modulePositions)
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        self._step(<Rotation2d>gyro_angle, wheel_positions)
         return new_pose(self.pose)
 
-    cdef int _step(self, Rotation2d gyroAngle, object modulePositions) except -1:
+    cdef int _step(self, Rotation2d gyro_angle, object wheel_positions) except -1:
         cdef SwerveDriveKinematics k = self.kin
         if not self.ready:
             uninitialised(self)
         cdef double r[3]
-        k._read(modulePositions, SwerveModulePosition, "modulePositions")
+        k._read(wheel_positions, SwerveModulePosition, "wheel_positions")
         self._motion(k.s0, k.s1, k.s2, r)
-        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyroAngle.r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro_angle.r)
         return 0
 
     cdef void _motion(self, double* dist, const double* c, const double* s,
@@ -176,53 +176,54 @@ cdef class SwerveDriveOdometry(_Odometry):
 
 
 cdef class MecanumDriveOdometry(_Odometry):
-    """MecanumDriveOdometry(kinematics, gyroAngle, wheelPositions, initialPose=Pose2d())
+    """MecanumDriveOdometry(kinematics, gyro_angle, wheel_positions, initial_pose=Pose2d())
 
     Tracks a mecanum robot's pose from MecanumDriveWheelPositions (m) and a gyro angle.
     """
 
-    def __init__(self, kinematics: MecanumDriveKinematics, gyroAngle: Rotation2d,
-                 wheelPositions: MecanumDriveWheelPositions, initialPose=None):
+    def __init__(self, kinematics: MecanumDriveKinematics, gyro_angle: Rotation2d,
+                 wheel_positions: MecanumDriveWheelPositions, initial_pose=None):
         check_type(kinematics, MecanumDriveKinematics, "kinematics")
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(wheel_positions, MecanumDriveWheelPositions, "wheel_positions")
         self._start_init()
         (<MecanumDriveKinematics>kinematics)._ready()
-        self.pose = initial(initialPose)
+        self.pose = initial(initial_pose)
         self.kin = <MecanumDriveKinematics>kinematics
-        self.prev = (<_WheelValues>wheelPositions).w
+        self.prev = (<_WheelValues>wheel_positions).w
         self.width = 4
         self.gyro = True
-        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.ready = True
 
-    def resetPosition(self, gyroAngle: Rotation2d,
-                      wheelPositions: MecanumDriveWheelPositions, pose: Pose2d):
+    def resetPosition(self, gyro_angle: Rotation2d,
+                      wheel_positions: MecanumDriveWheelPositions, pose: Pose2d):
         """Reset the pose, the gyro baseline and the wheel-position baseline."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(wheel_positions, MecanumDriveWheelPositions, "wheel_positions")
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self.prev = (<_WheelValues>wheelPositions).w
-        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.prev = (<_WheelValues>wheel_positions).w
+        self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.pose = (<Pose2d>pose).p
 
-    def update(self, gyroAngle: Rotation2d,
-               wheelPositions: MecanumDriveWheelPositions):
+    def update(self, gyro_angle: Rotation2d,
+               wheel_positions: MecanumDriveWheelPositions):
         """Integrate the wheel-distance changes since the last call and the gyro change;
         return the new pose."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        check_type(wheelPositions, MecanumDriveWheelPositions, "wheelPositions")
-        self._step(<Rotation2d>gyroAngle, <MecanumDriveWheelPositions>wheelPositions)
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        check_type(wheel_positions, MecanumDriveWheelPositions, "wheel_positions")
+        self._step(<Rotation2d>gyro_angle, <MecanumDriveWheelPositions>wheel_positions)
         return new_pose(self.pose)
 
-    cdef int _step(self, Rotation2d gyroAngle, MecanumDriveWheelPositions wheelPositions) except -1:
+    cdef int _step(self, Rotation2d gyro_angle,
+                   MecanumDriveWheelPositions wheel_positions) except -1:
         if not self.ready:
             uninitialised(self)
         cdef double r[3]
-        self._motion((<_WheelValues>wheelPositions).w, r)
-        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyroAngle.r)
+        self._motion((<_WheelValues>wheel_positions).w, r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro_angle.r)
         return 0
 
     cdef void _motion(self, const double* w, double* r) noexcept nogil:
@@ -245,57 +246,57 @@ cdef class MecanumDriveOdometry(_Odometry):
 
 
 cdef class DifferentialDriveOdometry(_Odometry):
-    """DifferentialDriveOdometry(gyroAngle, leftDistance, rightDistance, initialPose=Pose2d())
+    """DifferentialDriveOdometry(gyro_angle, left_distance, right_distance, initial_pose=Pose2d())
 
     Tracks a differential-drive robot's pose from the left and right wheel distances (m)
     and a gyro angle. No trackwidth is needed: the heading comes from the gyro.
     """
 
-    def __init__(self, gyroAngle: Rotation2d, double leftDistance, double rightDistance,
-                 initialPose=None):
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
+    def __init__(self, gyro_angle: Rotation2d, double left_distance, double right_distance,
+                 initial_pose=None):
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
         self._start_init()
-        self.pose = initial(initialPose)
-        self.prev_l = leftDistance
-        self.prev_r = rightDistance
+        self.pose = initial(initial_pose)
+        self.prev_l = left_distance
+        self.prev_r = right_distance
         self.width = 2
         self.gyro = True
-        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.ready = True
 
-    def resetPosition(self, gyroAngle: Rotation2d, double leftDistance,
-                      double rightDistance, pose: Pose2d):
+    def resetPosition(self, gyro_angle: Rotation2d, double left_distance,
+                      double right_distance, pose: Pose2d):
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self.prev_l = leftDistance
-        self.prev_r = rightDistance
-        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.prev_l = left_distance
+        self.prev_r = right_distance
+        self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.pose = (<Pose2d>pose).p
 
-    def update(self, gyroAngle: Rotation2d, double leftDistance, double rightDistance):
+    def update(self, gyro_angle: Rotation2d, double left_distance, double right_distance):
         """Integrate the wheel-distance changes since the last call (dx = mean change,
         dy = 0) and the gyro change; return the new pose."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        self._step(<Rotation2d>gyroAngle, leftDistance, rightDistance)
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        self._step(<Rotation2d>gyro_angle, left_distance, right_distance)
         return new_pose(self.pose)
 
-    cdef int _step(self, Rotation2d gyroAngle, double leftDistance,
-                   double rightDistance) except -1:
+    cdef int _step(self, Rotation2d gyro_angle, double left_distance,
+                   double right_distance) except -1:
         if not self.ready:
             uninitialised(self)
         cdef double r[3]
-        self._motion(leftDistance, rightDistance, r)
-        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyroAngle.r)
+        self._motion(left_distance, right_distance, r)
+        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro_angle.r)
         return 0
 
-    cdef void _motion(self, double leftDistance, double rightDistance,
+    cdef void _motion(self, double left_distance, double right_distance,
                       double* r) noexcept nogil:
-        cdef double dl = leftDistance - self.prev_l, dr = rightDistance - self.prev_r
-        self.prev_l = leftDistance
-        self.prev_r = rightDistance
+        cdef double dl = left_distance - self.prev_l, dr = right_distance - self.prev_r
+        self.prev_l = left_distance
+        self.prev_r = right_distance
         r[0] = (dl + dr) / 2.0
         r[1] = 0.0
 
@@ -310,70 +311,71 @@ cdef class DifferentialDriveOdometry(_Odometry):
 
 
 cdef class TwoDeadWheelOdometry(_Odometry):
-    """TwoDeadWheelOdometry(xWheelYPos, yWheelXPos, xWheelPos, yWheelPos, gyroAngle, initialPose=Pose2d())
+    """TwoDeadWheelOdometry(x_wheel_y_pos, y_wheel_x_pos, x_wheel_pos, y_wheel_pos, gyro_angle, initial_pose=Pose2d())
 
     WPILib's two-dead-wheel odometry (goBILDA Pinpoint's layout): a forward-facing wheel
-    at y = ``xWheelYPos`` (m) reading forward motion, a left-facing wheel at
-    x = ``yWheelXPos`` (m) reading leftward motion, and a gyro for the heading. The
+    at y = ``x_wheel_y_pos`` (m) reading forward motion, a left-facing wheel at
+    x = ``y_wheel_x_pos`` (m) reading leftward motion, and a gyro for the heading. The
     offsets are Pinpoint's: X-pod offset positive to the left, Y-pod offset positive
-    forward. ``xWheelPos``/``yWheelPos`` are the wheels' current distances (m).
-    Each update uses dθ = the wrapped gyro change, dx = Δx + dθ·xWheelYPos and
-    dy = Δy − dθ·yWheelXPos.
+    forward. ``x_wheel_pos``/``y_wheel_pos`` are the wheels' current distances (m).
+    Each update uses dθ = the wrapped gyro change, dx = Δx + dθ·x_wheel_y_pos and
+    dy = Δy − dθ·y_wheel_x_pos.
     """
 
-    def __init__(self, double xWheelYPos, double yWheelXPos, double xWheelPos,
-                 double yWheelPos, gyroAngle: Rotation2d, initialPose=None):
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
+    def __init__(self, double x_wheel_y_pos, double y_wheel_x_pos, double x_wheel_pos,
+                 double y_wheel_pos, gyro_angle: Rotation2d, initial_pose=None):
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
         self._start_init()
-        if not (isfinite(xWheelYPos) and isfinite(yWheelXPos)):
-            raise ValueError(f"wheel offsets must be finite (m), got xWheelYPos="
-                             f"{xWheelYPos!r}, yWheelXPos={yWheelXPos!r}")
-        self.pose = initial(initialPose)
-        self.x_wheel_y = xWheelYPos
-        self.y_wheel_x = yWheelXPos
-        self.prev_x = xWheelPos
-        self.prev_y = yWheelPos
+        if not (isfinite(x_wheel_y_pos) and isfinite(y_wheel_x_pos)):
+            raise ValueError(f"wheel offsets must be finite (m), got x_wheel_y_pos="
+                             f"{x_wheel_y_pos!r}, y_wheel_x_pos={y_wheel_x_pos!r}")
+        self.pose = initial(initial_pose)
+        self.x_wheel_y = x_wheel_y_pos
+        self.y_wheel_x = y_wheel_x_pos
+        self.prev_x = x_wheel_pos
+        self.prev_y = y_wheel_pos
         self.width = 2
         self.gyro = True
-        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.ready = True
 
-    def resetPosition(self, double xWheelPos, double yWheelPos, gyroAngle: Rotation2d,
+    def resetPosition(self, double x_wheel_pos, double y_wheel_pos, gyro_angle: Rotation2d,
                       pose: Pose2d):
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self.prev_x = xWheelPos
-        self.prev_y = yWheelPos
-        self.prev_gyro = (<Rotation2d>gyroAngle).r
+        self.prev_x = x_wheel_pos
+        self.prev_y = y_wheel_pos
+        self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.pose = (<Pose2d>pose).p
 
-    def update(self, double xWheelPos, double yWheelPos, gyroAngle: Rotation2d):
+    def update(self, double x_wheel_pos, double y_wheel_pos, gyro_angle: Rotation2d):
         """Integrate the wheel-distance changes (m) since the last call and the gyro
         change; return the new pose."""
-        check_type(gyroAngle, Rotation2d, "gyroAngle")
-        self._step(xWheelPos, yWheelPos, <Rotation2d>gyroAngle)
+        check_type(gyro_angle, Rotation2d, "gyro_angle")
+        self._step(x_wheel_pos, y_wheel_pos, <Rotation2d>gyro_angle)
         return new_pose(self.pose)
 
-    cdef int _step(self, double xWheelPos, double yWheelPos, Rotation2d gyroAngle) except -1:
+    cdef int _step(self, double x_wheel_pos, double y_wheel_pos,
+                   Rotation2d gyro_angle) except -1:
         if not self.ready:
             uninitialised(self)
         cdef double r[3]
-        cdef rot2_t turn = gyro_turn(gyroAngle.r, &self.prev_gyro)
+        cdef rot2_t turn = gyro_turn(gyro_angle.r, &self.prev_gyro)
         cdef double dtheta = rot_radians(turn)
-        self._motion(xWheelPos, yWheelPos, dtheta, r)
+        self._motion(x_wheel_pos, y_wheel_pos, dtheta, r)
         odometry_move_cs(&self.pose, &self.twist, r[0], r[1], dtheta, turn.c, turn.s, True)
         return 0
 
-    cdef void _motion(self, double xWheelPos, double yWheelPos, double dtheta,
+    cdef void _motion(self, double x_wheel_pos, double y_wheel_pos, double dtheta,
                       double* r) noexcept nogil:
         # The wheels' readings minus the arcs the heading change dtheta swept them through.
-        r[0] = xWheelPos - self.prev_x + dtheta * self.x_wheel_y
-        r[1] = yWheelPos - self.prev_y - dtheta * self.y_wheel_x
-        self.prev_x = xWheelPos
-        self.prev_y = yWheelPos
+        r[0] = x_wheel_pos - self.prev_x + dtheta * self.x_wheel_y
+        r[1] = y_wheel_pos - self.prev_y - dtheta * self.y_wheel_x
+        self.prev_x = x_wheel_pos
+        self.prev_y = y_wheel_pos
 
     cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
                        double* dth, double* mxy, double* scratch) noexcept nogil:
@@ -387,7 +389,7 @@ cdef class TwoDeadWheelOdometry(_Odometry):
     def toChassisVelocities(self, double vx, double vy, double omega):
         """Return the robot velocity from the forward wheel's and left wheel's surface
         velocities ``vx``, ``vy`` (m/s) and the gyro rate ``omega`` (rad/s):
-        (vx + omega·xWheelYPos, vy − omega·yWheelXPos, omega)."""
+        (vx + omega·x_wheel_y_pos, vy − omega·y_wheel_x_pos, omega)."""
         if not self.ready:
             uninitialised(self)
         return new_chassis_velocities(vx + omega * self.x_wheel_y,
@@ -395,11 +397,11 @@ cdef class TwoDeadWheelOdometry(_Odometry):
 
 
 cdef class DeadWheelOdometry(_Odometry):
-    """DeadWheelOdometry(kinematics, wheelPositions, gyroAngle=None, initialPose=Pose2d())
+    """DeadWheelOdometry(kinematics, wheel_positions, gyro_angle=None, initial_pose=Pose2d())
 
     Tracks a robot's pose from N dead wheels (DeadWheelKinematics) and, optionally, a
-    gyro. ``wheelPositions`` are the wheels' distances (m): a list or tuple of floats or a
-    1-D float64 array, in the kinematics' wheel order. With a gyro (``gyroAngle`` a
+    gyro. ``wheel_positions`` are the wheels' distances (m): a list or tuple of floats or a
+    1-D float64 array, in the kinematics' wheel order. With a gyro (``gyro_angle`` a
     Rotation2d) every update takes dθ from its wrapped change and fits (dx, dy) to the
     wheels; without one, all three come from the wheels (the layout must observe
     rotation). Whether a gyro is used is fixed here: ``update`` and ``resetPosition``
@@ -409,79 +411,80 @@ cdef class DeadWheelOdometry(_Odometry):
     def __cinit__(self, *args, **kwargs):
         self.prev = NULL
 
-    def __init__(self, kinematics: DeadWheelKinematics, wheelPositions,
-                 gyroAngle=None, initialPose=None):
+    def __init__(self, kinematics: DeadWheelKinematics, wheel_positions,
+                 gyro_angle=None, initial_pose=None):
         check_type(kinematics, DeadWheelKinematics, "kinematics")
         cdef DeadWheelKinematics kin = <DeadWheelKinematics>kinematics
         self._start_init()
         kin._ready()
-        if gyroAngle is None:
+        if gyro_angle is None:
             if not kin.heading:
                 kin._need_heading("DeadWheelOdometry")
-        elif not isinstance(gyroAngle, Rotation2d):
-            raise TypeError(f"gyroAngle must be a Rotation2d or None, got {type_name(gyroAngle)}")
-        cdef pose2_t p = initial(initialPose)
+        elif not isinstance(gyro_angle, Rotation2d):
+            raise TypeError(f"gyro_angle must be a Rotation2d or None, "
+                            f"got {type_name(gyro_angle)}")
+        cdef pose2_t p = initial(initial_pose)
         cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kin.n)
         if prev == NULL:
             raise MemoryError()
         try:
-            kin._read(wheelPositions, prev, "wheelPositions")
+            kin._read(wheel_positions, prev, "wheel_positions")
         except BaseException:
             PyMem_Free(prev)
             raise
         self.prev = prev
         self.kin = kin
         self.width = kin.n
-        self.gyro = gyroAngle is not None
+        self.gyro = gyro_angle is not None
         if self.gyro:
-            self.prev_gyro = (<Rotation2d>gyroAngle).r
+            self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.pose = p
         self.ready = True
 
     def __dealloc__(self):
         PyMem_Free(self.prev)
 
-    cdef int _gyro_arg(self, object gyroAngle, str call) except -1:
+    cdef int _gyro_arg(self, object gyro_angle, str call) except -1:
         if self.gyro:
-            if not isinstance(gyroAngle, Rotation2d):
-                raise TypeError(f"{call}: this DeadWheelOdometry uses a gyro, so gyroAngle "
-                                f"must be a Rotation2d, got {type_name(gyroAngle)}")
-        elif gyroAngle is not None:
+            if not isinstance(gyro_angle, Rotation2d):
+                raise TypeError(f"{call}: this DeadWheelOdometry uses a gyro, so gyro_angle "
+                                f"must be a Rotation2d, got {type_name(gyro_angle)}")
+        elif gyro_angle is not None:
             raise ValueError(f"{call}: this DeadWheelOdometry was constructed without a "
-                             "gyro, so gyroAngle must be None")
+                             "gyro, so gyro_angle must be None")
         return 0
 
-    def resetPosition(self, wheelPositions, gyroAngle, pose: Pose2d):
+    def resetPosition(self, wheel_positions, gyro_angle, pose: Pose2d):
         """Reset the pose, the wheel-position baselines and (with a gyro) the gyro
-        baseline; pass ``gyroAngle=None`` for an odometry without a gyro."""
+        baseline; pass ``gyro_angle=None`` for an odometry without a gyro."""
         cdef Py_ssize_t i
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self._gyro_arg(gyroAngle, "resetPosition")
-        self.kin._read(wheelPositions, self.kin.s, "wheelPositions")
+        self._gyro_arg(gyro_angle, "resetPosition")
+        self.kin._read(wheel_positions, self.kin.s, "wheel_positions")
         for i in range(self.kin.n):
             self.prev[i] = self.kin.s[i]
         if self.gyro:
-            self.prev_gyro = (<Rotation2d>gyroAngle).r
+            self.prev_gyro = (<Rotation2d>gyro_angle).r
         self.pose = (<Pose2d>pose).p
 
-    def update(self, wheelPositions, gyroAngle=None):
+    def update(self, wheel_positions, gyro_angle=None):
         """Integrate the wheel-distance changes (m) since the last call (and the gyro
         change, with a gyro); return the new pose."""
-        self._step(wheelPositions, gyroAngle)
+        self._step(wheel_positions, gyro_angle)
         return new_pose(self.pose)
 
-    cdef int _step(self, object wheelPositions, object gyroAngle) except -1:
+    cdef int _step(self, object wheel_positions, object gyro_angle) except -1:
         cdef DeadWheelKinematics k = self.kin
         if not self.ready:
             uninitialised(self)
-        self._gyro_arg(gyroAngle, "update")
-        k._read(wheelPositions, k.s, "wheelPositions")
+        self._gyro_arg(gyro_angle, "update")
+        k._read(wheel_positions, k.s, "wheel_positions")
         cdef double r[3]
         cdef rot2_t turn
         if self.gyro:
-            turn = gyro_turn((<Rotation2d>gyroAngle).r, &self.prev_gyro)
+            turn = gyro_turn((<Rotation2d>gyro_angle).r, &self.prev_gyro)
             self._motion(k.s, rot_radians(turn), r)
             odometry_move_cs(&self.pose, &self.twist, r[0], r[1], r[2], turn.c, turn.s,
                              True)

@@ -37,7 +37,7 @@ __all__ = ["SwerveDriveKinematics", "SwerveModuleAcceleration", "SwerveModulePos
 
 @final
 class SwerveDriveKinematics(Drivetrain):
-    """``SwerveDriveKinematics(*moduleTranslations)``
+    """``SwerveDriveKinematics(*module_translations)``
 
     Kinematics of a swerve drive with N ≥ 2 modules at the given robot-relative
     positions (Translation2d, m), in the order used by every method. Pass the
@@ -47,15 +47,15 @@ class SwerveDriveKinematics(Drivetrain):
     velocity is exactly zero, or a module's own speed is at most 1e-6 m/s, the module keeps
     its previous angle instead of snapping to 0. The heading memory lives in this object.
     The forward (pseudo-inverse) matrices are computed once for a centre of rotation at
-    the robot origin and never change; a ``centerOfRotation`` passed to inverse kinematics
-    only moves the inverse rows, and stays in effect until a different one is passed
-    (compared within 1e-9 m).
+    the robot origin and never change; a ``center_of_rotation`` passed to inverse
+    kinematics only moves the inverse rows, and stays in effect until a different one is
+    passed (compared within 1e-9 m).
     """
 
     @overload
-    def __init__(self, moduleTranslations: Sequence[Translation2d], /) -> None: ...
+    def __init__(self, module_translations: Sequence[Translation2d], /) -> None: ...
     @overload
-    def __init__(self, *moduleTranslations: Translation2d) -> None: ...
+    def __init__(self, *module_translations: Translation2d) -> None: ...
     def getModules(self) -> tuple[Translation2d, ...]:
         """Return the module positions (tuple of Translation2d, m), constructor order."""
 
@@ -63,30 +63,30 @@ class SwerveDriveKinematics(Drivetrain):
         """Return the number of modules N."""
 
     @overload
-    def resetHeadings(self, moduleHeadings: Sequence[Rotation2d]) -> None:
+    def resetHeadings(self, module_headings: Sequence[Rotation2d]) -> None:
         """Replace the remembered module headings (N Rotation2d, as arguments or one
         sequence); used when the chassis velocity is zero or a module is on the CoR."""
 
     @overload
-    def resetHeadings(self, moduleHeadings: Rotation2d, *more: Rotation2d) -> None: ...
+    def resetHeadings(self, module_headings: Rotation2d, *more: Rotation2d) -> None: ...
     def toSwerveModuleVelocities(
-        self, chassisVelocities: ChassisVelocities, centerOfRotation: Translation2d = ...
+        self, chassis_velocities: ChassisVelocities, center_of_rotation: Translation2d = ...
     ) -> tuple[SwerveModuleVelocity, ...]:
         """Return the N module velocities (tuple of SwerveModuleVelocity) that produce
-        ``chassisVelocities`` (robot-relative, m/s and rad/s), rotating about
-        ``centerOfRotation`` (robot frame, m). Module speeds are ≥ 0; the angles follow the
-        heading-memory rules in the class docstring. Not desaturated."""
+        ``chassis_velocities`` (robot-relative, m/s and rad/s), rotating about
+        ``center_of_rotation`` (robot frame, m). Module speeds are ≥ 0; the angles follow
+        the heading-memory rules in the class docstring. Not desaturated."""
 
     def toWheelVelocities(
-        self, chassisVelocities: ChassisVelocities
+        self, chassis_velocities: ChassisVelocities
     ) -> tuple[SwerveModuleVelocity, ...]:
         """Same as :meth:`toSwerveModuleVelocities` about the robot origin."""
 
     def toSwerveModuleVelocitiesInto(
         self,
-        chassisVelocities: ChassisVelocities,
+        chassis_velocities: ChassisVelocities,
         out: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
-        centerOfRotation: Translation2d = ...,
+        center_of_rotation: Translation2d = ...,
     ) -> None:
         """Allocation-free :meth:`toSwerveModuleVelocities`.
 
@@ -96,35 +96,35 @@ class SwerveDriveKinematics(Drivetrain):
 
     def desaturatedDiscretize(
         self,
-        chassisVelocities: ChassisVelocities,
+        chassis_velocities: ChassisVelocities,
         dt: float,
-        attainableMaxModuleVelocity: float,
+        attainable_max_module_velocity: float,
     ) -> ChassisVelocities:
         """Return ``discretize(k·v, dt)`` for the largest k in [0, 1] at which no module
-        (about the robot origin) goes faster than ``attainableMaxModuleVelocity`` (m/s).
+        (about the robot origin) goes faster than ``attainable_max_module_velocity`` (m/s).
 
-        ``v`` is the robot-relative ``chassisVelocities`` (m/s, rad/s) and ``dt`` the loop
+        ``v`` is the robot-relative ``chassis_velocities`` (m/s, rad/s) and ``dt`` the loop
         period (s, > 0). Unlike ``discretize`` followed by
         :meth:`desaturateWheelVelocities`, which scales the modules after the discretize
         correction and so turns the direction of travel by (k − 1)·ω·dt/2 (the skew
         WPILib's ``discretize`` documentation warns about), the robot moves exactly in
         the commanded direction, and unlike desaturating before discretizing, no module
         ends above the limit. k is exact to 1e-14 relative; with no saturation the result
-        is ``chassisVelocities.discretize(dt)``. Every input must be finite (the limit
+        is ``chassis_velocities.discretize(dt)``. Every input must be finite (the limit
         may be +inf) and the limit ≥ 0; with no limit, a result beyond the largest double
         is a ValueError."""
     def desaturatedDiscretizeInto(
         self,
-        chassisVelocities: ChassisVelocities,
+        chassis_velocities: ChassisVelocities,
         dt: float,
-        attainableMaxModuleVelocity: float,
+        attainable_max_module_velocity: float,
         out: ChassisVelocities,
     ) -> None:
         """Allocation-free :meth:`desaturatedDiscretize`: the result goes into ``out``
-        (which may be ``chassisVelocities``). Returns None."""
+        (which may be ``chassis_velocities``). Returns None."""
     @overload
     def toChassisVelocities(
-        self, moduleVelocities: Sequence[SwerveModuleVelocity]
+        self, module_velocities: Sequence[SwerveModuleVelocity]
     ) -> ChassisVelocities:
         """Return the least-squares ChassisVelocities (robot-relative) for N measured
         module velocities (SwerveModuleVelocity, as arguments or one sequence, or an (N, 2)
@@ -132,20 +132,20 @@ class SwerveDriveKinematics(Drivetrain):
 
     @overload
     def toChassisVelocities(
-        self, moduleVelocities: SwerveModuleVelocity, *more: SwerveModuleVelocity
+        self, module_velocities: SwerveModuleVelocity, *more: SwerveModuleVelocity
     ) -> ChassisVelocities: ...
     def toChassisVelocitiesInto(
         self,
-        moduleVelocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
+        module_velocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
         out: ChassisVelocities,
     ) -> None:
-        """Allocation-free :meth:`toChassisVelocities`: ``moduleVelocities`` is a sequence
+        """Allocation-free :meth:`toChassisVelocities`: ``module_velocities`` is a sequence
         of N SwerveModuleVelocity or an (N, 2) float64 array ``[velocity m/s, angle rad]``;
         the result is written into ``out``. Returns None."""
 
     @overload
-    def toTwist2d(self, first: Sequence[SwerveModulePosition]) -> Twist2d:
-        """toTwist2d(*moduleDeltas) or toTwist2d(start, end)
+    def toTwist2d(self, module_deltas: Sequence[SwerveModulePosition]) -> Twist2d:
+        """toTwist2d(*module_deltas) or toTwist2d(start, end)
 
         Return the Twist2d (m, rad) of the robot for N module position deltas
         (SwerveModulePosition: distance driven since the last update and the current
@@ -154,14 +154,16 @@ class SwerveDriveKinematics(Drivetrain):
         ``end.distance − start.distance`` at the **end** angle, as in WPILib."""
 
     @overload
-    def toTwist2d(self, first: SwerveModulePosition, *more: SwerveModulePosition) -> Twist2d: ...
+    def toTwist2d(
+        self, module_deltas: SwerveModulePosition, *more: SwerveModulePosition
+    ) -> Twist2d: ...
     @overload
     def toTwist2d(
-        self, first: Sequence[SwerveModulePosition], end: Sequence[SwerveModulePosition], /
+        self, start: Sequence[SwerveModulePosition], end: Sequence[SwerveModulePosition], /
     ) -> Twist2d: ...
     def toTwist2dInto(
         self,
-        moduleDeltas: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
+        module_deltas: Sequence[SwerveModulePosition] | npt.NDArray[np.float64],
         out: Twist2d,
     ) -> None:
         """Allocation-free :meth:`toTwist2d` for N deltas (SwerveModulePosition objects or an
@@ -169,8 +171,8 @@ class SwerveDriveKinematics(Drivetrain):
 
     def interpolate(
         self,
-        startValue: Sequence[SwerveModulePosition],
-        endValue: Sequence[SwerveModulePosition],
+        start: Sequence[SwerveModulePosition],
+        end: Sequence[SwerveModulePosition],
         t: float,
     ) -> tuple[SwerveModulePosition, ...]:
         """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
@@ -187,27 +189,27 @@ class SwerveDriveKinematics(Drivetrain):
 
     def toSwerveModuleAccelerations(
         self,
-        chassisAccelerations: ChassisAccelerations,
-        angularVelocity: float = 0.0,
-        centerOfRotation: Translation2d = ...,
+        chassis_accelerations: ChassisAccelerations,
+        angular_velocity: float = 0.0,
+        center_of_rotation: Translation2d = ...,
     ) -> tuple[SwerveModuleAcceleration, ...]:
         """Return the N module accelerations (SwerveModuleAcceleration: magnitude m/s² and
-        direction) for ``chassisAccelerations`` while turning at ``angularVelocity`` rad/s
-        about ``centerOfRotation`` (m): a_i = a + α × r_i − ω² r_i.
+        direction) for ``chassis_accelerations`` while turning at ``angular_velocity``
+        rad/s about ``center_of_rotation`` (m): a_i = a + α × r_i − ω² r_i.
 
-        WPILib's rules are kept: an exactly zero ``chassisAccelerations`` gives all-zero
-        results even when ``angularVelocity`` ≠ 0, and a module whose acceleration is at
+        WPILib's rules are kept: an exactly zero ``chassis_accelerations`` gives all-zero
+        results even when ``angular_velocity`` ≠ 0, and a module whose acceleration is at
         most 1e-6 gets angle 0 (there is no heading memory for accelerations)."""
 
     def toWheelAccelerations(
-        self, chassisAccelerations: ChassisAccelerations
+        self, chassis_accelerations: ChassisAccelerations
     ) -> tuple[SwerveModuleAcceleration, ...]:
         """Same as :meth:`toSwerveModuleAccelerations` with zero angular velocity about
         the robot origin."""
 
     @overload
     def toChassisAccelerations(
-        self, moduleAccelerations: Sequence[SwerveModuleAcceleration]
+        self, module_accelerations: Sequence[SwerveModuleAcceleration]
     ) -> ChassisAccelerations:
         """Return the least-squares ChassisAccelerations for N module accelerations
         (as arguments or one sequence, or an (N, 2) float64 array ``[m/s², angle rad]``).
@@ -215,48 +217,49 @@ class SwerveDriveKinematics(Drivetrain):
 
     @overload
     def toChassisAccelerations(
-        self, moduleAccelerations: SwerveModuleAcceleration, *more: SwerveModuleAcceleration
+        self, module_accelerations: SwerveModuleAcceleration, *more: SwerveModuleAcceleration
     ) -> ChassisAccelerations: ...
     @overload
     @staticmethod
     def desaturateWheelVelocities(
-        moduleVelocities: Sequence[SwerveModuleVelocity],
-        attainableMaxSpeed: float,
-        attainableMaxModuleSpeed: None = None,
-        attainableMaxTranslationalSpeed: None = None,
-        attainableMaxRotationalVelocity: None = None,
+        module_velocities: Sequence[SwerveModuleVelocity],
+        attainable_max_velocity: float,
+        attainable_max_module_velocity: None = None,
+        attainable_max_robot_translation_velocity: None = None,
+        attainable_max_robot_rotation_velocity: None = None,
     ) -> tuple[SwerveModuleVelocity, ...]:
-        """desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed) or
-        desaturateWheelVelocities(moduleVelocities, desiredChassisVelocity,
-        attainableMaxModuleSpeed, attainableMaxTranslationalSpeed,
-        attainableMaxRotationalVelocity)
+        """desaturateWheelVelocities(module_velocities, attainable_max_velocity) or
+        desaturateWheelVelocities(module_velocities, desired_chassis_velocity,
+        attainable_max_module_velocity, attainable_max_robot_translation_velocity,
+        attainable_max_robot_rotation_velocity)
 
         Return new module velocities (tuple) scaled down so no wheel exceeds its limit,
         keeping their ratios and angles. The one-limit form scales only when the fastest
-        wheel is above ``attainableMaxSpeed`` (m/s). The five-argument form also scales by
-        how hard the driver asks (``desiredChassisVelocity`` against the translational m/s
-        and rotational rad/s limits), so it can slow unsaturated wheels; it leaves the
-        velocities unchanged if either chassis limit or every wheel speed is zero. The
-        input is not modified (2027). In the five-argument form the second parameter is
-        the desired ChassisVelocities."""
+        wheel is above ``attainable_max_velocity`` (m/s). The five-argument form also
+        scales by how hard the driver asks (``desired_chassis_velocity`` against the
+        translational m/s and rotational rad/s limits), so it can slow unsaturated wheels;
+        it leaves the velocities unchanged if either chassis limit or every wheel speed is
+        zero. The input is not modified (2027). In the five-argument form the second
+        parameter is the desired ChassisVelocities, passed by position (its keyword is the
+        two-argument form's ``attainable_max_velocity``)."""
 
     @overload
     @staticmethod
     def desaturateWheelVelocities(
-        moduleVelocities: Sequence[SwerveModuleVelocity],
-        attainableMaxSpeed: ChassisVelocities,
-        attainableMaxModuleSpeed: float,
-        attainableMaxTranslationalSpeed: float,
-        attainableMaxRotationalVelocity: float,
+        module_velocities: Sequence[SwerveModuleVelocity],
+        attainable_max_velocity: ChassisVelocities,
+        attainable_max_module_velocity: float,
+        attainable_max_robot_translation_velocity: float,
+        attainable_max_robot_rotation_velocity: float,
     ) -> tuple[SwerveModuleVelocity, ...]: ...
     @overload
     @staticmethod
     def desaturateWheelVelocitiesInPlace(
-        moduleVelocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
-        attainableMaxSpeed: float,
-        attainableMaxModuleSpeed: None = None,
-        attainableMaxTranslationalSpeed: None = None,
-        attainableMaxRotationalVelocity: None = None,
+        module_velocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
+        attainable_max_velocity: float,
+        attainable_max_module_velocity: None = None,
+        attainable_max_robot_translation_velocity: None = None,
+        attainable_max_robot_rotation_velocity: None = None,
     ) -> None:
         """Allocation-free :meth:`desaturateWheelVelocities` (same two forms) that rescales
         the caller's N SwerveModuleVelocity objects, or column 0 of an (N, 2) float64
@@ -265,11 +268,11 @@ class SwerveDriveKinematics(Drivetrain):
     @overload
     @staticmethod
     def desaturateWheelVelocitiesInPlace(
-        moduleVelocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
-        attainableMaxSpeed: ChassisVelocities,
-        attainableMaxModuleSpeed: float,
-        attainableMaxTranslationalSpeed: float,
-        attainableMaxRotationalVelocity: float,
+        module_velocities: Sequence[SwerveModuleVelocity] | npt.NDArray[np.float64],
+        attainable_max_velocity: ChassisVelocities,
+        attainable_max_module_velocity: float,
+        attainable_max_robot_translation_velocity: float,
+        attainable_max_robot_rotation_velocity: float,
     ) -> None: ...
 
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)

@@ -118,7 +118,7 @@ cdef void store_modules(object fast, Py_ssize_t n, const double* m, const double
 
 # ---------------------------------------------------------------------------------------
 cdef class SwerveDriveKinematics(Drivetrain):
-    """``SwerveDriveKinematics(*moduleTranslations)``
+    """``SwerveDriveKinematics(*module_translations)``
 
     Kinematics of a swerve drive with N ≥ 2 modules at the given robot-relative
     positions (Translation2d, m), in the order used by every method. Pass the
@@ -128,12 +128,12 @@ cdef class SwerveDriveKinematics(Drivetrain):
     velocity is exactly zero, or a module's own speed is at most 1e-6 m/s, the module keeps
     its previous angle instead of snapping to 0. The heading memory lives in this object.
     The forward (pseudo-inverse) matrices are computed once for a centre of rotation at
-    the robot origin and never change; a ``centerOfRotation`` passed to inverse kinematics
-    only moves the inverse rows, and stays in effect until a different one is passed
-    (compared within 1e-9 m).
+    the robot origin and never change; a ``center_of_rotation`` passed to inverse
+    kinematics only moves the inverse rows, and stays in effect until a different one is
+    passed (compared within 1e-9 m).
     """
 
-    def __cinit__(self, *moduleTranslations):
+    def __cinit__(self, *module_translations):
         self.buf = NULL
 
     cdef int _refuse_reinit(self) except -1:
@@ -142,11 +142,12 @@ cdef class SwerveDriveKinematics(Drivetrain):
                             "be called again")
         return 0
 
-    def __init__(self, *moduleTranslations):
+    def __init__(self, *module_translations):
         self._refuse_reinit()
-        if not moduleTranslations:
+        if not module_translations:
             raise ValueError("a swerve drive needs at least 2 modules, got 0")
-        mods = snapshot(varargs(moduleTranslations[0], moduleTranslations[1:], Translation2d),
+        mods = snapshot(varargs(module_translations[0], module_translations[1:],
+                                Translation2d),
                         "SwerveDriveKinematics() takes Translation2d module positions or one "
                         "sequence of them; the argument")
         cdef Py_ssize_t n = len(mods), i, k
@@ -261,18 +262,19 @@ cdef class SwerveDriveKinematics(Drivetrain):
         self._ready()
         return self.n
 
-    def resetHeadings(self, moduleHeadings, *more):
+    def resetHeadings(self, module_headings, *more):
         """Replace the remembered module headings (N Rotation2d, as arguments or one
         sequence); used when the chassis velocity is zero or a module is on the CoR."""
         self._ready()
-        cdef object fast = as_fast(varargs(moduleHeadings, more, Rotation2d), "moduleHeadings")
+        cdef object fast = as_fast(varargs(module_headings, more, Rotation2d),
+                                   "module_headings")
         cdef Py_ssize_t i, k = PySequence_Fast_GET_SIZE(fast)
         if k != self.n:
             raise ValueError(f"expected {self.n} module headings (one per module), got {k}")
         cdef PyObject** items = PySequence_Fast_ITEMS(fast)
         for i in range(k):
             if not exact_type(items[i], <PyObject*>Rotation2d):
-                raise TypeError(f"moduleHeadings[{i}] must be a Rotation2d, "
+                raise TypeError(f"module_headings[{i}] must be a Rotation2d, "
                                 f"got {type_name(<object>items[i])}")
         for i in range(k):
             self.hc[i] = (<Rotation2d>items[i]).r.c
@@ -342,42 +344,42 @@ cdef class SwerveDriveKinematics(Drivetrain):
                   self.s0, self.s1, self.s2)
         return 0
 
-    def toSwerveModuleVelocities(self, chassisVelocities: ChassisVelocities,
-                                 centerOfRotation: Translation2d = ORIGIN):
+    def toSwerveModuleVelocities(self, chassis_velocities: ChassisVelocities,
+                                 center_of_rotation: Translation2d = ORIGIN):
         """Return the N module velocities (tuple of SwerveModuleVelocity) that produce
-        ``chassisVelocities`` (robot-relative, m/s and rad/s), rotating about
-        ``centerOfRotation`` (robot frame, m). Module speeds are ≥ 0; the angles follow the
-        heading-memory rules in the class docstring. Not desaturated."""
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
-        check_type(centerOfRotation, Translation2d, "centerOfRotation")
+        ``chassis_velocities`` (robot-relative, m/s and rad/s), rotating about
+        ``center_of_rotation`` (robot frame, m). Module speeds are ≥ 0; the angles follow
+        the heading-memory rules in the class docstring. Not desaturated."""
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
+        check_type(center_of_rotation, Translation2d, "center_of_rotation")
         self._ready()
         cdef object t = new_modules(self.n, SwerveModuleVelocity)
-        self._ik(<ChassisVelocities>chassisVelocities, <Translation2d>centerOfRotation)
+        self._ik(<ChassisVelocities>chassis_velocities, <Translation2d>center_of_rotation)
         store_modules(t, self.n, self.s0, self.s1, self.s2)
         return t
 
-    def toWheelVelocities(self, chassisVelocities: ChassisVelocities):
+    def toWheelVelocities(self, chassis_velocities: ChassisVelocities):
         """Same as :meth:`toSwerveModuleVelocities` about the robot origin."""
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
         self._ready()
         cdef object t = new_modules(self.n, SwerveModuleVelocity)
-        self._ik(<ChassisVelocities>chassisVelocities, ORIGIN)
+        self._ik(<ChassisVelocities>chassis_velocities, ORIGIN)
         store_modules(t, self.n, self.s0, self.s1, self.s2)
         return t
 
-    def toSwerveModuleVelocitiesInto(self, chassisVelocities: ChassisVelocities, out,
-                                     centerOfRotation: Translation2d = ORIGIN):
+    def toSwerveModuleVelocitiesInto(self, chassis_velocities: ChassisVelocities, out,
+                                     center_of_rotation: Translation2d = ORIGIN):
         """Allocation-free :meth:`toSwerveModuleVelocities`.
 
         ``out`` is either a list/tuple of N SwerveModuleVelocity objects, updated in place,
         or a float64 C-contiguous writeable numpy array of shape (N, 2) that receives
         ``[velocity m/s, angle rad]`` per module. Returns None."""
         cdef double* d
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
-        check_type(centerOfRotation, Translation2d, "centerOfRotation")
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
+        check_type(center_of_rotation, Translation2d, "center_of_rotation")
         self._ready()
         cdef object fast = out_modules(out, self.n, SwerveModuleVelocity, "out", &d)
-        self._ik(<ChassisVelocities>chassisVelocities, <Translation2d>centerOfRotation)
+        self._ik(<ChassisVelocities>chassis_velocities, <Translation2d>center_of_rotation)
         if d == NULL:
             store_modules(fast, self.n, self.s0, self.s1, self.s2)
         else:
@@ -411,36 +413,36 @@ cdef class SwerveDriveKinematics(Drivetrain):
             self.s2[i] = (<_ModuleVector>items[i]).a.s
         return 0
 
-    def desaturatedDiscretize(self, chassisVelocities: ChassisVelocities, double dt,
-                              double attainableMaxModuleVelocity):
+    def desaturatedDiscretize(self, chassis_velocities: ChassisVelocities, double dt,
+                              double attainable_max_module_velocity):
         """Return ``discretize(k·v, dt)`` for the largest k in [0, 1] at which no module
-        (about the robot origin) goes faster than ``attainableMaxModuleVelocity`` (m/s).
+        (about the robot origin) goes faster than ``attainable_max_module_velocity`` (m/s).
 
-        ``v`` is the robot-relative ``chassisVelocities`` (m/s, rad/s) and ``dt`` the loop
+        ``v`` is the robot-relative ``chassis_velocities`` (m/s, rad/s) and ``dt`` the loop
         period (s, > 0). Unlike ``discretize`` followed by
         :meth:`desaturateWheelVelocities`, which scales the modules after the discretize
         correction and so turns the direction of travel by (k − 1)·ω·dt/2 (the skew
         WPILib's ``discretize`` documentation warns about), the robot moves exactly in
         the commanded direction, and unlike desaturating before discretizing, no module
         ends above the limit. k is exact to 1e-14 relative; with no saturation the result
-        is ``chassisVelocities.discretize(dt)``. Every input must be finite (the limit
+        is ``chassis_velocities.discretize(dt)``. Every input must be finite (the limit
         may be +inf) and the limit ≥ 0; with no limit, a result beyond the largest double
         is a ValueError."""
         cdef vec3_t d
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
-        self._desaturated_discretize((<ChassisVelocities>chassisVelocities).v, dt,
-                                     attainableMaxModuleVelocity, &d)
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
+        self._desaturated_discretize((<ChassisVelocities>chassis_velocities).v, dt,
+                                     attainable_max_module_velocity, &d)
         return new_chassis_velocities(d.x, d.y, d.z)
 
-    def desaturatedDiscretizeInto(self, chassisVelocities: ChassisVelocities, double dt,
-                                  double attainableMaxModuleVelocity,
+    def desaturatedDiscretizeInto(self, chassis_velocities: ChassisVelocities, double dt,
+                                  double attainable_max_module_velocity,
                                   out: ChassisVelocities):
         """Allocation-free :meth:`desaturatedDiscretize`: the result goes into ``out``
-        (which may be ``chassisVelocities``). Returns None."""
-        check_type(chassisVelocities, ChassisVelocities, "chassisVelocities")
+        (which may be ``chassis_velocities``). Returns None."""
+        check_type(chassis_velocities, ChassisVelocities, "chassis_velocities")
         check_type(out, ChassisVelocities, "out")
-        self._desaturated_discretize((<ChassisVelocities>chassisVelocities).v, dt,
-                                     attainableMaxModuleVelocity,
+        self._desaturated_discretize((<ChassisVelocities>chassis_velocities).v, dt,
+                                     attainable_max_module_velocity,
                                      &(<ChassisVelocities>out).v)
 
     cdef int _desaturated_discretize(self, vec3_t v, double dt, double limit,
@@ -452,27 +454,27 @@ cdef class SwerveDriveKinematics(Drivetrain):
         out[0] = chassis_discretize(k * v.x, k * v.y, k * v.z, dt)
         return 0
 
-    def toChassisVelocities(self, moduleVelocities, *more):
+    def toChassisVelocities(self, module_velocities, *more):
         """Return the least-squares ChassisVelocities (robot-relative) for N measured
         module velocities (SwerveModuleVelocity, as arguments or one sequence, or an (N, 2)
         float64 array ``[velocity m/s, angle rad]``)."""
         cdef double r[3]
-        self._read(varargs(moduleVelocities, more, SwerveModuleVelocity), SwerveModuleVelocity,
-                   "moduleVelocities")
+        self._read(varargs(module_velocities, more, SwerveModuleVelocity),
+                   SwerveModuleVelocity, "module_velocities")
         forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
         return new_chassis_velocities(r[0], r[1], r[2])
 
-    def toChassisVelocitiesInto(self, moduleVelocities, out: ChassisVelocities):
-        """Allocation-free :meth:`toChassisVelocities`: ``moduleVelocities`` is a sequence
+    def toChassisVelocitiesInto(self, module_velocities, out: ChassisVelocities):
+        """Allocation-free :meth:`toChassisVelocities`: ``module_velocities`` is a sequence
         of N SwerveModuleVelocity or an (N, 2) float64 array ``[velocity m/s, angle rad]``;
         the result is written into ``out``. Returns None."""
         check_type(out, ChassisVelocities, "out")
-        self._read(moduleVelocities, SwerveModuleVelocity, "moduleVelocities")
+        self._read(module_velocities, SwerveModuleVelocity, "module_velocities")
         forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2,
                       &(<ChassisVelocities>out).v.x)
 
-    def toTwist2d(self, first, *more):
-        """toTwist2d(*moduleDeltas) or toTwist2d(start, end)
+    def toTwist2d(self, module_deltas, *more):
+        """toTwist2d(*module_deltas) or toTwist2d(start, end)
 
         Return the Twist2d (m, rad) of the robot for N module position deltas
         (SwerveModulePosition: distance driven since the last update and the current
@@ -480,11 +482,11 @@ cdef class SwerveDriveKinematics(Drivetrain):
         ``start`` and ``end``, the deltas are
         ``end.distance − start.distance`` at the **end** angle, as in WPILib."""
         cdef double r[3]
-        if len(more) == 1 and type(first) is not SwerveModulePosition:
-            self._deltas(first, more[0])
+        if len(more) == 1 and type(module_deltas) is not SwerveModulePosition:
+            self._deltas(module_deltas, more[0])
         else:
-            self._read(varargs(first, more, SwerveModulePosition), SwerveModulePosition,
-                       "moduleDeltas")
+            self._read(varargs(module_deltas, more, SwerveModulePosition),
+                       SwerveModulePosition, "module_deltas")
         forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, r)
         return new_twist(r[0], r[1], r[2])
 
@@ -509,26 +511,26 @@ cdef class SwerveDriveKinematics(Drivetrain):
             self.s2[i] = q.a.s
         return 0
 
-    def toTwist2dInto(self, moduleDeltas, out: Twist2d):
+    def toTwist2dInto(self, module_deltas, out: Twist2d):
         """Allocation-free :meth:`toTwist2d` for N deltas (SwerveModulePosition objects or an
         (N, 2) float64 array ``[distance m, angle rad]``), written into ``out``."""
         check_type(out, Twist2d, "out")
-        self._read(moduleDeltas, SwerveModulePosition, "moduleDeltas")
+        self._read(module_deltas, SwerveModulePosition, "module_deltas")
         forward_solve(3, self.n, self.f1, self.s0, self.s1, self.s2, &(<Twist2d>out).t.dx)
 
-    def interpolate(self, startValue, endValue, double t):
+    def interpolate(self, start, end, double t):
         """Return per-module ``SwerveModulePosition.interpolate`` (t not clamped)."""
         self._ready()
         # Tuples hold their items, so the results' allocations (and any finalizer they
         # trigger) cannot free an item under us.
-        cdef tuple fs = snapshot(startValue, "startValue")
-        cdef tuple fe = snapshot(endValue, "endValue")
+        cdef tuple fs = snapshot(start, "start")
+        cdef tuple fe = snapshot(end, "end")
         cdef Py_ssize_t i, k = len(fs)
         if len(fe) != k:
             raise ValueError(f"Inconsistent number of modules: start has {k}, end has {len(fe)}")
         for i in range(k):
-            item(PySequence_Fast_ITEMS(fs), i, SwerveModulePosition, "startValue")
-            item(PySequence_Fast_ITEMS(fe), i, SwerveModulePosition, "endValue")
+            item(PySequence_Fast_ITEMS(fs), i, SwerveModulePosition, "start")
+            item(PySequence_Fast_ITEMS(fe), i, SwerveModulePosition, "end")
         return tuple([(<SwerveModulePosition>fs[i]).interpolate(fe[i], t) for i in range(k)])
 
     def copy(self, positions):
@@ -557,62 +559,63 @@ cdef class SwerveDriveKinematics(Drivetrain):
             (<_ModuleVector>b[i]).m = (<_ModuleVector>a[i]).m
             (<_ModuleVector>b[i]).a = (<_ModuleVector>a[i]).a
 
-    def toSwerveModuleAccelerations(self, chassisAccelerations: ChassisAccelerations,
-                                    double angularVelocity=0.0,
-                                    centerOfRotation: Translation2d = ORIGIN):
+    def toSwerveModuleAccelerations(self, chassis_accelerations: ChassisAccelerations,
+                                    double angular_velocity=0.0,
+                                    center_of_rotation: Translation2d = ORIGIN):
         """Return the N module accelerations (SwerveModuleAcceleration: magnitude m/s² and
-        direction) for ``chassisAccelerations`` while turning at ``angularVelocity`` rad/s
-        about ``centerOfRotation`` (m): a_i = a + α × r_i − ω² r_i.
+        direction) for ``chassis_accelerations`` while turning at ``angular_velocity``
+        rad/s about ``center_of_rotation`` (m): a_i = a + α × r_i − ω² r_i.
 
-        WPILib's rules are kept: an exactly zero ``chassisAccelerations`` gives all-zero
-        results even when ``angularVelocity`` ≠ 0, and a module whose acceleration is at
+        WPILib's rules are kept: an exactly zero ``chassis_accelerations`` gives all-zero
+        results even when ``angular_velocity`` ≠ 0, and a module whose acceleration is at
         most 1e-6 gets angle 0 (there is no heading memory for accelerations)."""
-        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
-        check_type(centerOfRotation, Translation2d, "centerOfRotation")
-        cdef ChassisAccelerations ca = <ChassisAccelerations>chassisAccelerations
+        check_type(chassis_accelerations, ChassisAccelerations, "chassis_accelerations")
+        check_type(center_of_rotation, Translation2d, "center_of_rotation")
+        cdef ChassisAccelerations ca = <ChassisAccelerations>chassis_accelerations
         self._ready()
         cdef object t = new_modules(self.n, SwerveModuleAcceleration)
         if not (ca.v.x == 0.0 and ca.v.y == 0.0 and ca.v.z == 0.0):
-            self._set_cor((<Translation2d>centerOfRotation).v)
-        swerve_ik_accel(self.n, self.rx, self.ry, ca.v.x, ca.v.y, angularVelocity, ca.v.z,
+            self._set_cor((<Translation2d>center_of_rotation).v)
+        swerve_ik_accel(self.n, self.rx, self.ry, ca.v.x, ca.v.y, angular_velocity, ca.v.z,
                         self.s0, self.s1, self.s2)
         store_modules(t, self.n, self.s0, self.s1, self.s2)
         return t
 
-    def toWheelAccelerations(self, chassisAccelerations: ChassisAccelerations):
+    def toWheelAccelerations(self, chassis_accelerations: ChassisAccelerations):
         """Same as :meth:`toSwerveModuleAccelerations` with zero angular velocity about
         the robot origin."""
-        check_type(chassisAccelerations, ChassisAccelerations, "chassisAccelerations")
-        return self.toSwerveModuleAccelerations(chassisAccelerations, 0.0, ORIGIN)
+        check_type(chassis_accelerations, ChassisAccelerations, "chassis_accelerations")
+        return self.toSwerveModuleAccelerations(chassis_accelerations, 0.0, ORIGIN)
 
-    def toChassisAccelerations(self, moduleAccelerations, *more):
+    def toChassisAccelerations(self, module_accelerations, *more):
         """Return the least-squares ChassisAccelerations for N module accelerations
         (as arguments or one sequence, or an (N, 2) float64 array ``[m/s², angle rad]``).
         The ω² estimate of the solve is discarded."""
         cdef double r[4]
-        self._read(varargs(moduleAccelerations, more, SwerveModuleAcceleration),
-                   SwerveModuleAcceleration, "moduleAccelerations")
+        self._read(varargs(module_accelerations, more, SwerveModuleAcceleration),
+                   SwerveModuleAcceleration, "module_accelerations")
         forward_solve(4, self.n, self.f2, self.s0, self.s1, self.s2, r)
         return ChassisAccelerations(r[0], r[1], r[3])
 
     @staticmethod
-    def desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed,
-                                  attainableMaxModuleSpeed=None,
-                                  attainableMaxTranslationalSpeed=None,
-                                  attainableMaxRotationalVelocity=None):
-        """desaturateWheelVelocities(moduleVelocities, attainableMaxSpeed) or
-        desaturateWheelVelocities(moduleVelocities, desiredChassisVelocity,
-        attainableMaxModuleSpeed, attainableMaxTranslationalSpeed,
-        attainableMaxRotationalVelocity)
+    def desaturateWheelVelocities(module_velocities, attainable_max_velocity,
+                                  attainable_max_module_velocity=None,
+                                  attainable_max_robot_translation_velocity=None,
+                                  attainable_max_robot_rotation_velocity=None):
+        """desaturateWheelVelocities(module_velocities, attainable_max_velocity) or
+        desaturateWheelVelocities(module_velocities, desired_chassis_velocity,
+        attainable_max_module_velocity, attainable_max_robot_translation_velocity,
+        attainable_max_robot_rotation_velocity)
 
         Return new module velocities (tuple) scaled down so no wheel exceeds its limit,
         keeping their ratios and angles. The one-limit form scales only when the fastest
-        wheel is above ``attainableMaxSpeed`` (m/s). The five-argument form also scales by
-        how hard the driver asks (``desiredChassisVelocity`` against the translational m/s
-        and rotational rad/s limits), so it can slow unsaturated wheels; it leaves the
-        velocities unchanged if either chassis limit or every wheel speed is zero. The
-        input is not modified (2027). In the five-argument form the second parameter is
-        the desired ChassisVelocities."""
+        wheel is above ``attainable_max_velocity`` (m/s). The five-argument form also
+        scales by how hard the driver asks (``desired_chassis_velocity`` against the
+        translational m/s and rotational rad/s limits), so it can slow unsaturated wheels;
+        it leaves the velocities unchanged if either chassis limit or every wheel speed is
+        zero. The input is not modified (2027). In the five-argument form the second
+        parameter is the desired ChassisVelocities, passed by position (its keyword is the
+        two-argument form's ``attainable_max_velocity``)."""
         cdef desat_t p
         cdef double stack[3 * STACK_MODULES]
         cdef double* buf = stack
@@ -620,9 +623,10 @@ cdef class SwerveDriveKinematics(Drivetrain):
         cdef Py_ssize_t i, n
         cdef PyObject** items
         cdef object t
-        parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
-                    attainableMaxTranslationalSpeed, attainableMaxRotationalVelocity, &p)
-        cdef object fast = as_fast(moduleVelocities, "moduleVelocities")
+        parse_desat(attainable_max_velocity, attainable_max_module_velocity,
+                    attainable_max_robot_translation_velocity,
+                    attainable_max_robot_rotation_velocity, &p)
+        cdef object fast = as_fast(module_velocities, "module_velocities")
         n = PySequence_Fast_GET_SIZE(fast)
         if n > STACK_MODULES:
             buf = <double*>PyMem_Malloc(sizeof(double) * 3 * n)
@@ -645,10 +649,10 @@ cdef class SwerveDriveKinematics(Drivetrain):
         return t
 
     @staticmethod
-    def desaturateWheelVelocitiesInPlace(moduleVelocities, attainableMaxSpeed,
-                                         attainableMaxModuleSpeed=None,
-                                         attainableMaxTranslationalSpeed=None,
-                                         attainableMaxRotationalVelocity=None):
+    def desaturateWheelVelocitiesInPlace(module_velocities, attainable_max_velocity,
+                                         attainable_max_module_velocity=None,
+                                         attainable_max_robot_translation_velocity=None,
+                                         attainable_max_robot_rotation_velocity=None):
         """Allocation-free :meth:`desaturateWheelVelocities` (same two forms) that rescales
         the caller's N SwerveModuleVelocity objects, or column 0 of an (N, 2) float64
         array ``[velocity m/s, angle rad]``, in place. Returns None."""
@@ -656,19 +660,20 @@ cdef class SwerveDriveKinematics(Drivetrain):
         cdef double* d
         cdef double div, mul
         cdef desat_t p
-        parse_desat(attainableMaxSpeed, attainableMaxModuleSpeed,
-                    attainableMaxTranslationalSpeed, attainableMaxRotationalVelocity, &p)
+        parse_desat(attainable_max_velocity, attainable_max_module_velocity,
+                    attainable_max_robot_translation_velocity,
+                    attainable_max_robot_rotation_velocity, &p)
         cdef object fast
         cdef PyObject** items
-        if not (PyTuple_CheckExact(moduleVelocities) or PyList_CheckExact(moduleVelocities)) \
-                and cnp.PyArray_Check(moduleVelocities):
-            d = float64_data(moduleVelocities, -1, 2, True, "moduleVelocities")
-            n = cnp.PyArray_DIM(<cnp.ndarray>moduleVelocities, 0)
+        if not (PyTuple_CheckExact(module_velocities) or PyList_CheckExact(module_velocities)) \
+                and cnp.PyArray_Check(module_velocities):
+            d = float64_data(module_velocities, -1, 2, True, "module_velocities")
+            n = cnp.PyArray_DIM(<cnp.ndarray>module_velocities, 0)
             desaturate_factors(max_abs(n, d, 2), &p, &div, &mul)
             for i in range(n):
                 d[2 * i] = d[2 * i] / div * mul
             return
-        fast = as_fast(moduleVelocities, "moduleVelocities")
+        fast = as_fast(module_velocities, "module_velocities")
         n = PySequence_Fast_GET_SIZE(fast)
         items = PySequence_Fast_ITEMS(fast)
         # Check and read, decide, write: nothing here allocates or runs Python code.
@@ -682,14 +687,15 @@ cdef class SwerveDriveKinematics(Drivetrain):
 
 cdef int check_desaturated_discretize(vec3_t v, double dt, double limit) except -1:
     # Shared by the per-call, allocation-free and batch forms.
+    # The messages name no keyword: batch's spelling of the parameters differs.
     if not (isfinite(v.x) and isfinite(v.y) and isfinite(v.z)):
-        raise ValueError(f"chassisVelocities must be finite, got ({v.x!r}, {v.y!r}, "
+        raise ValueError(f"the chassis velocities must be finite, got ({v.x!r}, {v.y!r}, "
                          f"{v.z!r})")
     if not (isfinite(dt) and dt > 0.0):
         raise ValueError(f"dt must be a finite number of seconds > 0, got {dt!r}")
     if not (limit >= 0.0):
-        raise ValueError(f"attainableMaxModuleVelocity must be >= 0 m/s (inf for no "
-                         f"limit), got {limit!r}")
+        raise ValueError(f"the module velocity limit must be >= 0 m/s (inf for no limit), "
+                         f"got {limit!r}")
     if limit == INFINITY:       # no scaling: the plain discretize, which may not fit
         check_discretize_fits(v, dt)
     return 0
@@ -705,9 +711,10 @@ cdef int parse_desat(object first, object mm, object mt, object mr,
         p.max_speed = first
         return 0
     if mm is None or mt is None or mr is None:
-        raise TypeError("desaturateWheelVelocities(moduleVelocities, desiredChassisVelocity, "
-                        "attainableMaxModuleSpeed, attainableMaxTranslationalSpeed, "
-                        "attainableMaxRotationalVelocity) needs all three limits")
+        raise TypeError("desaturateWheelVelocities(module_velocities, desired_chassis_velocity, "
+                        "attainable_max_module_velocity, "
+                        "attainable_max_robot_translation_velocity, "
+                        "attainable_max_robot_rotation_velocity) needs all three limits")
     p.five = True
     p.desired = (<ChassisVelocities>first).v
     p.max_module = mm
@@ -723,7 +730,7 @@ cdef double read_velocities(PyObject** items, Py_ssize_t n, double* buf) except 
     cdef double r = 0.0
     for i in range(n):
         if not exact_type(items[i], <PyObject*>SwerveModuleVelocity):
-            item(items, i, SwerveModuleVelocity, "moduleVelocities")  # raises the TypeError
+            item(items, i, SwerveModuleVelocity, "module_velocities")  # raises the TypeError
         buf[3 * i] = (<_ModuleVector>items[i]).m
         buf[3 * i + 1] = (<_ModuleVector>items[i]).a.c
         buf[3 * i + 2] = (<_ModuleVector>items[i]).a.s
@@ -739,7 +746,7 @@ cdef int desat_objects(PyObject** items, Py_ssize_t n, const desat_t* p,
     cdef double r = 0.0
     for i in range(n):
         if not exact_type(items[i], <PyObject*>SwerveModuleVelocity):
-            item(items, i, SwerveModuleVelocity, "moduleVelocities")  # raises the TypeError
+            item(items, i, SwerveModuleVelocity, "module_velocities")  # raises the TypeError
         r = jmax(r, fabs((<_ModuleVector>items[i]).m))
     desaturate_factors(r, p, div, mul)
     return 0

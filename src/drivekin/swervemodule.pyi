@@ -63,21 +63,21 @@ class SwerveModuleVelocity(_ModuleVector):
 
     @velocity.setter
     def velocity(self, value: float) -> None: ...
-    def optimize(self, currentAngle: Rotation2d) -> SwerveModuleVelocity:
+    def optimize(self, current_angle: Rotation2d) -> SwerveModuleVelocity:
         """Return the equivalent velocity that turns the module by at most 90°.
 
-        If the target angle is more than 90° from ``currentAngle``, the result drives the
+        If the target angle is more than 90° from ``current_angle``, the result drives the
         wheel backwards at the angle + 180°. Returns a new object (2027)."""
 
-    def optimizeInPlace(self, currentAngle: Rotation2d) -> None:
+    def optimizeInPlace(self, current_angle: Rotation2d) -> None:
         """Allocation-free :meth:`optimize`: update this object (the WPILib 2026
         behaviour). Returns None."""
 
-    def cosineScale(self, currentAngle: Rotation2d) -> SwerveModuleVelocity:
-        """Return the velocity scaled by cos(angle − currentAngle), so a module that is
+    def cosineScale(self, current_angle: Rotation2d) -> SwerveModuleVelocity:
+        """Return the velocity scaled by cos(angle − current_angle), so a module that is
         still turning does not push sideways. Returns a new object (2027)."""
 
-    def cosineScaleInPlace(self, currentAngle: Rotation2d) -> None:
+    def cosineScaleInPlace(self, current_angle: Rotation2d) -> None:
         """Allocation-free :meth:`cosineScale`: update this object. Returns None."""
 
     # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
@@ -87,7 +87,7 @@ class SwerveModuleVelocity(_ModuleVector):
     @velocity_fps.setter
     def velocity_fps(self, value: float) -> None: ...
 
-    def interpolate(self, endValue: SwerveModuleVelocity, t: float) -> SwerveModuleVelocity:
+    def interpolate(self, end_value: SwerveModuleVelocity, t: float) -> SwerveModuleVelocity:
         """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
         [0, 1]."""
 
@@ -114,7 +114,7 @@ class SwerveModulePosition(_ModuleVector):
     def copy(self) -> SwerveModulePosition:
         """Return an independent copy."""
 
-    def interpolate(self, endValue: SwerveModulePosition, t: float) -> SwerveModulePosition:
+    def interpolate(self, end_value: SwerveModulePosition, t: float) -> SwerveModulePosition:
         """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
 
     # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
@@ -158,6 +158,6 @@ class SwerveModuleAcceleration(_ModuleVector):
     def __mul__(self, scalar: float, /) -> SwerveModuleAcceleration: ...
     def __rmul__(self, scalar: float, /) -> SwerveModuleAcceleration: ...
     def __truediv__(self, scalar: float, /) -> SwerveModuleAcceleration: ...
-    def interpolate(self, endValue: SwerveModuleAcceleration, t: float) -> SwerveModuleAcceleration:
+    def interpolate(self, end_value: SwerveModuleAcceleration, t: float) -> SwerveModuleAcceleration:
         """Interpolate the magnitude linearly and the angle the short way; ``t`` is
         clamped to [0, 1]."""

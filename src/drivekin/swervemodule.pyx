@@ -131,39 +131,39 @@ cdef class SwerveModuleVelocity(_ModuleVector):
     def velocity(self, double value):
         self.m = value
 
-    def optimize(self, currentAngle: Rotation2d):
+    def optimize(self, current_angle: Rotation2d):
         """Return the equivalent velocity that turns the module by at most 90°.
 
-        If the target angle is more than 90° from ``currentAngle``, the result drives the
+        If the target angle is more than 90° from ``current_angle``, the result drives the
         wheel backwards at the angle + 180°. Returns a new object (2027)."""
-        check_type(currentAngle, Rotation2d, "currentAngle")
+        check_type(current_angle, Rotation2d, "current_angle")
         cdef SwerveModuleVelocity out = new_module_velocity(self.m, self.a)
-        optimize_into(self, (<Rotation2d>currentAngle).r, out)
+        optimize_into(self, (<Rotation2d>current_angle).r, out)
         return out
 
-    def optimizeInPlace(self, currentAngle: Rotation2d):
+    def optimizeInPlace(self, current_angle: Rotation2d):
         """Allocation-free :meth:`optimize`: update this object (the WPILib 2026
         behaviour). Returns None."""
-        check_type(currentAngle, Rotation2d, "currentAngle")
-        optimize_into(self, (<Rotation2d>currentAngle).r, self)
+        check_type(current_angle, Rotation2d, "current_angle")
+        optimize_into(self, (<Rotation2d>current_angle).r, self)
 
-    def cosineScale(self, currentAngle: Rotation2d):
-        """Return the velocity scaled by cos(angle − currentAngle), so a module that is
+    def cosineScale(self, current_angle: Rotation2d):
+        """Return the velocity scaled by cos(angle − current_angle), so a module that is
         still turning does not push sideways. Returns a new object (2027)."""
-        check_type(currentAngle, Rotation2d, "currentAngle")
-        return new_module_velocity(self.m * rot_minus(self.a, (<Rotation2d>currentAngle).r).c,
+        check_type(current_angle, Rotation2d, "current_angle")
+        return new_module_velocity(self.m * rot_minus(self.a, (<Rotation2d>current_angle).r).c,
                                    self.a)
 
-    def cosineScaleInPlace(self, currentAngle: Rotation2d):
+    def cosineScaleInPlace(self, current_angle: Rotation2d):
         """Allocation-free :meth:`cosineScale`: update this object. Returns None."""
-        check_type(currentAngle, Rotation2d, "currentAngle")
-        self.m = self.m * rot_minus(self.a, (<Rotation2d>currentAngle).r).c
+        check_type(current_angle, Rotation2d, "current_angle")
+        self.m = self.m * rot_minus(self.a, (<Rotation2d>current_angle).r).c
 
-    def interpolate(self, endValue: SwerveModuleVelocity, double t):
+    def interpolate(self, end_value: SwerveModuleVelocity, double t):
         """Interpolate velocity linearly and the angle the short way; ``t`` is clamped to
         [0, 1]."""
-        check_type(endValue, SwerveModuleVelocity, "endValue")
-        return self._lerp(<_ModuleVector>endValue, clamp01(t))
+        check_type(end_value, SwerveModuleVelocity, "end_value")
+        return self._lerp(<_ModuleVector>end_value, clamp01(t))
 
     def __repr__(self):
         return f"SwerveModuleVelocity({self.m!r}, {new_rotation(self.a)!r})"
@@ -199,10 +199,10 @@ cdef class SwerveModulePosition(_ModuleVector):
         """Return an independent copy."""
         return new_module_position(self.m, self.a)
 
-    def interpolate(self, endValue: SwerveModulePosition, double t):
+    def interpolate(self, end_value: SwerveModulePosition, double t):
         """Interpolate distance linearly and the angle the short way; ``t`` is not clamped."""
-        check_type(endValue, SwerveModulePosition, "endValue")
-        return self._lerp(<_ModuleVector>endValue, t)
+        check_type(end_value, SwerveModulePosition, "end_value")
+        return self._lerp(<_ModuleVector>end_value, t)
 
     def __repr__(self):
         return f"SwerveModulePosition({self.m!r}, {new_rotation(self.a)!r})"
@@ -237,11 +237,11 @@ cdef class SwerveModuleAcceleration(_ModuleVector):
     def acceleration(self, double value):
         self.m = value
 
-    def interpolate(self, endValue: SwerveModuleAcceleration, double t):
+    def interpolate(self, end_value: SwerveModuleAcceleration, double t):
         """Interpolate the magnitude linearly and the angle the short way; ``t`` is
         clamped to [0, 1]."""
-        check_type(endValue, SwerveModuleAcceleration, "endValue")
-        return self._lerp(<_ModuleVector>endValue, clamp01(t))
+        check_type(end_value, SwerveModuleAcceleration, "end_value")
+        return self._lerp(<_ModuleVector>end_value, clamp01(t))
 
     # Vector arithmetic of WPILib C++'s operators (robotpy's + - * /; Java has none): the
     # sum goes through Cartesian components, negation turns the angle by 180°.

@@ -24,7 +24,7 @@ from drivekin import (
 
 @pytest.fixture(params=[False, True], ids=["motor2-normal", "motor2-inverted"])
 def kin(request):
-    k = DifferentialSwerveModuleKinematics(3.0, 5.0, 0.05, motor2Inverted=request.param)
+    k = DifferentialSwerveModuleKinematics(3.0, 5.0, 0.05, motor2_inverted=request.param)
     k.resetModulePosition(Rotation2d(0.4), 12.0, -7.0)
     return k
 

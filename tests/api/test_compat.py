@@ -50,11 +50,27 @@ def test_pickle_data_covers_every_value_and_kinematics_class():
     assert not NEW_SINCE_0_1_0 & set(PICKLES)
 
 
+# The reprs spell constructor keywords, which are robotpy 2027's snake_case names since
+# 0.1.0 recorded its reprs; the state they show is the same.
+RENAMED_KEYWORDS = {"frontLeft=": "front_left=", "frontRight=": "front_right=",
+                    "rearLeft=": "rear_left=", "rearRight=": "rear_right=",
+                    "wheelVelocity=": "wheel_velocity=", "azimuthVelocity=": "azimuth_velocity=",
+                    "azimuthGearRatio=": "azimuth_gear_ratio=",
+                    "wheelGearRatio=": "wheel_gear_ratio=", "wheelRadius=": "wheel_radius=",
+                    "motor2Inverted=": "motor2_inverted="}
+
+
+def _renamed(text):
+    for old, new in RENAMED_KEYWORDS.items():
+        text = text.replace(old, new)
+    return text
+
+
 @pytest.mark.parametrize("name", sorted(PICKLES))
 def test_pickles_written_by_0_1_0_load(name):
     record = PICKLES[name]
     obj = pickle.loads(base64.b64decode(record["pickle"]))
     assert type(obj) is getattr(drivekin, name)
-    assert repr(obj) == record["repr"]                 # the state 0.1.0 pickled
+    assert repr(obj) == _renamed(record["repr"])       # the state 0.1.0 pickled
     again = pickle.loads(pickle.dumps(obj))
-    assert type(again) is type(obj) and repr(again) == record["repr"]
+    assert type(again) is type(obj) and repr(again) == repr(obj)

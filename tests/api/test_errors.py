@@ -267,7 +267,7 @@ def test_desaturate_bad_states(fn):
     with raises(TypeError, "sequence", "NoneType"):
         fn(None, 0.5)
     states = [MV(3.0), MV(-4.0), "x"]
-    with raises(TypeError, "moduleVelocities[2]", "str"):
+    with raises(TypeError, "module_velocities[2]", "str"):
         fn(states, 1.0)
     assert [s.velocity for s in states[:2]] == [3.0, -4.0], "no partial update"
 
@@ -410,7 +410,7 @@ def test_drive_feedforwards_names_what_it_takes_and_what_it_got(make, given):
                                           (1e308, "stall torque inf")])
 def test_with_reduction_blames_the_ratio(ratio, grown):
     from drivekin import DCMotor
-    expected = re.escape(f"gearboxReduction {ratio!r} is out of range")
+    expected = re.escape(f"gearbox_reduction {ratio!r} is out of range")
     with pytest.raises(ValueError, match=expected) as e:
         DCMotor.getKrakenX60(1).withReduction(ratio)
     assert grown in str(e.value) and "must be positive and finite" in str(e.value)

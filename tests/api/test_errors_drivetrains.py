@@ -138,11 +138,11 @@ class TestMecanumDriveKinematics:
     @pytest.mark.parametrize("cor", [(12.0, 12.0), Pose2d(), "FL", 0.0])
     def test_center_of_rotation_must_be_translation2d(self, cor):
         k = mecanum()
-        with pytest.raises(TypeError, match="centerOfRotation must be a Translation2d"):
+        with pytest.raises(TypeError, match="center_of_rotation must be a Translation2d"):
             k.toWheelVelocities(ChassisVelocities(1, 2, 3), cor)
-        with pytest.raises(TypeError, match="centerOfRotation must be a Translation2d"):
+        with pytest.raises(TypeError, match="center_of_rotation must be a Translation2d"):
             k.toWheelAccelerations(ChassisAccelerations(1, 2, 3), cor)
-        with pytest.raises(TypeError, match="centerOfRotation must be a Translation2d"):
+        with pytest.raises(TypeError, match="center_of_rotation must be a Translation2d"):
             k.toWheelVelocitiesInto(ChassisVelocities(1, 2, 3), MecanumDriveWheelVelocities(),
                                     cor)
         # Still usable, and still at the origin CoR.
@@ -151,7 +151,7 @@ class TestMecanumDriveKinematics:
                                                                         23.0)
 
     def test_none_center_of_rotation(self):
-        with pytest.raises(TypeError, match="centerOfRotation"):
+        with pytest.raises(TypeError, match="center_of_rotation"):
             mecanum().toWheelVelocities(ChassisVelocities(), None)
 
     @pytest.mark.parametrize("end", [MecanumDriveWheelVelocities(), 3.0, "x",
@@ -332,12 +332,12 @@ class TestIntoMethods:
 class TestDifferentialDriveOdometry:
     @pytest.mark.parametrize("gyro", [None, 0.0, Translation2d(), "0"])
     def test_gyro_must_be_rotation2d(self, gyro):
-        with pytest.raises(TypeError, match="gyroAngle"):
+        with pytest.raises(TypeError, match="gyro_angle"):
             DifferentialDriveOdometry(gyro, 0.0, 0.0)
         odo = DifferentialDriveOdometry(ZERO, 0.0, 0.0)
-        with pytest.raises(TypeError, match="gyroAngle"):
+        with pytest.raises(TypeError, match="gyro_angle"):
             odo.update(gyro, 1.0, 1.0)
-        with pytest.raises(TypeError, match="gyroAngle"):
+        with pytest.raises(TypeError, match="gyro_angle"):
             odo.resetPosition(gyro, 0.0, 0.0, Pose2d())
 
     @pytest.mark.parametrize("left, right", [("1", 0.0), (0.0, None), ([1.0], 2.0)])
@@ -359,7 +359,7 @@ class TestDifferentialDriveOdometry:
 
     @pytest.mark.parametrize("pose", [(1.0, 2.0), Translation2d(), Rotation2d(), "origin"])
     def test_initial_pose_type(self, pose):
-        with pytest.raises(TypeError, match="initialPose must be a Pose2d"):
+        with pytest.raises(TypeError, match="initial_pose must be a Pose2d"):
             DifferentialDriveOdometry(ZERO, 0.0, 0.0, pose)
 
     def test_reset_argument_types(self):
@@ -391,27 +391,27 @@ class TestMecanumDriveOdometry:
                 MecanumDriveOdometry(bad, ZERO, MecanumDriveWheelPositions())
 
     def test_gyro_type(self):
-        with pytest.raises(TypeError, match="gyroAngle"):
+        with pytest.raises(TypeError, match="gyro_angle"):
             MecanumDriveOdometry(mecanum(), None, MecanumDriveWheelPositions())
         odo = MecanumDriveOdometry(mecanum(), ZERO, MecanumDriveWheelPositions())
-        with pytest.raises(TypeError, match="gyroAngle"):
+        with pytest.raises(TypeError, match="gyro_angle"):
             odo.update(0.0, MecanumDriveWheelPositions())
 
     @pytest.mark.parametrize("positions", [None, MecanumDriveWheelVelocities(),
                                            (1.0, 1.0, 1.0, 1.0), [1.0] * 4,
                                            DifferentialDriveWheelPositions(1, 1)])
     def test_wheel_positions_type(self, positions):
-        with pytest.raises(TypeError, match="wheelPositions"):
+        with pytest.raises(TypeError, match="wheel_positions"):
             MecanumDriveOdometry(mecanum(), ZERO, positions)
         odo = MecanumDriveOdometry(mecanum(), ZERO, MecanumDriveWheelPositions())
-        with pytest.raises(TypeError, match="wheelPositions"):
+        with pytest.raises(TypeError, match="wheel_positions"):
             odo.update(ZERO, positions)
-        with pytest.raises(TypeError, match="wheelPositions"):
+        with pytest.raises(TypeError, match="wheel_positions"):
             odo.resetPosition(ZERO, positions, Pose2d())
         assert_pose(odo.update(ZERO, MecanumDriveWheelPositions(1, 1, 1, 1)), 1.0, 0.0, 0.0)
 
     def test_initial_pose_type(self):
-        with pytest.raises(TypeError, match="initialPose must be a Pose2d"):
+        with pytest.raises(TypeError, match="initial_pose must be a Pose2d"):
             MecanumDriveOdometry(mecanum(), ZERO, MecanumDriveWheelPositions(),
                                  Transform2d())
 
@@ -426,12 +426,12 @@ class TestSwerveDriveOdometry:
                 SwerveDriveOdometry(bad, ZERO, [SwerveModulePosition() for _ in range(4)])
 
     def test_gyro_type(self):
-        with pytest.raises(TypeError, match="gyroAngle"):
+        with pytest.raises(TypeError, match="gyro_angle"):
             SwerveDriveOdometry(swerve(), None, [SwerveModulePosition() for _ in range(4)])
         odo = swerve_odometry()
-        with pytest.raises(TypeError, match="gyroAngle"):
+        with pytest.raises(TypeError, match="gyro_angle"):
             odo.update(None, [SwerveModulePosition() for _ in range(4)])
-        with pytest.raises(TypeError, match="gyroAngle"):
+        with pytest.raises(TypeError, match="gyro_angle"):
             odo.resetPosition(90.0, [SwerveModulePosition() for _ in range(4)], Pose2d())
 
     @pytest.mark.parametrize("count", [0, 1, 3, 5, 8])
@@ -447,17 +447,19 @@ class TestSwerveDriveOdometry:
         assert_pose(odo.getPose(), 0.0, 0.0, 0.0)
 
     @pytest.mark.parametrize("modules, msg", [
-        (None, "modulePositions must be a sequence"),
-        (5, "modulePositions must be a sequence"),
+        (None, "module_positions must be a sequence"),
+        (5, "module_positions must be a sequence"),
         ([SwerveModulePosition()] * 3 + [SwerveModuleVelocity()],
-         r"modulePositions\[3\] must be a SwerveModulePosition"),
-        ([SwerveModulePosition()] * 3 + [None], r"modulePositions\[3\]"),
-        ([[0.0, 0.0]] * 4, r"modulePositions\[0\] must be a SwerveModulePosition"),
-        ([(1.0, ZERO)] * 4, r"modulePositions\[0\]"),
+         r"module_positions\[3\] must be a SwerveModulePosition"),
+        ([SwerveModulePosition()] * 3 + [None], r"module_positions\[3\]"),
+        ([[0.0, 0.0]] * 4, r"module_positions\[0\] must be a SwerveModulePosition"),
+        ([(1.0, ZERO)] * 4, r"module_positions\[0\]"),
     ])
     def test_module_position_types(self, modules, msg):
         with pytest.raises(TypeError, match=msg):
             SwerveDriveOdometry(swerve(), ZERO, modules)
+        # update and resetPosition call the same argument wheel_positions (robotpy 2027).
+        msg = msg.replace("module_positions", "wheel_positions")
         odo = swerve_odometry()
         with pytest.raises(TypeError, match=msg):
             odo.update(ZERO, modules)
@@ -501,7 +503,7 @@ class TestSwerveDriveOdometry:
         assert_pose(odo.update(ZERO, arr), 2.0, 0.0, 0.0)
 
     def test_initial_pose_type(self):
-        with pytest.raises(TypeError, match="initialPose must be a Pose2d"):
+        with pytest.raises(TypeError, match="initial_pose must be a Pose2d"):
             SwerveDriveOdometry(swerve(), ZERO, [SwerveModulePosition() for _ in range(4)],
                                 Translation2d())
 

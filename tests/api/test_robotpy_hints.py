@@ -219,7 +219,7 @@ def test_the_converted_value_is_accepted(wpimath_geo, wpimath_kin):
     estimator.addVisionMeasurement(fromWpimath(vision), 0.0)
     kin = catalog.BY_CLASS[drivekin.SwerveDriveKinematics].example()
     speeds = k.ChassisSpeeds(1.0, 0.5, 0.25)
-    with pytest.raises(TypeError, match="chassisVelocities must be a ChassisVelocities"):
+    with pytest.raises(TypeError, match="chassis_velocities must be a ChassisVelocities"):
         kin.toSwerveModuleVelocities(speeds)
     assert kin.toSwerveModuleVelocities(fromWpimath(speeds)) == \
         kin.toSwerveModuleVelocities(drivekin.ChassisVelocities(1.0, 0.5, 0.25))

@@ -86,7 +86,7 @@ SAMPLES = {
 }
 ARRAYS = {"vector": np.array([1.0, 2.0]), "matrix": None}
 # Floats that must differ (a DCMotor's free current is below its stall current).
-FLOATS = {("DCMotor", "stallCurrent"): 105.0, ("DCMotor", "freeCurrent"): 1.8}
+FLOATS = {("DCMotor", "stall_current"): 105.0, ("DCMotor", "free_current"): 1.8}
 
 
 def _value(annotation: str, name: str, cls_name: str):

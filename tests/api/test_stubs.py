@@ -523,7 +523,7 @@ def test_signature_stripping_on_the_real_modules():
     # embedded line goes.
     raw = SwerveDriveKinematics.__doc__
     first, blank, second = raw.split("\n")[:3]
-    assert first == "SwerveDriveKinematics(*moduleTranslations)" and blank == ""
+    assert first == "SwerveDriveKinematics(*module_translations)" and blank == ""
     assert second == f"``{first}``"
     cleaned = runtime_doc(SwerveDriveKinematics, kind="class", embeds=True)
     assert cleaned == inspect.cleandoc(raw.split("\n", 2)[2])

@@ -64,12 +64,12 @@ FOUR = [fwd(0.2), fwd(-0.2), left(0.1), left(-0.1)]
 def test_least_squares_four_orthogonal_wheels():
     k = DeadWheelKinematics(FOUR)
     assert_vec((1.1, 0.2, 0.6), k.toTwist2d([1.0, 1.2, 0.3, 0.1]))
-    assert_vec((1.1, 0.2, 0.5), k.toTwist2d([1.0, 1.2, 0.3, 0.1], gyroDelta=0.5))
+    assert_vec((1.1, 0.2, 0.5), k.toTwist2d([1.0, 1.2, 0.3, 0.1], gyro_delta=0.5))
 
 
 def test_redundant_wheel_is_averaged_in_with_a_gyro():
     k = DeadWheelKinematics([fwd(0.3), left(0.2), fwd(-0.1)])
-    assert_vec((1.11, 0.48, 0.1), k.toTwist2d([1.0, 0.5, 1.2], gyroDelta=0.1))
+    assert_vec((1.11, 0.48, 0.1), k.toTwist2d([1.0, 0.5, 1.2], gyro_delta=0.1))
 
 
 def test_exact_solve_is_not_the_drafts_mean():
@@ -78,7 +78,7 @@ def test_exact_solve_is_not_the_drafts_mean():
     wheels = k.toWheelVelocities(ChassisVelocities(1.0, 0.0, 1.0))
     assert_vec((0.7, 1.1, 0.2), wheels)
     assert_vec((1.0, 0.0, 1.0), k.toChassisVelocities(wheels))
-    assert_vec((1.0, 0.0, 1.0), k.toChassisVelocities(wheels, gyroRate=1.0))
+    assert_vec((1.0, 0.0, 1.0), k.toChassisVelocities(wheels, gyro_rate=1.0))
 
 
 # ---- §1.2 observability --------------------------------------------------------------
@@ -115,7 +115,7 @@ def test_layouts_that_need_a_gyro(poses, needle):
     with pytest.raises(ValueError, match="needs a gyro"):
         DeadWheelOdometry(k, [0.0] * n)
     # With the gyro the same layout works.
-    assert k.toTwist2d([0.1] * n, gyroDelta=0.0).dtheta == 0.0
+    assert k.toTwist2d([0.1] * n, gyro_delta=0.0).dtheta == 0.0
     DeadWheelOdometry(k, [0.0] * n, Rotation2d.kZero)
 
 
@@ -152,7 +152,7 @@ def test_road_runner_standard_layout():
     for start, expected in (((0, 0, 0), (0.598904, 0.157037, 0.014085)),
                             ((10, 5, math.pi / 2), (9.842963, 5.598904, 1.584881))):
         o = DeadWheelOdometry(k, [0.0, 0.0, 0.0],
-                              initialPose=Pose2d(start[0] * IN, start[1] * IN,
+                              initial_pose=Pose2d(start[0] * IN, start[1] * IN,
                                                  Rotation2d(start[2])))
         p = o.update([0.5 * IN, 0.7 * IN, 0.1 * IN])
         assert_close(expected[0], p.getX() / IN, SIX)
@@ -188,18 +188,18 @@ def test_road_runner_sign_trap():
 def test_road_runner_two_wheels_and_imu():
     k = DeadWheelKinematics.fromRoadRunnerTwoWheel(-7.1, -3.75, 1.0)
     assert k.requiresGyro()
-    tw = k.toTwist2d([0.5 * IN, 0.1 * IN], gyroDelta=0.014)
+    tw = k.toTwist2d([0.5 * IN, 0.1 * IN], gyro_delta=0.014)
     assert_close(0.5994, tw.dx / IN, 1e-12)
     assert_close(0.1525, tw.dy / IN, 1e-12)
     assert tw.dtheta == 0.014
 
 
 @pytest.mark.parametrize("args, needle", [
-    ((1.0, -1.0, 2.0, 0.0), "inPerTick must be a positive finite"),
-    ((1.0, -1.0, 2.0, -1e-3), "inPerTick must be a positive finite"),
-    ((1.0, -1.0, 2.0, math.nan), "inPerTick must be a positive finite"),
-    ((math.inf, -1.0, 2.0, 1e-3), "par0YTicks must be finite"),
-    ((1.0, -1.0, math.nan, 1e-3), "perpXTicks must be finite"),
+    ((1.0, -1.0, 2.0, 0.0), "in_per_tick must be a positive finite"),
+    ((1.0, -1.0, 2.0, -1e-3), "in_per_tick must be a positive finite"),
+    ((1.0, -1.0, 2.0, math.nan), "in_per_tick must be a positive finite"),
+    ((math.inf, -1.0, 2.0, 1e-3), "par0_y_ticks must be finite"),
+    ((1.0, -1.0, math.nan, 1e-3), "perp_x_ticks must be finite"),
 ])
 def test_road_runner_bad_parameters(args, needle):
     with pytest.raises(ValueError) as e:
@@ -215,7 +215,7 @@ def test_road_runner_bad_parameters(args, needle):
 ])
 def test_double_layout_velocities(wheels, omega, expected):
     k = double(1.0, 1.0)
-    assert_vec(expected, k.toChassisVelocities(wheels, gyroRate=omega))
+    assert_vec(expected, k.toChassisVelocities(wheels, gyro_rate=omega))
     back = k.toWheelVelocities(ChassisVelocities(*expected))
     assert_vec(wheels, back)
 
@@ -223,7 +223,7 @@ def test_double_layout_velocities(wheels, omega, expected):
 def test_double_layout_accelerations():
     k = double(0.25, -0.5)
     assert_vec((0.0, -4.0), k.toWheelAccelerations(ChassisAccelerations(1, -2, 4)))
-    assert_vec((0.5, 0.0, -2.0), k.toChassisAccelerations([1, 1], angularAcceleration=-2))
+    assert_vec((0.5, 0.0, -2.0), k.toChassisAccelerations([1, 1], angular_acceleration=-2))
 
 
 def test_double_layout_wrapped_gyro_twist():
@@ -234,7 +234,7 @@ def test_double_layout_wrapped_gyro_twist():
     p = o.update([2.0, 0.5], Rotation2d.fromDegrees(-170))
     assert_pose((expected.getX(), expected.getY(), dtheta), p)
     assert_vec((1 + 0.2 * dtheta, -0.5 - 0.3 * dtheta, dtheta),
-               k.toTwist2d([1.0, -0.5], gyroDelta=dtheta))
+               k.toTwist2d([1.0, -0.5], gyro_delta=dtheta))
 
 
 def test_double_layout_odometry_vectors():
@@ -342,9 +342,9 @@ def test_readings_as_list_tuple_array_and_numpy_scalars():
 
 @pytest.mark.parametrize("values, exc, needle", [
     ([1.0, 2.0], ValueError, "must hold 3 wheel values (one per wheel), got 2"),
-    ([1.0, None, 2.0], TypeError, "wheelVelocities[1] must be a float, got NoneType"),
-    ([1.0, "2", 2.0], TypeError, "wheelVelocities[1] must be a float, got str"),
-    ([1.0, True, 2.0], TypeError, "wheelVelocities[1] must be a float, got bool"),
+    ([1.0, None, 2.0], TypeError, "wheel_velocities[1] must be a float, got NoneType"),
+    ([1.0, "2", 2.0], TypeError, "wheel_velocities[1] must be a float, got str"),
+    ([1.0, True, 2.0], TypeError, "wheel_velocities[1] must be a float, got bool"),
     ([1.0, 10 ** 400, 2.0], ValueError, "int too large for a float"),
     ((x for x in [1.0, 2.0, 3.0]), TypeError, "list or tuple of 3 floats or a 1-D float64"),
     (np.zeros(3, dtype=np.float32), TypeError, "dtype float64"),
@@ -363,7 +363,7 @@ def test_gyro_use_is_fixed_at_construction():
     k = triple(0.3, -0.1, 0.2)
     with_gyro = DeadWheelOdometry(k, [0, 0, 0], Rotation2d.kZero)
     without = DeadWheelOdometry(k, [0, 0, 0])
-    with pytest.raises(TypeError, match="uses a gyro, so gyroAngle must be a Rotation2d"):
+    with pytest.raises(TypeError, match="uses a gyro, so gyro_angle must be a Rotation2d"):
         with_gyro.update([0.1, 0.1, 0.0])
     with pytest.raises(ValueError, match="constructed without a gyro"):
         without.update([0.1, 0.1, 0.0], Rotation2d.kZero)

@@ -84,7 +84,7 @@ def test_sum_turns_the_pod_and_difference_spins_the_wheel():
 
 
 def test_motor2_inverted_negates_motor2_everywhere():
-    a, b = K(3.0, 5.0, 0.05), K(3.0, 5.0, 0.05, motor2Inverted=True)
+    a, b = K(3.0, 5.0, 0.05), K(3.0, 5.0, 0.05, motor2_inverted=True)
     ma, mb = a.toMotorVelocities(0.7, -1.3), b.toMotorVelocities(0.7, -1.3)
     assert (mb.motor1, mb.motor2) == (ma.motor1, -ma.motor2)
     va, vb = a.toModuleVelocities(10.0, 4.0), b.toModuleVelocities(10.0, -4.0)
@@ -127,7 +127,7 @@ def test_reset_again_restarts_the_distance():
 
 
 def test_into_forms_match_the_facades():
-    k = K(3.5, 6.2, 0.048, motor2Inverted=True)
+    k = K(3.5, 6.2, 0.048, motor2_inverted=True)
     k.resetModulePosition(Rotation2d(-1.0), 3.0, 7.0)
     m, v, p = MotV(), ModV(), SwerveModulePosition()
     assert k.toMotorVelocitiesInto(1.2, -0.4, m) is None
@@ -157,19 +157,22 @@ def test_module_positions_feed_swerve_odometry():
 # Value classes
 
 
-@pytest.mark.parametrize("cls, names", [(MotV, ("motor1", "motor2")),
-                                        (ModV, ("wheelVelocity", "azimuthVelocity"))])
-def test_value_class_semantics(cls, names):
+# The attributes, and the constructor keywords (robotpy 2027's snake_case spelling).
+@pytest.mark.parametrize("cls, names, keywords", [
+    (MotV, ("motor1", "motor2"), ("motor1", "motor2")),
+    (ModV, ("wheelVelocity", "azimuthVelocity"), ("wheel_velocity", "azimuth_velocity"))])
+def test_value_class_semantics(cls, names, keywords):
     a = cls(0.1 + 0.2, -1.0 / 3.0)
     assert tuple(a) == (0.30000000000000004, -1.0 / 3.0)
     assert (getattr(a, names[0]), getattr(a, names[1])) == tuple(a)
     assert eval(repr(a), {cls.__name__: cls}) == a
-    assert repr(a) == f"{cls.__name__}({names[0]}=0.30000000000000004, {names[1]}=-0.3333333333333333)"
+    assert repr(a) == (f"{cls.__name__}({keywords[0]}=0.30000000000000004, "
+                       f"{keywords[1]}=-0.3333333333333333)")
     for proto in range(pickle.HIGHEST_PROTOCOL + 1):
         b = pickle.loads(pickle.dumps(a, proto))
         assert type(b) is cls and tuple(b) == tuple(a)
     assert tuple(copy.copy(a)) == tuple(a) and copy.deepcopy(a) is not a
-    assert cls() == cls(0.0, 0.0) and cls(**{names[0]: 1.0, names[1]: 2.0}) == cls(1.0, 2.0)
+    assert cls() == cls(0.0, 0.0) and cls(**{keywords[0]: 1.0, keywords[1]: 2.0}) == cls(1.0, 2.0)
     assert a == cls(tuple(a)[0] + 5e-10, tuple(a)[1]) and a != cls(tuple(a)[0] + 2e-9, 0.0)
     assert (a == object()) is False and a != (0.3, -1.0 / 3.0)
     with pytest.raises(TypeError):
@@ -196,11 +199,11 @@ def test_value_class_str_has_units():
 
 
 def test_kinematics_getters_repr_and_pickle_keep_the_offset():
-    k = K(3.0, 5.0, 0.0508, motor2Inverted=True)
+    k = K(3.0, 5.0, 0.0508, motor2_inverted=True)
     assert (k.azimuthGearRatio, k.wheelGearRatio, k.wheelRadius, k.motor2Inverted) == \
         (3.0, 5.0, 0.0508, True)
-    assert repr(k) == ("DifferentialSwerveModuleKinematics(azimuthGearRatio=3.0, "
-                       "wheelGearRatio=5.0, wheelRadius=0.0508, motor2Inverted=True)")
+    assert repr(k) == ("DifferentialSwerveModuleKinematics(azimuth_gear_ratio=3.0, "
+                       "wheel_gear_ratio=5.0, wheel_radius=0.0508, motor2_inverted=True)")
     assert eval(repr(k), {"DifferentialSwerveModuleKinematics": K}).motor2Inverted
     k.resetModulePosition(Rotation2d(0.7), 12.5, -3.25)
     for dup in (pickle.loads(pickle.dumps(k, 0)), pickle.loads(pickle.dumps(k, 5)),
@@ -245,7 +248,7 @@ def test_desaturation_cuts_steering_only_when_it_alone_is_too_much():
 
 
 def test_desaturation_with_inverted_motor2_keeps_steering():
-    k = K(3.0, 5.0, 0.5, motor2Inverted=True)
+    k = K(3.0, 5.0, 0.5, motor2_inverted=True)
     m = k.toMotorVelocities(5.0, 2.0)            # 28, +22 as the reversed motor reads it
     assert (m.motor1, m.motor2) == (28.0, 22.0)
     d = k.desaturateMotorVelocities(m, 20.0)
@@ -272,9 +275,9 @@ def test_desaturation_edge_limits(proportional):
     nan = K35.desaturateMotorVelocities(MotV(math.nan, 50.0), 1.0, **kw)
     assert math.isnan(nan.motor1) and nan.motor2 == 50.0           # NaN: unchanged
     for bad in (-1.0, math.nan, -math.inf):
-        with pytest.raises(ValueError, match="maxMotorVelocity"):
+        with pytest.raises(ValueError, match="max_motor_velocity"):
             K35.desaturateMotorVelocities(m, bad, **kw)
-        with pytest.raises(ValueError, match="maxMotorVelocity"):
+        with pytest.raises(ValueError, match="max_motor_velocity"):
             K35.desaturateMotorVelocitiesInPlace(m, bad, **kw)
     assert tuple(m) == (28.0, -22.0)
 
@@ -328,7 +331,7 @@ def test_drive_level_scales_every_wheel_alike():
 
 
 def test_drive_level_array_forms_agree_with_objects():
-    k = K(3.0, 5.0, 0.05, motor2Inverted=True)
+    k = K(3.0, 5.0, 0.05, motor2_inverted=True)
     rates = [1.0, -2.0, 4.0, 0.5]
     states = targets()
     arr = np.array([[s.velocity, s.angle.getRadians()] for s in states])
@@ -387,22 +390,22 @@ def test_drive_level_bad_input_changes_nothing():
     cases = [
         ((states, [1.0] * 3, 100.0), ValueError, "one per module"),
         ((states[:3], [1.0] * 4, 100.0), ValueError, "one per module"),
-        ((states, [1.0, None, 1.0, 1.0], 100.0), TypeError, r"azimuthVelocities\[1\]"),
-        ((states, [1.0, "2", 1.0, 1.0], 100.0), TypeError, r"azimuthVelocities\[1\]"),
-        ((states, "abcd", 100.0), TypeError, "azimuthVelocities"),
-        ((states, 1.0, 100.0), TypeError, "azimuthVelocities"),
+        ((states, [1.0, None, 1.0, 1.0], 100.0), TypeError, r"azimuth_velocities\[1\]"),
+        ((states, [1.0, "2", 1.0, 1.0], 100.0), TypeError, r"azimuth_velocities\[1\]"),
+        ((states, "abcd", 100.0), TypeError, "azimuth_velocities"),
+        ((states, 1.0, 100.0), TypeError, "azimuth_velocities"),
         ((states, np.ones(4, np.float32), 100.0), TypeError, "float64"),
         ((states, np.ones((4, 1)), 100.0), ValueError, "shape"),
-        ((states, memoryview(np.ones(4)), 100.0), TypeError, "azimuthVelocities"),
-        ((states[:3] + [None], [1.0] * 4, 100.0), TypeError, r"moduleVelocities\[3\]"),
+        ((states, memoryview(np.ones(4)), 100.0), TypeError, "azimuth_velocities"),
+        ((states[:3] + [None], [1.0] * 4, 100.0), TypeError, r"module_velocities\[3\]"),
         ((states[:3] + [SwerveModulePosition()], [1.0] * 4, 100.0), TypeError,
          "SwerveModuleVelocity"),
-        ((None, [1.0] * 4, 100.0), TypeError, "moduleVelocities"),
+        ((None, [1.0] * 4, 100.0), TypeError, "module_velocities"),
         ((arr.astype(np.float32), [1.0] * 4, 100.0), TypeError, "float64"),
         ((arr[:3], [1.0] * 4, 100.0), ValueError, "one per module"),
         ((np.asfortranarray(np.ones((4, 2))), [1.0] * 4, 100.0), ValueError, "contiguous"),
-        ((states, [1.0] * 4, -1.0), ValueError, "maxMotorVelocity"),
-        ((states, [1.0] * 4, math.nan), ValueError, "maxMotorVelocity"),
+        ((states, [1.0] * 4, -1.0), ValueError, "max_motor_velocity"),
+        ((states, [1.0] * 4, math.nan), ValueError, "max_motor_velocity"),
     ]
     ro = np.ones((4, 2))
     ro.flags.writeable = False
@@ -444,8 +447,8 @@ def test_drive_level_reading_a_rate_may_not_corrupt_the_modules():
 # Construction and bad input
 
 
-@pytest.mark.parametrize("pos, name", [(0, "azimuthGearRatio"), (1, "wheelGearRatio"),
-                                       (2, "wheelRadius")])
+@pytest.mark.parametrize("pos, name", [(0, "azimuth_gear_ratio"), (1, "wheel_gear_ratio"),
+                                       (2, "wheel_radius")])
 @pytest.mark.parametrize("bad", [0.0, -0.0, -1.0, math.nan, math.inf, -math.inf])
 def test_bad_geometry_names_the_argument(pos, name, bad):
     args = [3.0, 5.0, 0.05]
@@ -455,9 +458,9 @@ def test_bad_geometry_names_the_argument(pos, name, bad):
 
 
 def test_geometry_whose_ratio_per_metre_overflows_is_rejected():
-    with pytest.raises(ValueError, match="wheelGearRatio / wheelRadius"):
+    with pytest.raises(ValueError, match="wheel_gear_ratio / wheel_radius"):
         K(3.0, 1e300, 1e-300)
-    with pytest.raises(ValueError, match="wheelGearRatio / wheelRadius"):
+    with pytest.raises(ValueError, match="wheel_gear_ratio / wheel_radius"):
         K(3.0, 1e-300, 1e300)
 
 
@@ -466,8 +469,8 @@ def test_wrong_types():
         K("3", 5.0, 0.05)
     with pytest.raises(TypeError):
         K(3.0, None, 0.05)
-    with pytest.raises(TypeError, match="motor2Inverted must be a bool"):
-        K(3.0, 5.0, 0.05, motor2Inverted=1)
+    with pytest.raises(TypeError, match="motor2_inverted must be a bool"):
+        K(3.0, 5.0, 0.05, motor2_inverted=1)
     with pytest.raises(TypeError):
         K(3.0, 5.0, 0.05, True)                  # keyword-only
     k = K(3.0, 5.0, 0.05)

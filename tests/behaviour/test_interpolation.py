@@ -146,14 +146,14 @@ def test_non_finite_times_are_refused(bad):
 def test_bad_history_is_refused(bad):
     for make in (TIB.createDoubleBuffer, TIB.createBuffer,
                  lambda h: TIB.createBuffer(lambda a, b, t: a, h)):
-        with pytest.raises(ValueError, match="historySize"):
+        with pytest.raises(ValueError, match="history_size"):
             make(bad)
 
 
 def test_bad_arguments_raise_type_errors():
-    with pytest.raises(TypeError, match="historySize must be a number"):
+    with pytest.raises(TypeError, match="history_size must be a number"):
         TIB.createDoubleBuffer("1.5")
-    with pytest.raises(TypeError, match="interpolateFunction must be a callable"):
+    with pytest.raises(TypeError, match="func must be a callable"):
         TIB.createBuffer(1.0, 1.5)
     with pytest.raises(TypeError, match="createBuffer takes"):
         TIB.createBuffer()

@@ -203,7 +203,7 @@ def test_module_config_refuses_bad_values(args, exc, message):
 
 
 def test_motor_with_zero_free_speed_is_refused():
-    with pytest.raises(ValueError, match="freeSpeed"):
+    with pytest.raises(ValueError, match="free_speed"):
         DCMotor(12.0, 4.69, 257.0, 1.5, 0.0)
 
 

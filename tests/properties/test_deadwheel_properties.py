@@ -329,9 +329,9 @@ def test_forward_inverse_identity_with_gyro(layout, v):
     assert back.omega == v[2]                  # the gyro's value, untouched
     assert_vec_close(chassis(back), v, bound, "velocities")
     acc = kin.toChassisAccelerations(kin.toWheelAccelerations(ChassisAccelerations(*v)),
-                                     angularAcceleration=v[2])
+                                     angular_acceleration=v[2])
     assert chassis(acc) == chassis(back)
-    twist = kin.toTwist2d(wheels, gyroDelta=v[2])
+    twist = kin.toTwist2d(wheels, gyro_delta=v[2])
     assert chassis(twist) == chassis(back)
     out = ChassisVelocities(7.0, 8.0, 9.0)
     kin.toChassisVelocitiesInto(wheels, out, v[2])
@@ -382,7 +382,7 @@ def test_least_squares_with_gyro_matches_lstsq(layout, data, w):
         d = data.draw(readings(len(layout)))
     exp, r = model_solve(layout, d, w)
     bound = 2 * gyro_tol(layout, exp[:2], d, w, norm(r))
-    got = chassis(kin.toTwist2d(d, gyroDelta=w))
+    got = chassis(kin.toTwist2d(d, gyro_delta=w))
     assert got[2] == w
     assert_vec_close(got, exp, bound, "least squares with gyro")
     if data is None:
@@ -714,7 +714,7 @@ class DeadWheelNoGyroMachine(DeadWheelMachineBase):
 
     def _update(self, gyro, wheels, data):
         if data.draw(st.booleans(), label="gyro keyword"):
-            return self.odo.update(draw_form(data, wheels), gyroAngle=None)
+            return self.odo.update(draw_form(data, wheels), gyro_angle=None)
         return self.odo.update(draw_form(data, wheels))
 
     def _reset_position(self, gyro, wheels, pose):

@@ -115,11 +115,11 @@ def test_batch_gives_the_per_call_bits():
 
 
 @pytest.mark.parametrize("args, message", [
-    ((ChassisVelocities(math.nan, 0, 0), 0.02, 4.0), "chassisVelocities must be finite"),
+    ((ChassisVelocities(math.nan, 0, 0), 0.02, 4.0), "the chassis velocities must be finite"),
     ((ChassisVelocities(1, 0, 0), 0.0, 4.0), "dt must be a finite number of seconds > 0"),
     ((ChassisVelocities(1, 0, 0), math.nan, 4.0), "dt must be"),
-    ((ChassisVelocities(1, 0, 0), 0.02, -1.0), "attainableMaxModuleVelocity must be >= 0"),
-    ((ChassisVelocities(1, 0, 0), 0.02, math.nan), "attainableMaxModuleVelocity must be"),
+    ((ChassisVelocities(1, 0, 0), 0.02, -1.0), "the module velocity limit must be >= 0"),
+    ((ChassisVelocities(1, 0, 0), 0.02, math.nan), "the module velocity limit must be"),
 ])
 def test_bad_input_is_refused_and_changes_nothing(args, message):
     kin = SwerveDriveKinematics(Translation2d(0.3, 0.3), Translation2d(-0.3, -0.3))
@@ -130,7 +130,7 @@ def test_bad_input_is_refused_and_changes_nothing(args, message):
         kin.desaturatedDiscretizeInto(*args, out)
     assert (out.vx, out.vy, out.omega) == (7.0, 8.0, 9.0)
     # The bad sample is the second one (a bad dt or limit already fails the first).
-    first = 1 if "chassisVelocities" in message else 0
+    first = 1 if "chassis velocities" in message else 0
     buf = np.full((2, 3), 5.0)
     with pytest.raises(ValueError, match=f"sample {first}: " + message):
         batch.desaturatedDiscretize(kin, np.array([[0.0, 0.0, 0.0],

@@ -46,7 +46,7 @@ motors = st.floats(-2000.0, 2000.0, allow_subnormal=False)
 
 def kin(g):
     ra, rl, r, inv = g
-    return K(ra, rl, r, motor2Inverted=inv)
+    return K(ra, rl, r, motor2_inverted=inv)
 
 
 def model_motors(g, v, w):
@@ -92,7 +92,7 @@ def test_motor_velocities_invert_module_velocities(g, m1, m2):
 @given(geometry, wheel_speeds, steer_rates)
 def test_inverting_motor2_only_flips_its_sign(g, v, w):
     ra, rl, r, _ = g
-    a, b = K(ra, rl, r), K(ra, rl, r, motor2Inverted=True)
+    a, b = K(ra, rl, r), K(ra, rl, r, motor2_inverted=True)
     ma, mb = a.toMotorVelocities(v, w), b.toMotorVelocities(v, w)
     assert (mb.motor1, mb.motor2) == (ma.motor1, -ma.motor2)
 

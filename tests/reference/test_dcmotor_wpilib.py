@@ -96,8 +96,8 @@ def test_constructor_fields():
     assert m.Kv == 594.0 / (12.0 - m.R * (1.8 * 3))
     assert m.Kt == (2.6 * 3) / (105.0 * 3)
     same_constants(m, W(12.0, 2.6, 105.0, 1.8, 594.0, 3))
-    assert DCMotor(nominalVoltage=12.0, stallTorque=2.6, stallCurrent=105.0,
-                   freeCurrent=1.8, freeSpeed=594.0, numMotors=3) == m
+    assert DCMotor(nominal_voltage=12.0, stall_torque=2.6, stall_current=105.0,
+                   free_current=1.8, free_speed=594.0, num_motors=3) == m
 
 
 motors = st.builds(lambda name, n: (name, n), st.sampled_from(sorted(FACTORIES)),
@@ -113,7 +113,7 @@ reductions = st.floats(0.01, 500.0)
 def test_current_from_velocity_and_voltage(m, w, u):
     d, o = getattr(DCMotor, m[0])(m[1]), oracle(*m)
     close(d.getCurrent(w, u), o.current(w, u), abs(w / d.Kv / d.R) + abs(u / d.R))
-    close(d.getCurrent(velocity=w, voltageInput=u), o.current(w, u),
+    close(d.getCurrent(velocity=w, input_voltage=u), o.current(w, u),
           abs(w / d.Kv / d.R) + abs(u / d.R))
 
 
@@ -162,7 +162,7 @@ def test_pickle_round_trip(m, g):
 
 def test_repr_rebuilds_the_motor():
     d = DCMotor.getKrakenX60(2).withReduction(6.75)
-    assert repr(d).startswith("DCMotor(nominalVoltage=12.0, stallTorque=")
+    assert repr(d).startswith("DCMotor(nominal_voltage=12.0, stall_torque=")
     assert eval(repr(d), {"DCMotor": DCMotor}) == d
 
 
@@ -186,21 +186,21 @@ def test_immutable():
 
 
 @pytest.mark.parametrize("args, name", [
-    ((0.0, 2.6, 105.0, 1.8, 594.0), "nominalVoltage"),
-    ((-12.0, 2.6, 105.0, 1.8, 594.0), "nominalVoltage"),
-    ((math.nan, 2.6, 105.0, 1.8, 594.0), "nominalVoltage"),
-    ((12.0, 0.0, 105.0, 1.8, 594.0), "stallTorque"),
-    ((12.0, math.inf, 105.0, 1.8, 594.0), "stallTorque"),
-    ((12.0, 2.6, 0.0, 0.0, 594.0), "stallCurrent"),
-    ((12.0, 2.6, 105.0, -1.0, 594.0), "freeCurrent"),
-    ((12.0, 2.6, 105.0, 105.0, 594.0), "freeCurrent"),
-    ((12.0, 2.6, 105.0, math.nan, 594.0), "freeCurrent"),
-    ((12.0, 2.6, 105.0, 1.8, 0.0), "freeSpeed"),
-    ((12.0, 2.6, 105.0, 1.8, -math.inf), "freeSpeed"),
-    ((12.0, 2.6, 105.0, 1.8, 594.0, 0), "numMotors"),
-    ((12.0, 2.6, 105.0, 1.8, 594.0, -2), "numMotors"),
-    ((12.0, 2.6, 105.0, 1.8, 594.0, 2**31), "numMotors"),
-    ((12.0, 1e308, 105.0, 1.8, 594.0, 10), "numMotors"),
+    ((0.0, 2.6, 105.0, 1.8, 594.0), "nominal_voltage"),
+    ((-12.0, 2.6, 105.0, 1.8, 594.0), "nominal_voltage"),
+    ((math.nan, 2.6, 105.0, 1.8, 594.0), "nominal_voltage"),
+    ((12.0, 0.0, 105.0, 1.8, 594.0), "stall_torque"),
+    ((12.0, math.inf, 105.0, 1.8, 594.0), "stall_torque"),
+    ((12.0, 2.6, 0.0, 0.0, 594.0), "stall_current"),
+    ((12.0, 2.6, 105.0, -1.0, 594.0), "free_current"),
+    ((12.0, 2.6, 105.0, 105.0, 594.0), "free_current"),
+    ((12.0, 2.6, 105.0, math.nan, 594.0), "free_current"),
+    ((12.0, 2.6, 105.0, 1.8, 0.0), "free_speed"),
+    ((12.0, 2.6, 105.0, 1.8, -math.inf), "free_speed"),
+    ((12.0, 2.6, 105.0, 1.8, 594.0, 0), "num_motors"),
+    ((12.0, 2.6, 105.0, 1.8, 594.0, -2), "num_motors"),
+    ((12.0, 2.6, 105.0, 1.8, 594.0, 2**31), "num_motors"),
+    ((12.0, 1e308, 105.0, 1.8, 594.0, 10), "num_motors"),
 ])
 def test_bad_constants_are_value_errors(args, name):
     with pytest.raises(ValueError, match=name):
@@ -209,22 +209,22 @@ def test_bad_constants_are_value_errors(args, name):
 
 @pytest.mark.parametrize("n", [0, -1, 2**31])
 def test_bad_motor_counts_in_factories(n):
-    with pytest.raises(ValueError, match="numMotors"):
+    with pytest.raises(ValueError, match="num_motors"):
         DCMotor.getCIM(n)
 
 
 @pytest.mark.parametrize("n, got", [(2.0, "float"), (True, "bool"), ("2", "str"),
                                     (None, "NoneType")])
 def test_motor_count_must_be_an_int(n, got):
-    with pytest.raises(TypeError, match=f"numMotors must be an int, got {got}"):
+    with pytest.raises(TypeError, match=f"num_motors must be an int, got {got}"):
         DCMotor.getNEO(n)
-    with pytest.raises(TypeError, match=f"numMotors must be an int, got {got}"):
+    with pytest.raises(TypeError, match=f"num_motors must be an int, got {got}"):
         DCMotor(12.0, 2.6, 105.0, 1.8, 594.0, n)
 
 
 @pytest.mark.parametrize("g", [0.0, -2.0, math.nan, math.inf])
 def test_bad_reduction(g):
-    with pytest.raises(ValueError, match="gearboxReduction"):
+    with pytest.raises(ValueError, match="gearbox_reduction"):
         DCMotor.getNEO().withReduction(g)
 
 
@@ -244,7 +244,7 @@ def test_wrong_types_name_the_type():
                                       ((), {"velocity": 1.0}), ((1.0,), {"velocity": 1.0}),
                                       ((1.0, 2.0, 3.0), {}),
                                       ((1.0, 2.0), {"torque": 2.0}),
-                                      ((), {"voltageInput": 1.0, "torque": 2.0})])
+                                      ((), {"input_voltage": 1.0, "torque": 2.0})])
 def test_get_current_takes_one_of_its_two_forms(args, kw):
     with pytest.raises(TypeError, match=r"getCurrent\(\) takes"):
         DCMotor.getNEO().getCurrent(*args, **kw)

@@ -113,15 +113,15 @@ def test_a_result_beyond_the_doubles_is_refused_naming_the_argument(results):
         cv, out = ChassisVelocities(*r), ChassisVelocities(1.0, 2.0, 3.0)
         for call in (lambda: cv.discretize(float(t)), lambda: cv.discretizeInto(float(t), out),
                      lambda: kin.desaturatedDiscretize(cv, float(t), math.inf)):
-            with pytest.raises(ValueError, match="chassisVelocities .* largest double"):
+            with pytest.raises(ValueError, match="the chassis velocities .* largest double"):
                 call()
         assert (out.vx, out.vy, out.omega) == (1.0, 2.0, 3.0)      # unchanged
     stack = np.vstack([[1.0, 2.0, 3.0], v])
     out = np.zeros_like(stack)
-    with pytest.raises(ValueError, match="sample 1: chassisVelocities"):
+    with pytest.raises(ValueError, match="sample 1: the chassis velocities"):
         batch.discretize(stack, np.concatenate([[0.02], dt]), out=out)
     assert not out.any()
-    with pytest.raises(ValueError, match="sample 1: chassisVelocities"):
+    with pytest.raises(ValueError, match="sample 1: the chassis velocities"):
         batch.desaturatedDiscretize(kin, stack, np.concatenate([[0.02], dt]), math.inf)
 
 

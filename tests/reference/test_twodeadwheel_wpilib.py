@@ -93,7 +93,7 @@ def test_forward_kinematics(wheels, expected):
     general = DeadWheelKinematics([Pose2d(0.0, X_WHEEL_Y_POS, Rotation2d()),
                                    Pose2d(Y_WHEEL_X_POS, 0.0, Rotation2d.kCCW_Pi_2)])
     for v in (odometry.toChassisVelocities(*wheels),
-              general.toChassisVelocities(wheels[:2], gyroRate=wheels[2])):
+              general.toChassisVelocities(wheels[:2], gyro_rate=wheels[2])):
         assert_close(expected[0], v.vx, 0.1)
         assert_close(expected[1], v.vy, 0.1)
         assert_close(expected[2], v.omega, 0.1)

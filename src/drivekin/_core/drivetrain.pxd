@@ -24,9 +24,9 @@ cdef class Drivetrain:
     cdef bint centered           # the inverse maps take a centre of rotation
 
     cdef int _ready(self) except -1
-    # Use ``centerOfRotation`` (a Translation2d or None) for the inverse maps that follow,
+    # Use ``center_of_rotation`` (a Translation2d or None) for the inverse maps that follow,
     # or refuse it (TypeError) if the drivetrain has none; _set_cor moves the rows.
-    cdef int _center(self, object centerOfRotation) except -1
+    cdef int _center(self, object center_of_rotation) except -1
     cdef void _set_cor(self, vec2_t cor) noexcept
     # Refuse a forward map the layout cannot do (dead wheels that do not observe the
     # heading change, without a gyro).

@@ -11,12 +11,12 @@ cdef class Drivetrain:
     cdef int _ready(self) except -1:
         raise TypeError(f"{type(self).__name__} does not implement the drivetrain contract")
 
-    cdef int _center(self, object centerOfRotation) except -1:
-        # Callers have checked that centerOfRotation is None or a Translation2d.
-        if centerOfRotation is None:
+    cdef int _center(self, object center_of_rotation) except -1:
+        # Callers have checked that center_of_rotation is None or a Translation2d.
+        if center_of_rotation is None:
             self._set_cor(vec(0.0, 0.0))
         elif self.centered:
-            self._set_cor((<Translation2d>centerOfRotation).v)
+            self._set_cor((<Translation2d>center_of_rotation).v)
         else:
             raise TypeError(f"{type(self).__name__} has no centre of rotation argument")
         return 0

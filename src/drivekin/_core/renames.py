@@ -17,8 +17,8 @@ _R = "2027 renamed it"
 # class name -> {2026 name: what to use instead}
 RENAMES: dict[str, dict[str, str]] = {
     "ChassisVelocities": {
-        "fromFieldRelativeSpeeds": "ChassisVelocities(vx, vy, omega).toRobotRelative(robotAngle)",
-        "fromRobotRelativeSpeeds": "ChassisVelocities(vx, vy, omega).toFieldRelative(robotAngle)",
+        "fromFieldRelativeSpeeds": "ChassisVelocities(vx, vy, omega).toRobotRelative(robot_angle)",
+        "fromRobotRelativeSpeeds": "ChassisVelocities(vx, vy, omega).toFieldRelative(robot_angle)",
     },
     "SwerveDriveKinematics": {
         "toSwerveModuleStates": "toSwerveModuleVelocities",

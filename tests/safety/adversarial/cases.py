@@ -368,16 +368,16 @@ def group_args():
             check_hostile, drivekin.DifferentialDriveKinematics, "__init__",
             reg.API[drivekin.DifferentialDriveKinematics]["__init__"], {0: float(v)})
     dsk = drivekin.DifferentialSwerveModuleKinematics
-    for pos, what in enumerate(("azimuthGearRatio", "wheelGearRatio", "wheelRadius")):
+    for pos, what in enumerate(("azimuth_gear_ratio", "wheel_gear_ratio", "wheel_radius")):
         for v in ("nan", "inf", "-1.0", "0.0"):
             cases[f"{dsk.__name__}.__init__ {what}={v}"] = functools.partial(
                 check_hostile, dsk, "__init__", reg.API[dsk]["__init__"][0], {pos: float(v)},
                 needle=what)
     for v in ("nan", "-1.0"):
-        cases[f"{dsk.__name__}.desaturate* maxMotorVelocity={v}"] = functools.partial(
+        cases[f"{dsk.__name__}.desaturate* max_motor_velocity={v}"] = functools.partial(
             check_hostile, dsk, "desaturateModuleVelocitiesInPlace",
             reg.API[dsk]["desaturateModuleVelocitiesInPlace"][0], {2: float(v)},
-            needle="maxMotorVelocity")
+            needle="max_motor_velocity")
     return cases
 
 

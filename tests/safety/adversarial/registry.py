@@ -642,7 +642,7 @@ API[DSMV] = _wheels(DSMV, ("motor1", "motor2"), eq=True)
 API[DSModV] = _wheels(DSModV, ("wheelVelocity", "azimuthVelocity"), eq=True)
 API[DSK] = {
     "__init__": [S(Num(3.0), Num(5.0), Num(0.05)),
-                 S(Num(3.0), Num(5.0), Num(0.05), kw={"motor2Inverted": lambda: True})],
+                 S(Num(3.0), Num(5.0), Num(0.05), kw={"motor2_inverted": lambda: True})],
     "__reduce__": S(), "__setstate__": S(State(lambda: (R(0.25), 0.5, -1.5))),
     "azimuthGearRatio": Prop(), "wheelGearRatio": Prop(), "wheelRadius": Prop(),
     "motor2Inverted": Prop(),

@@ -166,7 +166,7 @@ class DiffSwerveDrive(Drivetrain):
         self.kinematics = SwerveDriveKinematics(
             Translation2d(h, h), Translation2d(h, -h), Translation2d(-h, h), Translation2d(-h, -h))
         pods = [DifferentialSwerveModuleKinematics(
-            self.AZIMUTH_RATIO, self.WHEEL_RATIO, self.WHEEL_RADIUS, motor2Inverted=True)
+            self.AZIMUTH_RATIO, self.WHEEL_RATIO, self.WHEEL_RADIUS, motor2_inverted=True)
             for _ in range(4)]
         self.pod = pods[0]          # the drive-level desaturation needs one of the (equal) pods
         # Pure driving at max_speed puts both motors exactly on the limit.
