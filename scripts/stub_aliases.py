@@ -12,8 +12,9 @@ with a marker comment; a second run changes nothing.
     python scripts/stub_aliases.py            # rewrite the stubs whose block is stale
     python scripts/stub_aliases.py --check    # list them and exit 1
 
-It imports the drivekin beside it (``src``), which needs an in-place build.
-``tests/api/test_stubs.py`` runs the check.
+It imports the drivekin beside it (``src/drivekin``, which needs an in-place build) or the
+one ``--package-dir`` names (an installed copy, whose stubs it then reads and writes).
+``tests/api/test_stubs.py`` runs the check on the drivekin it tests.
 """
 from __future__ import annotations
 
@@ -27,16 +28,15 @@ SRC = Path(__file__).resolve().parents[1] / "src"
 MARKER = "    # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)"
 
 
-def _stubs() -> list[Path]:
+def _stubs(pkg: Path) -> list[Path]:
     """The stubs, and the Python modules without one (their classes are read by type
     checkers from the source: the block goes under ``if TYPE_CHECKING:`` there)."""
-    pkg = SRC / "drivekin"
     stubs = sorted(pkg.rglob("*.pyi"))
     return stubs + sorted(p for p in pkg.glob("*.py") if not p.with_suffix(".pyi").exists())
 
 
-def _module(path: Path) -> str:
-    return ".".join(path.relative_to(SRC).with_suffix("").parts)
+def _module(path: Path, pkg: Path) -> str:
+    return ".".join(path.relative_to(pkg.parent).with_suffix("").parts)
 
 
 def _wanted(module: str, cls_name: str, body: dict[str, ast.FunctionDef | None]
@@ -88,12 +88,12 @@ def _members(node: ast.ClassDef) -> dict[str, ast.FunctionDef | None]:
     return out
 
 
-def rewrite(path: Path) -> str:
+def rewrite(path: Path, pkg: Path) -> str:
     """The stub's text with every class's block up to date."""
     text = path.read_text(encoding="utf-8")
     lines = text.splitlines()
     tree = ast.parse(text)
-    module = _module(path)
+    module = _module(path, pkg)
     # Bottom-up, so earlier line numbers stay valid.
     for node in sorted((n for n in tree.body if isinstance(n, ast.ClassDef)),
                        key=lambda n: n.lineno, reverse=True):
@@ -112,18 +112,24 @@ def rewrite(path: Path) -> str:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--check", action="store_true", help="list stale stubs, exit 1")
+    parser.add_argument("--package-dir", type=Path, default=SRC / "drivekin",
+                        help="the drivekin whose stubs to write (default: %(default)s)")
     args = parser.parse_args(argv)
-    sys.path.insert(0, str(SRC))
-    importlib.import_module("drivekin")
+    pkg = args.package_dir.resolve()
+    sys.path.insert(0, str(pkg.parent))
+    found = Path(importlib.import_module("drivekin").__file__).resolve().parent
+    if found != pkg:
+        print(f"imported drivekin from {found}, not {pkg}", file=sys.stderr)
+        return 2
     stale = []
-    for path in _stubs():
-        new = rewrite(path)
+    for path in _stubs(pkg):
+        new = rewrite(path, pkg)
         if new != path.read_text(encoding="utf-8"):
             stale.append(path)
             if not args.check:
                 path.write_text(new, encoding="utf-8")
     for path in stale:
-        print(f"{'stale' if args.check else 'rewrote'}: {path.relative_to(SRC.parent)}")
+        print(f"{'stale' if args.check else 'rewrote'}: {path}")
     return 1 if stale and args.check else 0
 
 

@@ -625,5 +625,6 @@ def test_pyproject_ships_stubs_and_py_typed():
 def test_stub_aliases_are_generated():
     # robotpy 2027's spellings in the stubs are scripts/stub_aliases.py's output.
     done = subprocess.run([sys.executable, str(REPO / "scripts" / "stub_aliases.py"),
-                           "--check"], capture_output=True, text=True)
+                           "--check", "--package-dir", str(PKG_DIR)],
+                          capture_output=True, text=True, timeout=300)
     assert done.returncode == 0, done.stdout + done.stderr
