@@ -6,7 +6,8 @@ Under emulation (DRIVEKIN_EMULATED=1) and ASan (DRIVEKIN_ASAN=1) the tests use a
 two-hundredth of their points (``SCALE``): ASan's allocator makes mpmath about twenty
 times slower, and what ASan checks is the loops' memory, which any size exercises.
 DRIVEKIN_TRIG_FRACTION=N takes a 1/N-th anywhere (scripts/wheel_tests.sh, on the
-cp310-cp313 wheels, whose C the whole run has already measured).
+cp310-cp313 wheels, whose C the whole run has already measured; .ci/run's main suite, a
+quarter, the cp314 x86_64 wheel's whole suite measuring all of them).
 """
 from __future__ import annotations
 
