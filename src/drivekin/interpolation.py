@@ -13,6 +13,7 @@ import threading
 from typing import TYPE_CHECKING, Any, Callable, Generic, List, Optional, Tuple, TypeVar
 
 from drivekin._core.errors import type_name
+from drivekin._core.numbers import as_double
 
 __all__ = ["TimeInterpolatableBuffer"]
 
@@ -20,16 +21,7 @@ T = TypeVar("T")
 
 
 def _seconds(value: object, what: str) -> float:
-    # The numbers the Cython façade accepts for a double (anything with __float__ or
-    # __index__), but never text, which float() would parse.
-    cls = type(value)
-    if isinstance(value, (str, bytes, bytearray)) or not (
-            hasattr(cls, "__float__") or hasattr(cls, "__index__")):
-        raise TypeError(f"{what} must be a number of seconds, got {type_name(value)}")
-    try:
-        v = float(value)  # type: ignore[arg-type]
-    except OverflowError:
-        raise ValueError(f"{what} must be a finite number of seconds, got {value!r}") from None
+    v = as_double(value, f"{what} must be a number of seconds")
     if not math.isfinite(v):
         raise ValueError(f"{what} must be a finite number of seconds, got {v!r}")
     return v
@@ -194,11 +186,4 @@ def _rebuild(f: Callable[[Any, Any, float], Any], history: float,
 def _float_sample(sample: object) -> float:
     # A double buffer stores floats (Java's Double): refuse anything else now rather
     # than fail inside a later getSample.
-    cls = type(sample)
-    if isinstance(sample, (str, bytes, bytearray)) or not (
-            hasattr(cls, "__float__") or hasattr(cls, "__index__")):
-        raise TypeError(f"sample must be a float, got {type_name(sample)}")
-    try:
-        return float(sample)  # type: ignore[arg-type]
-    except OverflowError:
-        raise ValueError(f"sample must be a float, got {sample!r}") from None
+    return as_double(sample, "sample must be a float")

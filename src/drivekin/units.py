@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, final
 
-from drivekin._core.errors import type_name
+from drivekin._core.numbers import as_double
 
 __all__ = ["Units"]
 
@@ -31,17 +31,9 @@ _RADIANS_TO_DEGREES = 57.29577951308232
 
 
 def _real(value: object, method: str) -> float:
-    """``value`` as a float, as Java's ``double`` parameter would take it: ints, floats and
-    anything with ``__float__``/``__index__`` (numpy scalars); never a string or a
-    container, which ``float()`` would parse or a multiplication would repeat."""
-    if type(value) is float:
-        return value
-    if isinstance(value, (str, bytes, bytearray)):
-        raise TypeError(f"Units.{method}() takes a number, got {type_name(value)}")
-    try:
-        return float(value)  # type: ignore[arg-type]
-    except TypeError:
-        raise TypeError(f"Units.{method}() takes a number, got {type_name(value)}") from None
+    # As Java's double parameter takes it (never a string or a container, which float()
+    # would parse or a multiplication would repeat).
+    return as_double(value, f"Units.{method}() takes a number")
 
 
 @final

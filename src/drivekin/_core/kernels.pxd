@@ -47,9 +47,13 @@ cdef inline double fhypot(double x, double y) noexcept nogil:
 
 # robotpy-wpimath's fromFeet factories convert through the C++ units library, which
 # multiplies by the numerator of 1 ft = 381/1250 m and then divides by the denominator;
-# the same two roundings give the same bits.
+# the same two roundings give the same bits. Where the product overflows (|feet| above
+# about 4.7e305) the length in metres still fits: dividing first gives it, never inf.
 cdef inline double feet_to_meters(double feet) noexcept nogil:
-    return feet * 381.0 / 1250.0
+    cdef double m = feet * 381.0 / 1250.0
+    if fabs(m) == INFINITY and fabs(feet) < INFINITY:
+        m = feet / 1250.0 * 381.0
+    return m
 
 # ---------------------------------------------------------------------------------------
 # Rotation2d

@@ -31,6 +31,7 @@ from typing import Any
 import numpy as np
 
 from drivekin._core.errors import type_name
+from drivekin._core.numbers import as_double
 from drivekin.chassis import ChassisAccelerations
 from drivekin.differential import DifferentialDriveWheelAccelerations
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d
@@ -56,19 +57,7 @@ def _convert(value: float, num: float, den: float, where: str) -> float:
 
 
 def _real(value: object, where: str, what: str) -> float:
-    """``value`` as a float, as drivekin's ``double`` parameters take it (ints, floats,
-    objects with ``__float__``), never a string, which ``float()`` would parse."""
-    if type(value) is float:
-        return value
-    if not isinstance(value, (str, bytes, bytearray)):
-        try:
-            return float(value)  # type: ignore[arg-type]
-        except TypeError:
-            pass
-        except OverflowError:
-            raise ValueError(f"{where} takes {what} as a float; the int given is beyond "
-                             "the largest double") from None
-    raise TypeError(f"{where} takes {what} as a float, got {type_name(value)}")
+    return as_double(value, f"{where} takes {what} as a float")
 
 
 def _si(value: object, unit: tuple[float, float], where: str, what: str) -> float:
