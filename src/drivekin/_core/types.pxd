@@ -21,10 +21,31 @@ cdef struct twist2_t:
     double dtheta               # rad
 
 cdef struct vec3_t:
-    # Chassis-level 3-vector: (vx m/s, vy m/s, omega rad/s) or (ax, ay m/s^2, alpha rad/s^2).
+    # Chassis-level 3-vector: (vx m/s, vy m/s, omega rad/s) or (ax, ay m/s^2, alpha rad/s^2);
+    # in 3-D geometry a translation (m) or a rotation vector (rad).
     double x
     double y
     double z
+
+cdef struct quat_t:
+    # A quaternion w + xi + yj + zk; a Rotation3d keeps a unit one, as WPILib does.
+    double w
+    double x
+    double y
+    double z
+
+cdef struct pose3_t:
+    # Used both for 3-D poses and transforms (same layout, different meaning).
+    vec3_t t                    # translation, m
+    quat_t q                    # rotation (unit quaternion)
+
+cdef struct twist3_t:
+    double dx                   # m, along the start frame's axes
+    double dy
+    double dz
+    double rx                   # rad: the rotation vector, in the start frame
+    double ry
+    double rz
 
 cdef struct desat_t:
     # Arguments of the two desaturateWheelVelocities overloads.
