@@ -23,6 +23,8 @@ _PACKAGE_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(drivekin.__file_
 pytestmark = pytest.mark.skipif(not SCRIPT.is_file(), reason="not a source checkout")
 
 
+@pytest.mark.skipif(os.environ.get("DRIVEKIN_LEAKCHECK_STEP") == "1",
+                    reason="CI runs scripts/leakcheck.py as its own step, at 20x this count")
 def test_no_operation_or_error_path_leaks():
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join(p for p in (_PACKAGE_ROOT, env.get("PYTHONPATH")) if p)
