@@ -1,6 +1,7 @@
 """The drivetrain contract's base class (declared in drivetrain.pxd): the centre-of-rotation
 rule written once, defaults for what most drivetrains do not need, and map bodies that
-keep a subclass that does not override them from computing."""
+keep a subclass that does not override them from computing; and the pseudo-inverse the
+drivetrains build their forward maps with."""
 from libc.math cimport fabs, frexp, ldexp, sqrt
 
 import numpy as np
