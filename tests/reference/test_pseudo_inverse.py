@@ -12,8 +12,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from drivekin import DeadWheelKinematics, MecanumDriveKinematics, Pose2d, Rotation2d, \
-    SwerveDriveKinematics, SwerveModuleVelocity, Translation2d
+from drivekin import Rotation2d, SwerveDriveKinematics, SwerveModuleVelocity, Translation2d
 from drivekin._core.drivetrain import pseudo_inverse
 from tests._support.strategies import mecanum_inverse_matrix, swerve_inverse_matrix
 
@@ -111,9 +110,6 @@ def test_forward_kinematics_is_built_on_it():
     want = exact_pinv(swerve_inverse_matrix(points)) @ w
     got = kin.toChassisVelocities(states)
     assert np.abs(np.array([got.vx, got.vy, got.omega]) - want).max() <= 1e-15 * np.abs(w).max()
-    # The kinematics classes still build for every layout above.
-    MecanumDriveKinematics(*[Translation2d(x, y) for x, y in LAYOUTS["uneven"]])
-    DeadWheelKinematics([Pose2d(x, y, Rotation2d(phi)) for x, y, phi in DEAD_WHEELS["four"]])
 
 
 RANK_DEFICIENT = {
