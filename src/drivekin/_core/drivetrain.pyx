@@ -67,6 +67,18 @@ cdef class Drivetrain:
 cdef double RCOND = 1e-15   # numpy's pinv default: columns below this relative size are dependent
 
 
+cdef void reflect(Py_ssize_t m, double[:, ::1] v, Py_ssize_t t, double h, double[:, ::1] x,
+                  Py_ssize_t col) noexcept:
+    # Column col of x times the reflection I − v·vᵀ/h of step t (v[:, t], zero above row t).
+    cdef Py_ssize_t i
+    cdef double s = 0.0, f
+    for i in range(t, m):
+        s = s + v[i, t] * x[i, col]
+    f = s / h
+    for i in range(t, m):
+        x[i, col] = x[i, col] - f * v[i, t]
+
+
 cdef Py_ssize_t householder(Py_ssize_t m, Py_ssize_t n, double[:, ::1] w, double[:, ::1] v,
                             double* h, Py_ssize_t* order) noexcept:
     # Householder QR of the m x n matrix w (m >= n, entries of moderate size) in place, the
@@ -77,7 +89,7 @@ cdef Py_ssize_t householder(Py_ssize_t m, Py_ssize_t n, double[:, ::1] w, double
     # R = Qᵀ·A in those columns (upper triangular in the first r) and v[:, t], h[t] the
     # reflection I − v·vᵀ/h of step t (h = vᵀv/2), v zero above row t.
     cdef Py_ssize_t i, j, q, t, r = 0, nd = 0
-    cdef double s, x0, nrm, alpha, f, longest = 0.0
+    cdef double s, x0, nrm, alpha, longest = 0.0
     cdef Py_ssize_t deferred[8]
     cdef bint taken[8]
     for j in range(n):
@@ -104,12 +116,7 @@ cdef Py_ssize_t householder(Py_ssize_t m, Py_ssize_t n, double[:, ::1] w, double
         taken[j] = True
         for q in range(n):
             if not taken[q]:
-                s = 0.0
-                for i in range(r, m):
-                    s = s + v[i, r] * w[i, q]
-                f = s / h[r]
-                for i in range(r, m):
-                    w[i, q] = w[i, q] - f * v[i, r]
+                reflect(m, v, r, h[r], w, q)
         w[r, j] = alpha
         for i in range(r + 1, m):
             w[i, j] = 0.0
@@ -125,8 +132,8 @@ cdef object pinv_scaled(double[:, ::1] a):
     # Full column rank: R⁻¹·Q1ᵀ. Rank r < n: A·Π = Q1·T with T = [R11 R12] (r x n, full
     # row rank), so A⁺ = Π·T⁺·Q1ᵀ, the minimum-norm least-squares inverse numpy's SVD gave,
     # with T⁺ = ((Tᵀ)⁺)ᵀ from the full-rank case.
-    cdef Py_ssize_t m = a.shape[0], n = a.shape[1], i, j, q, t, u, r
-    cdef double s, f
+    cdef Py_ssize_t m = a.shape[0], n = a.shape[1], i, j, t, u, r
+    cdef double s
     cdef double h[8]
     cdef Py_ssize_t order[8]
     w_arr = np.array(a)
@@ -140,12 +147,7 @@ cdef object pinv_scaled(double[:, ::1] a):
         q1[j, j] = 1.0
     for t in range(r - 1, -1, -1):
         for j in range(r):
-            s = 0.0
-            for i in range(t, m):
-                s = s + v[i, t] * q1[i, j]
-            f = s / h[t]
-            for i in range(t, m):
-                q1[i, j] = q1[i, j] - f * v[i, t]
+            reflect(m, v, t, h[t], q1, j)
     cdef double[:, ::1] tp
     if r == n:
         # Row i of Q1 through R⁻¹ by back-substitution: column i of A⁺.
