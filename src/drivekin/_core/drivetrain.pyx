@@ -128,10 +128,10 @@ cdef Py_ssize_t householder(Py_ssize_t m, Py_ssize_t n, double[:, ::1] w, double
 
 
 cdef object pinv_scaled(double[:, ::1] a):
-    # The pseudo-inverse (n x m) of a (m x n, m >= n, n <= 8, entries of moderate size).
-    # Full column rank: R⁻¹·Q1ᵀ. Rank r < n: A·Π = Q1·T with T = [R11 R12] (r x n, full
-    # row rank), so A⁺ = Π·T⁺·Q1ᵀ, the minimum-norm least-squares inverse numpy's SVD gave,
-    # with T⁺ = ((Tᵀ)⁺)ᵀ from the full-rank case.
+    # The pseudo-inverse (n x m) of a (m x n, m >= n, n <= 8, not zero, entries of
+    # moderate size). Full column rank: R⁻¹·Q1ᵀ. Rank r < n: A·Π = Q1·T with
+    # T = [R11 R12] (r x n, full row rank), so A⁺ = Π·T⁺·Q1ᵀ, the minimum-norm
+    # least-squares inverse numpy's SVD gave, with T⁺ = ((Tᵀ)⁺)ᵀ from the full-rank case.
     cdef Py_ssize_t m = a.shape[0], n = a.shape[1], i, j, t, u, r
     cdef double s
     cdef double h[8]
@@ -157,8 +157,6 @@ cdef object pinv_scaled(double[:, ::1] a):
                 for u in range(t + 1, r):
                     s = s - w[t, order[u]] * p[order[u], i]
                 p[order[t], i] = s / w[t, order[t]]
-        return p_arr
-    if r == 0:
         return p_arr
     tt = np.zeros((n, r))
     for t in range(r):
