@@ -152,6 +152,10 @@ cdef class Quaternion:
     1e-9 (so q and −q differ as Quaternions, although they are the same rotation).
     """
 
+    def __cinit__(self):
+        # A bare Quaternion.__new__ is the default (1, 0, 0, 0).
+        self.q.w = 1.0
+
     def __init__(self, double w=1.0, double x=0.0, double y=0.0, double z=0.0):
         refuse_reinit(self.frozen, self)
         self.q = quat(w, x, y, z)
@@ -708,10 +712,11 @@ cdef class Translation3d:
 
     def nearest(self, translations):
         """Return the element of ``translations`` closest to this point (first on ties)."""
-        for t in translations:
+        items = list(translations)          # one pass: a generator is read once
+        for t in items:
             if type(t) is not Translation3d:
                 raise TypeError(f"nearest() takes Translation3d objects, got {type_name(t)}")
-        return min(translations, key=self.getDistance)
+        return min(items, key=self.getDistance)
 
     def interpolate(self, end_value: Translation3d, double t):
         """Return the linear interpolation towards ``end_value``; ``t`` is not clamped."""
@@ -1467,6 +1472,8 @@ cdef class CoordinateSystem:
         return (CoordinateSystem, self.axes)
 
     def __repr__(self):
+        if self.axes is None:
+            return "<uninitialised CoordinateSystem>"
         return f"CoordinateSystem({self.axes[0]!r}, {self.axes[1]!r}, {self.axes[2]!r})"
 
 
