@@ -13,11 +13,18 @@ stored poses and the double t.
 robotpy-wpimath 2026.2.2 (``Pose3d.exp`` / ``Pose3d.log``, the same formulas as WPILib
 2027's ``Twist3d.exp`` / ``Transform3d.log``) is measured at the same points to show the gap
 the issue names; only that it exceeds drivekin's bound in the cancelling bands is asserted.
-Measured on x86_64 (the maxima per metre, robotpy / drivekin):
+Measured on x86_64 (largest error per band; translations per metre):
 
-    band            log robotpy   log drivekin   exp robotpy   exp drivekin
-    see test_robotpy_2026_is_not_exact's table (filled in from the run in the module's
-    MEASURED constant below).
+    angle band          Twist3d.exp              Transform3d.log
+                     drivekin  robotpy 2026    drivekin  robotpy 2026
+    1e-12 .. π       3.3e-16   3.3e-10         4.4e-16   6.1e-3
+    1e-7 .. 3e-7     2.0e-16   3.5e-10         1.9e-16   6.6e-3
+    1e-6 .. 3e-6     1.9e-16   3.1e-11         2.0e-16   5.7e-5
+    1e-5 .. 3e-5     1.9e-16   2.8e-12         2.2e-16   5.8e-7
+    1e-3 .. 3e-3     2.0e-16   2.8e-14         2.0e-16   5.0e-11
+    3 .. π           3.1e-16   2.7e-16         4.4e-16   6.2e-16
+
+Pose3d.interpolate: 9.9e-16 (robotpy 2026 has none); Pose3d.exp / Pose3d.log: 9.0e-16.
 """
 from __future__ import annotations
 
@@ -152,6 +159,33 @@ def test_transform_log_is_exact(log_table):
         errors.append((band, _log_error((tr.getX(), tr.getY(), tr.getZ()), got, want)))
     worst = _by_band(errors)
     assert max(worst.values()) <= TOL, worst
+
+
+def test_pose_exp_and_log_forms_are_exact(exp_table):
+    # Pose3d.exp(twist) = pose + twist.exp() and start.log(end) = (end − start).log(), the
+    # robotpy 2026 forms drivekin keeps: exact for the composed / relative transform.
+    rng = np.random.default_rng(RNG_SEED + 2)
+    worst = 0.0
+    for band, u, r, want in exp_table[::4]:
+        start = Pose3d(Translation3d(*rng.uniform(-5.0, 5.0, 3)),
+                       Rotation3d(_unit(rng) * rng.uniform(0.0, math.pi)))
+        s = ((start.getX(), start.getY(), start.getZ()), _quat(start.getRotation()))
+        end = start.exp(Twist3d(*u, *r))
+        with mp.workdps(R.DPS + 10):
+            want_t, want_q = R.compose((R.vec(s[0]), R.qnormalize(R.vec(s[1]))), want)
+        got_t = (end.getX(), end.getY(), end.getZ())
+        scale = max(1.0, math.sqrt(sum(c * c for c in s[0])) + _translation_scale(u))
+        worst = max(worst, max(abs(float(mp.mpf(g) - w)) for g, w in zip(got_t, want_t)) / scale,
+                    R.same_rotation_error(_quat(end.getRotation()), want_q))
+        tw = start.log(end)
+        e = ((end.getX(), end.getY(), end.getZ()), _quat(end.getRotation()))
+        with mp.workdps(R.DPS + 10):
+            rel_t, rel_q = R.relative((R.vec(e[0]), R.qnormalize(R.vec(e[1]))),
+                                      (R.vec(s[0]), R.qnormalize(R.vec(s[1]))))
+        want_log = R.se3_log(rel_t, rel_q)
+        worst = max(worst, _log_error(rel_t, (tw.dx, tw.dy, tw.dz, tw.rx, tw.ry, tw.rz),
+                                      want_log))
+    assert worst <= TOL, worst
 
 
 def test_pose_interpolate_is_exact():
