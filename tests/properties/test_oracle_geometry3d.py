@@ -309,6 +309,17 @@ def test_translation3d_matches_robotpy():
     w.check()
 
 
+def test_twist3d_equality_matches_robotpy():
+    rng = _rng(18)
+    for _ in range(N):
+        v = rng.uniform(-5.0, 5.0, 6)
+        for delta in (0.0, 1e-10, 5e-10, 2e-9, 1e-6):
+            moved = v.copy()
+            moved[rng.integers(6)] += delta * rng.choice([-1.0, 1.0])
+            assert ((Twist3d(*v) == Twist3d(*moved))
+                    == (rg.Twist3d(*v) == rg.Twist3d(*moved))), (v, moved)
+
+
 def _frames(salt):
     """(drivekin pose, robotpy pose, drivekin transform, robotpy transform) quadruples."""
     rng = _rng(salt)
@@ -513,4 +524,17 @@ def test_rotation3d_from_rotation2d_wraps():
                           ("Transform3d(Transform2d)",
                            Transform3d(Transform2d(Translation2d(1.0, 2.0), r2)).getRotation())):
             w(name, _quat(rot), want)
+    w.check()
+
+
+def test_translation3d_interpolate_is_unclamped_lerp():
+    # Not in robotpy 2026: a + (b − a)·t per component (MathUtil.lerp), t not clamped.
+    rng = _rng(30)
+    w = Worst()
+    for _ in range(N):
+        a, b = rng.uniform(-10.0, 10.0, 3), rng.uniform(-10.0, 10.0, 3)
+        t = float(rng.uniform(-1.5, 2.5))
+        got = Translation3d(*a).interpolate(Translation3d(*b), t)
+        want = [mp.mpf(x) + (mp.mpf(y) - mp.mpf(x)) * mp.mpf(t) for x, y in zip(a, b)]
+        w("Translation3d.interpolate", _xyz(got), want, _scale(a, b) * 2.5)
     w.check()
