@@ -1461,10 +1461,12 @@ cdef class CoordinateSystem:
                                     rot3_rotate_by(rot3_rotate_by(p.q, f), t_inv)))
         if type(value) is Transform3d:
             p = (<Transform3d>value).p
+            # coordRot = from.R.rotateBy(to.R⁻¹); the rotation is
+            # coordRot⁻¹.rotateBy(R.rotateBy(coordRot)) = coordRot·R·coordRot⁻¹.
             c = rot3_rotate_by(f, t_inv)
             return new_transform3d(pose3(_convert_vector(p.t, f, t_inv),
-                                         rot3_rotate_by(rot3_rotate_by(p.q, c),
-                                                        rot3_inverse(c))))
+                                         rot3_rotate_by(rot3_inverse(c),
+                                                        rot3_rotate_by(p.q, c))))
         raise TypeError("CoordinateSystem.convert() takes a Translation3d, Rotation3d, Pose3d "
                         f"or Transform3d, got {type_name(value)}")
 
