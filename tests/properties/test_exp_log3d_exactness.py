@@ -21,10 +21,10 @@ Measured on x86_64 (largest error per band; translations per metre):
     1e-7 .. 3e-7     2.0e-16   3.5e-10         1.9e-16   6.6e-3
     1e-6 .. 3e-6     1.9e-16   3.1e-11         2.0e-16   5.7e-5
     1e-5 .. 3e-5     1.9e-16   2.8e-12         2.2e-16   5.8e-7
-    1e-3 .. 3e-3     2.0e-16   2.8e-14         2.0e-16   5.0e-11
-    3 .. π           3.1e-16   2.7e-16         4.4e-16   6.2e-16
+    1e-3 .. 3e-3     2.0e-16   2.8e-14         2.9e-16   5.0e-11
+    3 .. π           3.0e-16   2.7e-16         5.7e-16   6.2e-16
 
-Pose3d.interpolate: 9.9e-16 (robotpy 2026 has none); Pose3d.exp / Pose3d.log: 9.0e-16.
+Pose3d.interpolate: 1.3e-15 (robotpy 2026 has none); Pose3d.exp / Pose3d.log: 9.0e-16.
 """
 from __future__ import annotations
 
