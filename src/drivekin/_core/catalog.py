@@ -480,8 +480,8 @@ def _setpoint() -> Any:
 _NEW_2027 = ("robotpy-wpimath 2026 has no {} (it is new in WPILib 2027; drivekin.interop "
              "converts the classes both robotpy generations have)")
 _PATHPLANNER = "robotpy-wpimath has no {} (it is PathPlannerLib's)"
-_NOT_CONVERTED = ("drivekin.interop does not convert {} (build robotpy's from the same "
-                  "axes)")
+_NOT_CONVERTED = ("drivekin.interop does not convert {}: build one from the same axes on "
+                  "the other side")
 _DRIVEKIN_ONLY = "robotpy-wpimath has no counterpart of {}"
 
 # ---------------------------------------------------------------------------------------
