@@ -43,12 +43,13 @@ be an ulp off 1, so each component may move by up to 4 ulps (about 9e-16; the ro
 itself equal by WPILib's equality; renormalising is not idempotent, so this holds for
 robotpy's own quaternions too). ``fromWpimath`` copies robotpy's stored quaternion
 exactly, and a drivekin Rotation3d unpacked from WPILib bytes (:mod:`drivekin.wpistruct`)
-has the bits robotpy's unpack gives. Quaternion is copied as it is, both ways. A robotpy 2026 ``Rotation2d``
-remembers the angle it was built with (``Rotation2d(3π/2).radians()`` is 4.71); drivekin,
-like WPILib 2027, keeps only (cos, sin), so its angle comes back wrapped to (−π, π]
-(−π/2 here: ``atan2(sin, cos)``). Kinematics objects carry their module geometry only:
-the module heading memory starts empty on the new object (robotpy has no getter for it;
-call ``resetHeadings`` to set it).
+has the bits robotpy's unpack gives. Quaternion is copied as it is, both ways.
+
+A robotpy 2026 ``Rotation2d`` remembers the angle it was built with
+(``Rotation2d(3π/2).radians()`` is 4.71); drivekin, like WPILib 2027, keeps only (cos,
+sin), so its angle comes back wrapped to (−π, π] (−π/2 here: ``atan2(sin, cos)``).
+Kinematics objects carry their module geometry only: the module heading memory starts
+empty on the new object (robotpy has no getter for it; call ``resetHeadings`` to set it).
 
 Sequences: a list or tuple is converted element by element into a container of the same
 kind (robotpy's ``toSwerveModuleStates`` returns a tuple: ``fromWpimath`` of it is a
@@ -379,8 +380,9 @@ def toWpimath(obj: object) -> Any:
     Every float is copied exactly (rotations as their (cos, sin) pair), except that
     robotpy's Rotation3d constructor renormalises the quaternion (each component may move
     by up to 4 ulps; see the module's docs); units are the same on both sides (m, m/s,
-    rad, rad/s). A list or tuple gives a list or tuple of converted items. A SwerveDriveKinematics becomes ``SwerveDrive{N}Kinematics`` and
-    needs N in (2, 3, 4, 6) (ValueError otherwise). TypeError for anything else, naming
+    rad, rad/s). A list or tuple gives a list or tuple of converted items. A
+    SwerveDriveKinematics becomes ``SwerveDrive{N}Kinematics`` and needs N in (2, 3, 4,
+    6) (ValueError otherwise). TypeError for anything else, naming
     its type; ImportError (saying what to install) when robotpy-wpimath is missing."""
     return _convert(obj, _to_one, "toWpimath()")
 
@@ -450,8 +452,9 @@ def fromWpimath(obj: object) -> Any:
     Every float is copied exactly; a rotation keeps its stored (cos, sin) pair, so an
     angle robotpy kept unwrapped (``Rotation2d(3π/2)``) reads back wrapped to (−π, π]
     (−π/2), and a Rotation3d its stored quaternion (ValueError if that is not a unit
-    quaternion or NaN). 3-D values stay 3-D (:func:`fromWpimath3d` flattens them). A list or tuple gives a list or tuple of converted items. Kinematics objects
-    carry their geometry only (module heading memory starts empty). TypeError for
+    quaternion or NaN). 3-D values stay 3-D (:func:`fromWpimath3d` flattens them). A
+    list or tuple gives a list or tuple of converted items. Kinematics objects carry
+    their geometry only (module heading memory starts empty). TypeError for
     anything else, naming its type."""
     return _convert(obj, _from_one, "fromWpimath()")
 

@@ -50,13 +50,13 @@ As in the struct format (:mod:`drivekin.wpistruct`), a Rotation2d is sent as its
 :meth:`~drivekin.Rotation2d.getRadians` — the wrapped value in [−π, π] — and read back
 with ``Rotation2d(value)``; a Rotation3d is sent as its stored quaternion and read back
 with ``Rotation3d(Quaternion(w, x, y, z))``, which normalises it as WPILib does (a
-missing ``q`` is the zero quaternion, which gives the identity). Encoding follows proto3: a double field equal to +0.0 is
-left out (−0.0 is written), nested messages are always written, even when all their
-fields are zero; a field or nested message missing from the input reads as 0, and
-unknown fields are skipped, as in every protobuf decoder. The descriptors equal what
-``protoc`` produces from WPILib's ``.proto`` files without their ``option java_*``
-lines. Only the kinematics geometry is serialized: an unpacked SwerveDriveKinematics
-starts with fresh heading memory.
+missing ``q`` is the zero quaternion, which gives the identity). Encoding follows
+proto3: a double field equal to +0.0 is left out (−0.0 is written), nested messages are
+always written, even when all their fields are zero; a field or nested message missing
+from the input reads as 0, and unknown fields are skipped, as in every protobuf decoder.
+The descriptors equal what ``protoc`` produces from WPILib's ``.proto`` files without
+their ``option java_*`` lines. Only the kinematics geometry is serialized: an unpacked
+SwerveDriveKinematics starts with fresh heading memory.
 
 Functions: :func:`getTypeName`, :func:`getTypeString`, :func:`getMessageClass`,
 :func:`forEachDescriptor` (describe a type, from the class or an instance);

@@ -345,9 +345,10 @@ def getNested(x: object) -> tuple[type, ...]:
     """Return the struct types nested *directly* in this one, in schema order, without
     duplicates: ``(Translation2d, Rotation2d)`` for Pose2d/Transform2d,
     ``(Translation3d, Rotation3d)`` for Pose3d/Transform3d, ``(Quaternion,)`` for
-    Rotation3d, ``(Rotation2d,)`` for the swerve module values, ``(Translation2d,)`` for MecanumDriveKinematics and
-    SwerveDriveKinematics (any N), ``()`` for the plain-double types. Their own schemas
-    must be published too; :func:`forEachNested` walks the whole tree."""
+    Rotation3d, ``(Rotation2d,)`` for the swerve module values, ``(Translation2d,)``
+    for MecanumDriveKinematics and SwerveDriveKinematics (any N), ``()`` for the
+    plain-double types. Their own schemas must be published too; :func:`forEachNested`
+    walks the whole tree."""
     e = _REPEATED.get(x if isinstance(x, type) else type(x))
     if e is not None and e.struct is not None:
         return e.struct.nested

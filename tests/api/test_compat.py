@@ -40,7 +40,10 @@ def test_old_paths_give_the_public_objects(module):
 # is tested with the class: DCMotor in tests/reference/test_dcmotor_wpilib.py, the
 # setpoint generator's values in tests/behaviour/test_setpoint.py).
 NEW_SINCE_0_1_0 = {"DCMotor", "DriveFeedforwards", "ModuleConfig", "PathConstraints",
-                   "RobotConfig", "SwerveSetpoint"}
+                   "RobotConfig", "SwerveSetpoint",
+                   # the 3-D geometry
+                   "CoordinateAxis", "CoordinateSystem", "Pose3d", "Quaternion", "Rotation3d",
+                   "Transform3d", "Translation3d", "Twist3d"}
 
 
 def test_pickle_data_covers_every_value_and_kinematics_class():
