@@ -39,7 +39,7 @@ DATA = json.loads((Path(__file__).resolve().parents[1] / "data" /
 
 # The modules whose classes follow wpimath (drivekin.setpoint and drivekin.robotconfig keep
 # PathPlannerLib's spellings; drivekin.batch has its own).
-MODULES = ("geometry", "chassis", "swervemodule", "swerve", "mecanum", "differential",
+MODULES = ("geometry", "geometry3d", "chassis", "swervemodule", "swerve", "mecanum", "differential",
            "diffswerve", "deadwheel", "odometry", "estimator", "motor", "interpolation")
 
 # semiwrap's name_transform word split (the JSON's ``rule``).
@@ -62,6 +62,11 @@ NOT_KEYWORD_CALLABLE = {
     ("Translation2d", "__init__", ("distance", "angle")): _TYPES_DECIDE,
     ("Translation2d", "__init__", ("vector",)): _TYPES_DECIDE,
     ("Rotation2d", "__init__", ("x", "y")): _TYPES_DECIDE + "; the first parameter is value",
+    **{("Rotation3d", "__init__", form): _TYPES_DECIDE + "; the parameters are roll, pitch, yaw"
+       for form in (("q",), ("axis", "angle"), ("rvec",), ("rotation_matrix",),
+                    ("initial", "final"), ("rotation",))},
+    **{("Translation3d", "__init__", form): _TYPES_DECIDE
+       for form in (("distance", "angle"), ("vector",), ("translation",))},
     ("TimeInterpolatableBuffer", "__init__", ("history_size",)):
         "the constructor is Java's createBuffer(func, history_size): func has no default "
         "(createBuffer(history_size) is the one-argument form)",
@@ -252,7 +257,9 @@ def test_every_parameter_name_is_snake_case():
             checked += 1
             names = [n for n, _, _ in sig] + _star_names(obj, cls.__name__ if name ==
                                                             "__init__" else name)
-            offenders += [f"{cls.__name__}.{name}: {n}" for n in names if snake(n) != n]
+            # A trailing underscore keeps a Python keyword usable (robotpy's from_).
+            offenders += [f"{cls.__name__}.{name}: {n}" for n in names
+                          if snake(n) != n.removesuffix("_")]
     assert checked >= 300, checked
     assert not offenders, "camelCase parameters:\n" + "\n".join(offenders)
 

@@ -480,9 +480,9 @@ def _setpoint() -> Any:
 _NEW_2027 = ("robotpy-wpimath 2026 has no {} (it is new in WPILib 2027; drivekin.interop "
              "converts the classes both robotpy generations have)")
 _PATHPLANNER = "robotpy-wpimath has no {} (it is PathPlannerLib's)"
-_NOT_CONVERTED = ("drivekin.interop does not convert {}: build one from the same axes on "
-                  "the other side")
 _DRIVEKIN_ONLY = "robotpy-wpimath has no counterpart of {}"
+_OPAQUE = ("drivekin.interop does not convert {} (robotpy-wpimath's has no accessor to read "
+           "it from; build drivekin's from the same axes)")
 
 # ---------------------------------------------------------------------------------------
 # The entries. Order within a drivetrain follows WPILib; nothing depends on it except
@@ -524,36 +524,35 @@ ENTRIES: tuple[Entry, ...] = (
                      lambda t, w: w.cls("Twist2d")(t.dx, t.dy, t.dtheta),
                      lambda t: Twist2d(t.dx, t.dy, t.dtheta)),
            example=lambda: Twist2d(0.5, 0.25, 0.125)),
-    # Geometry in 3-D (protobuf indices: WPILib's geometry3d.proto)
-    _plain(Translation3d, GEOMETRY3D_FILE, 0, ("x", "y", "z"),
-           peer=Peer("geometry", ("Translation3d",), _translation3d_to, _translation3d_from),
-           example=lambda: Translation3d(1.0, 2.0, 0.5)),
+    # Geometry in 3-D (drivekin.geometry3d; protobuf indices: WPILib's geometry3d.proto)
     Entry(Quaternion, "value", flatten=_flat_quaternion, build=Quaternion,
           struct=Struct("Quaternion", "double w;double x;double y;double z", 4),
           proto=Proto("ProtobufQuaternion", GEOMETRY3D_FILE, 1, _doubles("w", "x", "y", "z")),
           peer=Peer("geometry", ("Quaternion",),
                     lambda q, w: w.cls("Quaternion")(*_flat_quaternion(q)),
                     lambda q: Quaternion(*_quaternion_parts(q))),
-          example=lambda: Quaternion(0.5, 0.5, -0.5, 0.5)),
+          example=lambda: Quaternion(0.5, -0.25, 0.75, 0.125)),
     Entry(Rotation3d, "value",
           flatten=lambda r: _flat_quaternion(r.getQuaternion()), build=_rotation3d,
           struct=Struct("Rotation3d", "Quaternion q", 4, (Quaternion,)),
           proto=Proto("ProtobufRotation3d", GEOMETRY3D_FILE, 2,
                       (("q", 1, "ProtobufQuaternion", False),)),
           peer=Peer("geometry", ("Rotation3d",), _rotation3d_to, _rotation3d_from),
-          example=lambda: Rotation3d(0.1, -0.2, 0.5)),
-    _frame3d(Pose3d, 3, lambda: Pose3d(Translation3d(1.0, 2.0, 0.5),
-                                       Rotation3d(0.1, -0.2, 0.5))),
-    _frame3d(Transform3d, 4, lambda: Transform3d(Translation3d(0.5, -1.0, 0.25),
-                                                 Rotation3d(0.05, 0.1, 0.25))),
+          example=lambda: Rotation3d(0.25, -0.5, 0.75)),
+    _plain(Translation3d, GEOMETRY3D_FILE, 0, ("x", "y", "z"),
+           peer=Peer("geometry", ("Translation3d",), _translation3d_to, _translation3d_from),
+           example=lambda: Translation3d(1.0, 2.0, 0.5)),
+    _frame3d(Pose3d, 3, lambda: Pose3d(1.0, 2.0, 0.5, Rotation3d(0.25, -0.5, 0.75))),
+    _frame3d(Transform3d, 4, lambda: Transform3d(0.5, -1.0, 0.25,
+                                                 Rotation3d(-0.125, 0.25, 0.5))),
     _plain(Twist3d, GEOMETRY3D_FILE, 5, ("dx", "dy", "dz", "rx", "ry", "rz"),
            peer=Peer("geometry", ("Twist3d",),
                      lambda t, w: w.cls("Twist3d")(t.dx, t.dy, t.dz, t.rx, t.ry, t.rz),
                      lambda t: Twist3d(t.dx, t.dy, t.dz, t.rx, t.ry, t.rz)),
-           example=lambda: Twist3d(0.5, 0.25, 0.125, 0.1, -0.05, 0.2)),
-    Entry(CoordinateAxis, "value", no_peer=_NOT_CONVERTED,
-          example=lambda: CoordinateAxis(0.0, 0.0, 1.0)),
-    Entry(CoordinateSystem, "value", no_peer=_NOT_CONVERTED,
+           example=lambda: Twist3d(0.5, 0.25, 0.125, 0.0625, -0.125, 0.25)),
+    Entry(CoordinateAxis, "value", no_peer=_OPAQUE,
+          example=lambda: CoordinateAxis(1.0, 2.0, -0.5)),
+    Entry(CoordinateSystem, "value", no_peer=_OPAQUE,
           example=lambda: CoordinateSystem(CoordinateAxis.E(), CoordinateAxis.D(),
                                            CoordinateAxis.N())),
     # Chassis
