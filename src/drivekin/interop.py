@@ -99,17 +99,15 @@ if TYPE_CHECKING:
         MecanumDriveKinematics,
         MecanumDriveWheelPositions,
         MecanumDriveWheelVelocities,
-        SwerveDriveKinematics,
-        SwerveModulePosition,
-        SwerveModuleVelocity,
-        Twist2d,
-    )
-    from drivekin.geometry3d import (
         Pose3d,
         Quaternion,
         Rotation3d,
+        SwerveDriveKinematics,
+        SwerveModulePosition,
+        SwerveModuleVelocity,
         Transform3d,
         Translation3d,
+        Twist2d,
         Twist3d,
     )
 

@@ -26,14 +26,8 @@ if importlib.util.find_spec("grpc_tools") is None:
 
 from google.protobuf import descriptor_pb2, descriptor_pool, message_factory  # noqa: E402
 
-from drivekin import protobuf, wpistruct  # noqa: E402
-from drivekin.geometry3d import (  # noqa: E402
-    Pose3d,
-    Quaternion,
-    Rotation3d,
-    Transform3d,
-    Translation3d,
-    Twist3d,
+from drivekin import (  # noqa: E402
+    Pose3d, Quaternion, Rotation3d, Transform3d, Translation3d, Twist3d, protobuf, wpistruct,
 )
 from tests.behaviour.test_protobuf import PROTO_ROOT, as_fields, fill, same  # noqa: E402
 from tests.behaviour.test_wpistruct3d import CASES, IDS, raw_values  # noqa: E402

@@ -22,14 +22,7 @@ import pytest
 from hypothesis import given, strategies as st
 
 from drivekin import wpistruct
-from drivekin.geometry3d import (
-    Pose3d,
-    Quaternion,
-    Rotation3d,
-    Transform3d,
-    Translation3d,
-    Twist3d,
-)
+from drivekin import Pose3d, Quaternion, Rotation3d, Transform3d, Translation3d, Twist3d
 
 POSE_SCHEMA = "Translation3d translation;Rotation3d rotation"
 

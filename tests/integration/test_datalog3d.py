@@ -14,14 +14,8 @@ import wpiutil.log as wlog                                     # noqa: E402
 import wpiutil.wpistruct as ws                                 # noqa: E402
 import wpimath.geometry as wg                                  # noqa: E402
 
-from drivekin import datalog, wpistruct                        # noqa: E402
-from drivekin.geometry3d import (                              # noqa: E402
-    Pose3d,
-    Quaternion,
-    Rotation3d,
-    Transform3d,
-    Translation3d,
-    Twist3d,
+from drivekin import (  # noqa: E402
+    Pose3d, Quaternion, Rotation3d, Transform3d, Translation3d, Twist3d, datalog, wpistruct,
 )
 from tests._support.wpilog_logs import robotpy_log             # noqa: E402
 
