@@ -117,7 +117,8 @@ class Peer:
     ChassisVelocities), else under the same name. ``to(obj, wpimath)`` builds the
     installed generation's object (``wpimath.cls(name)`` takes the 2027 name) and
     ``frm(obj)`` reads either generation's (:func:`robotpy_attr` where their spellings
-    differ); both copy every float exactly."""
+    differ); both copy every float exactly, except that robotpy's Rotation3d constructor
+    renormalises what ``to`` gives it."""
     module: str
     names: tuple[str, ...]
     to: Callable[[Any, Any], Any]
