@@ -10,7 +10,7 @@
 # user hands in (Quaternion, Rotation3d(Quaternion), Rotation3d(initial, final)) is
 # normalised exactly as WPILib does. setup.py builds with -ffp-contract=off, so a*b + c is
 # never fused, and Cython keeps the parentheses.
-# Trigonometry is drivekin's own (_core/dkmath.h: sincos, atan2; asin through atan2), the
+# Trigonometry is drivekin's own (_core/dkmath.h: sincos, atan2; no asin, see rot3_y), the
 # same on every platform. exp and log (Quaternion.exp/log/pow only) are libm's.
 # Twist3d.exp and Transform3d.log are drivekin's cancellation-free forms (see there).
 
@@ -95,11 +95,6 @@ cdef inline double norm3(double x, double y, double z) noexcept nogil:
     y = y / m
     z = z / m
     return m * sqrt(x * x + y * y + z * z)
-
-cdef inline double asin_(double r) noexcept nogil:
-    # asin for |r| <= 1 through drivekin's atan2: (1 − r)(1 + r) keeps 1 − r² exact to an
-    # ulp next to ±1 (Sterbenz), so the result is within an ulp or two of libm's.
-    return atan2(r, sqrt((1.0 - r) * (1.0 + r)))
 
 # ---------------------------------------------------------------------------------------
 # Quaternion (WPILib's Quaternion.java, operation for operation)
@@ -348,11 +343,19 @@ cdef inline double rot3_x(quat_t q) noexcept nogil:
     return 0.0
 
 cdef inline double rot3_y(quat_t q) noexcept nogil:
-    # Pitch; ±π/2 once the sine reaches ±1.
+    # Pitch, ±π/2 once the sine 2(wy − zx) reaches ±1. WPILib takes asin of that sine,
+    # whose slope is infinite at ±1: a sine 1e-16 short of 1, one rounding, is 1.5e-8 rad
+    # short of π/2 (WPILib's own gimbal-lock test fails by that much on drivekin's bits).
+    # atan2 of the sine over |cos pitch|, read off the roll terms as
+    # sqrt((1 − 2(x² + y²))² + (2(wx + yz))²), is the same angle without that
+    # amplification: a few ulps everywhere.
     cdef double ratio = 2.0 * (q.w * q.y - q.z * q.x)
+    cdef double cxcy, sxcy
     if fabs(ratio) >= 1.0:
         return copysign(M_PI / 2.0, ratio)
-    return asin_(ratio)
+    cxcy = 1.0 - 2.0 * (q.x * q.x + q.y * q.y)
+    sxcy = 2.0 * (q.w * q.x + q.y * q.z)
+    return atan2(ratio, sqrt(cxcy * cxcy + sxcy * sxcy))
 
 cdef inline double rot3_z(quat_t q) noexcept nogil:
     # Yaw; at gimbal lock atan2(2wz, w² − z²).
