@@ -465,7 +465,7 @@ def _from_3d(obj: object, where: str) -> Any:
             return _from_one(found[1](obj, w), where)
     raise TypeError(f"{where} cannot convert {_qualified(obj)}: it is not a robotpy-wpimath "
                     "Pose3d, Transform3d, Translation3d or Rotation3d (fromWpimath converts "
-                    "2-D objects)")
+                    "the others, 3-D ones as they are)")
 
 
 def fromWpimath3d(obj: object) -> Any:
