@@ -243,13 +243,11 @@ def _flat_quaternion(q: Quaternion) -> tuple[float, float, float, float]:
 
 def _rotation3d_to(r: Rotation3d, w: Any) -> Any:
     q = _flat_quaternion(r.getQuaternion())
-    n2 = ((q[0] * q[0] + q[1] * q[1]) + q[2] * q[2]) + q[3] * q[3]
-    # A rotation's quaternion is a unit one, or holds NaN (a non-finite angle). The zero
-    # quaternion Rotation3d(Quaternion) leaves when the norm overflows is none: robotpy
-    # would make it the identity.
-    if n2 == n2 and not abs(n2 - 1.0) <= 1e-9:
+    # The zero quaternion that Rotation3d(Quaternion) leaves when the norm overflows (as
+    # WPILib's does) is no rotation: robotpy would take it for the identity.
+    if q == (0.0, 0.0, 0.0, 0.0):
         raise ValueError(f"toWpimath(): this {qualified(r)} stores the quaternion {q!r}, "
-                         "which is not a unit quaternion")
+                         "which is no rotation")
     return w.cls("Rotation3d")(w.cls("Quaternion")(*q))
 
 
