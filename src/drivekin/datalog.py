@@ -47,7 +47,9 @@ entry type                         values
 =================================  ======================================================
 
 Struct columns are the struct's doubles in schema order, nested structs inlined:
-``Pose2d`` → ``[x, y, θ]``, ``SwerveModulePosition`` → ``[distance m, angle rad]``,
+``Pose2d`` → ``[x, y, θ]``, ``Pose3d`` → ``[x, y, z, qw, qx, qy, qz]`` (the quaternion
+as stored: ``wpistruct.unpack`` or the class's constructor normalises it as WPILib does),
+``SwerveModulePosition`` → ``[distance m, angle rad]``,
 ``SwerveModuleVelocity`` (2026: ``SwerveModuleState``) → ``[velocity m/s, angle rad]``,
 ``MecanumDriveWheelPositions`` → ``[fl, fr, rl, rr]``; :attr:`EntryInfo.columns` names
 them. Angles come back exactly as stored (robotpy 2026 stores a Rotation2d's constructor

@@ -8,6 +8,8 @@ drivekin (WPILib 2027)                       robotpy-wpimath 2026
 ==========================================  ==========================================
 Translation2d, Rotation2d, Pose2d,           the same names in ``wpimath.geometry``
 Transform2d, Twist2d
+Translation3d, Quaternion, Rotation3d,       the same names in ``wpimath.geometry``
+Pose3d, Transform3d, Twist3d
 ChassisVelocities (vx, vy, omega)            ChassisSpeeds (vx, vy, omega)
 SwerveModuleVelocity (velocity, angle)       SwerveModuleState (speed, angle)
 SwerveModulePosition (distance, angle)       SwerveModulePosition (distance, angle)
@@ -27,17 +29,27 @@ itself under drivekin's name (``wpimath.ChassisVelocities``; swerve kinematics s
 ``front_left``, ``trackwidth``, ``nominal_voltage``, ``from_matrix``). ``toWpimath``
 builds the installed generation's objects and ``fromWpimath`` takes them: the classes are
 found by name in the installed package (the 2027 name first, in ``wpimath`` or in its
-2026 modules), and attributes are read in either spelling, so no version is consulted.
+2026 modules), and attributes are read in either spelling (``get_quaternion()``,
+``Quaternion.w``; 2026: ``getQuaternion()``, ``W()``), so no version is consulted.
 
 Units are the same on both sides (m, m/s, rad, rad/s). Every conversion is exact: each
 float is copied, never recomputed. A rotation is carried as its stored (cos, sin) pair —
 not through its angle, whose cos/sin would differ in the last bit — so a drivekin →
-wpimath → drivekin round trip returns bit-identical objects. A robotpy 2026 ``Rotation2d``
-remembers the angle it was built with (``Rotation2d(3π/2).radians()`` is 4.71); drivekin,
-like WPILib 2027, keeps only (cos, sin), so its angle comes back wrapped to (−π, π]
-(−π/2 here: ``atan2(sin, cos)``). Kinematics objects carry their module geometry only:
-the module heading memory starts empty on the new object (robotpy has no getter for it;
-call ``resetHeadings`` to set it).
+wpimath → drivekin round trip returns bit-identical objects. The one exception is a
+``Rotation3d`` going to robotpy (alone or in a Pose3d or Transform3d): robotpy can build
+one only through a constructor that renormalises, ``Rotation3d(Quaternion)``, which
+divides each component by the norm it computes, and for a unit quaternion that norm may
+be an ulp off 1, so each component may move by up to 4 ulps (about 9e-16; the rotation
+itself equal by WPILib's equality; renormalising is not idempotent, so this holds for
+robotpy's own quaternions too). ``fromWpimath`` copies robotpy's stored quaternion
+exactly, and a drivekin Rotation3d unpacked from WPILib bytes (:mod:`drivekin.wpistruct`)
+has the bits robotpy's unpack gives. Quaternion is copied as it is, both ways.
+
+A robotpy 2026 ``Rotation2d`` remembers the angle it was built with
+(``Rotation2d(3π/2).radians()`` is 4.71); drivekin, like WPILib 2027, keeps only (cos,
+sin), so its angle comes back wrapped to (−π, π] (−π/2 here: ``atan2(sin, cos)``).
+Kinematics objects carry their module geometry only: the module heading memory starts
+empty on the new object (robotpy has no getter for it; call ``resetHeadings`` to set it).
 
 Sequences: a list or tuple is converted element by element into a container of the same
 kind (robotpy's ``toSwerveModuleStates`` returns a tuple: ``fromWpimath`` of it is a
@@ -48,8 +60,12 @@ Not converted (TypeError saying so): drivekin's 2027 additions that robotpy-wpim
 lacks (ChassisAccelerations, SwerveModuleAcceleration, the wheel accelerations: robotpy
 2027 has them, but interop converts only what both generations share), dead-wheel and
 differential swerve kinematics, odometry objects (stateful: build the other library's
-odometry from converted kinematics and poses), and wpimath types drivekin has no
-counterpart for (3-D geometry, estimators, trajectories, ...).
+odometry from converted kinematics and poses), CoordinateAxis and CoordinateSystem, and
+wpimath types drivekin has no counterpart for (estimators, trajectories, ...).
+
+``fromWpimath3d`` flattens robotpy's 3-D values to drivekin's 2-D ones (as ``toPose2d``
+does); ``fromWpimath`` keeps the third dimension (a robotpy Pose3d gives a drivekin
+Pose3d).
 
 robotpy-wpimath is optional: importing drivekin or this module never imports it. The first
 conversion that needs it does, and if it is missing raises ImportError (a
@@ -83,10 +99,16 @@ if TYPE_CHECKING:
         MecanumDriveKinematics,
         MecanumDriveWheelPositions,
         MecanumDriveWheelVelocities,
+        Pose3d,
+        Quaternion,
+        Rotation3d,
         SwerveDriveKinematics,
         SwerveModulePosition,
         SwerveModuleVelocity,
+        Transform3d,
+        Translation3d,
         Twist2d,
+        Twist3d,
     )
 
 __all__ = ["fromWpimath", "fromWpimath3d", "toWpimath"]
@@ -128,7 +150,6 @@ _FLATTEN_3D: tuple[tuple[str, type, Callable[[Any, _Wpimath], Any]], ...] = (
 _WHERE: dict[str, tuple[str, tuple[str, ...]]] = {
     new: (peer.module, (new,) if new == old else (new, old))
     for _, peer in _PEERS for new, old in zip(peer.names2027, peer.names)}
-_WHERE.update((name, ("geometry", (name,))) for name, _, _ in _FLATTEN_3D)
 
 
 class _Wpimath:
@@ -232,17 +253,19 @@ def _is_drivekin(obj: object) -> bool:
     return _from_package(obj, "drivekin")
 
 
-def _conversion(obj: object) -> tuple[str, type] | None:
-    """The function that converts the robotpy-wpimath object ``obj`` (``"fromWpimath"``
-    or ``"fromWpimath3d"``) and the drivekin class it gives, or None (error messages)."""
+def _conversions(obj: object) -> list[tuple[str, type]]:
+    """The functions that convert the robotpy-wpimath object ``obj`` (``"fromWpimath"``,
+    then ``"fromWpimath3d"`` for a 3-D value it flattens) and the drivekin class each
+    gives (error messages)."""
     w = _load()
     tables: tuple[tuple[str, dict[type, tuple[type, Any]]], ...] = (
         ("fromWpimath", w.from_table()), ("fromWpimath3d", w.from_3d_table()))
+    out = []
     for function, table in tables:
         found = _lookup(table, obj)
         if found is not None:
-            return function, found[0]
-    return None
+            out.append((function, found[0]))
+    return out
 
 
 _STATEFUL = ("odometry and estimators are stateful and are not converted: build one from "
@@ -277,8 +300,6 @@ def _from_one(obj: object, where: str) -> Any:
         # robotpy 2027's classes new in WPILib 2027 (ChassisAccelerations, ...) say why.
         reason = (_STATEFUL if stateful else _NO_PEER.get(name)
                   or "drivekin has no counterpart of it")
-        if name in ("Pose3d", "Transform3d", "Translation3d", "Rotation3d"):
-            reason += " (drivekin is 2-D: fromWpimath3d() takes its 2-D part, as toPose2d does)"
     elif isinstance(obj, (list, tuple)):
         reason = "only a plain list or tuple is converted, and only one level deep"
     elif _is_drivekin(obj):
@@ -309,6 +330,18 @@ def toWpimath(obj: Pose2d) -> wpg.Pose2d: ...
 def toWpimath(obj: Transform2d) -> wpg.Transform2d: ...
 @overload
 def toWpimath(obj: Twist2d) -> wpg.Twist2d: ...
+@overload
+def toWpimath(obj: Translation3d) -> wpg.Translation3d: ...
+@overload
+def toWpimath(obj: Quaternion) -> wpg.Quaternion: ...
+@overload
+def toWpimath(obj: Rotation3d) -> wpg.Rotation3d: ...
+@overload
+def toWpimath(obj: Pose3d) -> wpg.Pose3d: ...
+@overload
+def toWpimath(obj: Transform3d) -> wpg.Transform3d: ...
+@overload
+def toWpimath(obj: Twist3d) -> wpg.Twist3d: ...
 @overload
 def toWpimath(obj: ChassisVelocities) -> wpk.ChassisSpeeds: ...
 @overload
@@ -342,10 +375,12 @@ def toWpimath(obj: object) -> Any:
     installed generation (robotpy 2026's ChassisSpeeds, or robotpy 2027's
     ChassisVelocities; the type hints name 2026's classes).
 
-    Every float is copied exactly (rotations as their (cos, sin) pair); units are the
-    same on both sides (m, m/s, rad, rad/s). A list or tuple gives a list or tuple of
-    converted items. A SwerveDriveKinematics becomes ``SwerveDrive{N}Kinematics`` and
-    needs N in (2, 3, 4, 6) (ValueError otherwise). TypeError for anything else, naming
+    Every float is copied exactly (rotations as their (cos, sin) pair), except that
+    robotpy's Rotation3d constructor renormalises the quaternion (each component may move
+    by up to 4 ulps; see the module's docs; the zero quaternion, which is no rotation, is a
+    ValueError); units are the same on both sides (m, m/s, rad, rad/s). A list or tuple gives a list or tuple of converted items. A
+    SwerveDriveKinematics becomes ``SwerveDrive{N}Kinematics`` and needs N in (2, 3, 4,
+    6) (ValueError otherwise). TypeError for anything else, naming
     its type; ImportError (saying what to install) when robotpy-wpimath is missing."""
     return _convert(obj, _to_one, "toWpimath()")
 
@@ -360,6 +395,18 @@ def fromWpimath(obj: wpg.Pose2d) -> Pose2d: ...
 def fromWpimath(obj: wpg.Transform2d) -> Transform2d: ...
 @overload
 def fromWpimath(obj: wpg.Twist2d) -> Twist2d: ...
+@overload
+def fromWpimath(obj: wpg.Translation3d) -> Translation3d: ...
+@overload
+def fromWpimath(obj: wpg.Quaternion) -> Quaternion: ...
+@overload
+def fromWpimath(obj: wpg.Rotation3d) -> Rotation3d: ...
+@overload
+def fromWpimath(obj: wpg.Pose3d) -> Pose3d: ...
+@overload
+def fromWpimath(obj: wpg.Transform3d) -> Transform3d: ...
+@overload
+def fromWpimath(obj: wpg.Twist3d) -> Twist3d: ...
 @overload
 def fromWpimath(obj: wpk.ChassisSpeeds) -> ChassisVelocities: ...
 @overload
@@ -402,8 +449,10 @@ def fromWpimath(obj: object) -> Any:
 
     Every float is copied exactly; a rotation keeps its stored (cos, sin) pair, so an
     angle robotpy kept unwrapped (``Rotation2d(3π/2)``) reads back wrapped to (−π, π]
-    (−π/2). A list or tuple gives a list or tuple of converted items. Kinematics objects
-    carry their geometry only (module heading memory starts empty). TypeError for
+    (−π/2), and a Rotation3d its stored quaternion (ValueError if that is not a unit
+    quaternion or NaN). 3-D values stay 3-D (:func:`fromWpimath3d` flattens them). A
+    list or tuple gives a list or tuple of converted items. Kinematics objects carry
+    their geometry only (module heading memory starts empty). TypeError for
     anything else, naming its type."""
     return _convert(obj, _from_one, "fromWpimath()")
 
@@ -416,7 +465,7 @@ def _from_3d(obj: object, where: str) -> Any:
             return _from_one(found[1](obj, w), where)
     raise TypeError(f"{where} cannot convert {_qualified(obj)}: it is not a robotpy-wpimath "
                     "Pose3d, Transform3d, Translation3d or Rotation3d (fromWpimath converts "
-                    "2-D objects)")
+                    "the others, 3-D ones as they are)")
 
 
 def fromWpimath3d(obj: object) -> Any:

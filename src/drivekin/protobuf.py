@@ -9,7 +9,7 @@ The bytes are what WPILib 2027 Java/C++ sends to NetworkTables and DataLog for t
 values under the type string ``proto:wpi.proto.<Message>``. A publisher must also send
 the schema: each ``.proto`` file's serialized ``FileDescriptorProto``, dependencies first,
 under the name ``proto:<file name>`` with type ``proto:FileDescriptorProto``
-(:data:`SCHEMA_TYPE`) — :func:`forEachDescriptor` yields exactly those. The two files::
+(:data:`SCHEMA_TYPE`) — :func:`forEachDescriptor` yields exactly those. The three files::
 
     wpimath/protobuf/geometry2d.proto   ProtobufTranslation2d {double x = 1; double y = 2}
                                         ProtobufRotation2d {double value = 1}
@@ -17,6 +17,15 @@ under the name ``proto:<file name>`` with type ``proto:FileDescriptorProto``
                                           {ProtobufTranslation2d translation = 1;
                                            ProtobufRotation2d rotation = 2}
                                         ProtobufTwist2d {double dx = 1; dy = 2; dtheta = 3}
+    wpimath/protobuf/geometry3d.proto   ProtobufTranslation3d {double x = 1; y = 2; z = 3}
+                                        ProtobufQuaternion {double w = 1; x = 2; y = 3;
+                                                            z = 4}
+                                        ProtobufRotation3d {ProtobufQuaternion q = 1}
+                                        ProtobufPose3d, ProtobufTransform3d
+                                          {ProtobufTranslation3d translation = 1;
+                                           ProtobufRotation3d rotation = 2}
+                                        ProtobufTwist3d {double dx = 1; dy = 2; dz = 3;
+                                                         rx = 4; ry = 5; rz = 6}
     wpimath/protobuf/kinematics.proto   (imports geometry2d.proto)
       ProtobufChassisVelocities {double vx = 1; vy = 2; omega = 3}
       ProtobufChassisAccelerations {double ax = 1; ay = 2; alpha = 3}
@@ -39,13 +48,15 @@ same.)
 
 As in the struct format (:mod:`drivekin.wpistruct`), a Rotation2d is sent as its
 :meth:`~drivekin.Rotation2d.getRadians` — the wrapped value in [−π, π] — and read back
-with ``Rotation2d(value)``. Encoding follows proto3: a double field equal to +0.0 is
-left out (−0.0 is written), nested messages are always written, even when all their
-fields are zero; a field or nested message missing from the input reads as 0, and
-unknown fields are skipped, as in every protobuf decoder. The descriptors equal what
-``protoc`` produces from WPILib's ``.proto`` files without their ``option java_*``
-lines. Only the kinematics geometry is serialized: an unpacked SwerveDriveKinematics
-starts with fresh heading memory.
+with ``Rotation2d(value)``; a Rotation3d is sent as its stored quaternion and read back
+with ``Rotation3d(Quaternion(w, x, y, z))``, which normalises it as WPILib does (a
+missing ``q`` is the zero quaternion, which gives the identity). Encoding follows
+proto3: a double field equal to +0.0 is left out (−0.0 is written), nested messages are
+always written, even when all their fields are zero; a field or nested message missing
+from the input reads as 0, and unknown fields are skipped, as in every protobuf decoder.
+The descriptors equal what ``protoc`` produces from WPILib's ``.proto`` files without
+their ``option java_*`` lines. Only the kinematics geometry is serialized: an unpacked
+SwerveDriveKinematics starts with fresh heading memory.
 
 Functions: :func:`getTypeName`, :func:`getTypeString`, :func:`getMessageClass`,
 :func:`forEachDescriptor` (describe a type, from the class or an instance);
@@ -79,13 +90,14 @@ from typing import Any, TypeVar, Union
 
 from drivekin._core import catalog
 from drivekin._core import buffers
-from drivekin._core.catalog import GEOMETRY2D_FILE, KINEMATICS_FILE
+from drivekin._core.catalog import GEOMETRY2D_FILE, GEOMETRY3D_FILE, KINEMATICS_FILE
 # ProtobufValue: any object this module can pack (the catalog's union of its classes).
 from drivekin._core.catalog import SerializableValue as ProtobufValue
 from drivekin._core.errors import type_name
 
 __all__ = [
     "GEOMETRY2D_FILE",
+    "GEOMETRY3D_FILE",
     "KINEMATICS_FILE",
     "PACKAGE",
     "PROTOBUF_TYPES",
@@ -106,8 +118,8 @@ T = TypeVar("T")
 
 #: The protobuf package of every message here.
 PACKAGE = "wpi.proto"
-# GEOMETRY2D_FILE and KINEMATICS_FILE (from the catalog): the file names WPILib 2027
-# gives its descriptors (the schema names are ``"proto:"`` + these).
+# GEOMETRY2D_FILE, GEOMETRY3D_FILE and KINEMATICS_FILE (from the catalog): the file names
+# WPILib 2027 gives its descriptors (the schema names are ``"proto:"`` + these).
 #: The NetworkTables/DataLog type of a schema entry holding a serialized FileDescriptorProto.
 SCHEMA_TYPE = "proto:FileDescriptorProto"
 
@@ -120,10 +132,11 @@ _INSTALL_HINT = 'drivekin.protobuf needs the "protobuf" package (>= 4.22): ' \
 # A field is (name, number, message type or None for double, repeated). The descriptors
 # are built from these tables, so there is no generated code and no .proto file to ship.
 
-_DEPENDENCIES: dict[str, tuple[str, ...]] = {GEOMETRY2D_FILE: (),
+# Each file after its dependencies (the descriptor pool takes them in this order).
+_DEPENDENCIES: dict[str, tuple[str, ...]] = {GEOMETRY2D_FILE: (), GEOMETRY3D_FILE: (),
                                              KINEMATICS_FILE: (GEOMETRY2D_FILE,)}
 _PROTOS = sorted((e.proto for e in catalog.ENTRIES if e.proto is not None),
-                 key=lambda p: (p.file != GEOMETRY2D_FILE, p.index))
+                 key=lambda p: p.index)
 _FIELDS: dict[str, tuple[catalog.Field, ...]] = {p.message: p.fields for p in _PROTOS}
 # file name -> (dependencies, [(message, fields), ...])
 _FILES: dict[str, tuple[tuple[str, ...], tuple[tuple[str, tuple[catalog.Field, ...]], ...]]] = {
@@ -353,8 +366,8 @@ def forEachDescriptor(x: object, fn: Callable[[str, bytes], object], *,
 def pack(obj: ProtobufValue) -> bytes:
     """Return the serialized protobuf message of ``obj`` (type
     :func:`getTypeString`). Rotation2d members are written as ``getRadians()``
-    (wrapped to [−π, π]). Raises TypeError for unsupported objects (including classes
-    instead of instances)."""
+    (wrapped to [−π, π]), Rotation3d members as their quaternion. Raises TypeError for
+    unsupported objects (including classes instead of instances)."""
     spec = _SPECS.get(type(obj))
     if spec is None:
         if isinstance(obj, type):
@@ -367,7 +380,9 @@ def pack(obj: ProtobufValue) -> bytes:
 
 def unpack(cls: type[T], data: BytesLike) -> T:
     """Decode one ``cls`` from the serialized message ``data`` (the whole buffer).
-    Returns a new object; Rotation2d members come back as ``Rotation2d(value)``.
+    Returns a new object; Rotation2d members come back as ``Rotation2d(value)``,
+    Rotation3d members as ``Rotation3d(Quaternion(w, x, y, z))`` (normalised as WPILib
+    does).
 
     TypeError: ``cls`` is not a supported class or ``data`` is not bytes-like.
     ValueError: ``data`` is not a valid message of that type (truncated or garbage

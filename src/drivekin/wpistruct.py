@@ -10,6 +10,10 @@ DataLog (type string ``struct:<Name>``, arrays ``struct:<Name>[]``):
   wrapped ``atan2`` value in [−π, π], so ``Rotation2d(4.0)`` packs 4 − 2π — and unpacked
   with ``Rotation2d(value)``. (WPILib 2026 and robotpy 2026 pack the constructor value
   unwrapped; both agree for angles already in [−π, π].)
+* a Rotation3d is packed as its stored quaternion (w, x, y, z) and unpacked with
+  ``Rotation3d(Quaternion(w, x, y, z))``, which normalises it exactly as WPILib does
+  (WPILib's C++ ``Quaternion::Normalize``: the same bits as robotpy-wpimath's unpack; a
+  zero quaternion gives the identity). A Quaternion is packed and unpacked as it is.
 
 Types, sizes and schemas (units: m, m/s, m/s², rad, rad/s, rad/s²)::
 
@@ -18,6 +22,13 @@ Types, sizes and schemas (units: m, m/s, m/s², rad, rad/s, rad/s²)::
     Rotation2d                              8   double value
     Pose2d, Transform2d                    24   Translation2d translation;Rotation2d rotation
     Twist2d                                24   double dx;double dy;double dtheta
+    Translation3d                          24   double x;double y;double z
+    Quaternion                             32   double w;double x;double y;double z
+    Rotation3d                             32   Quaternion q
+    Pose3d, Transform3d                    56   Translation3d translation;
+                                                Rotation3d rotation
+    Twist3d                                48   double dx;double dy;double dz;
+                                                double rx;double ry;double rz
     ChassisVelocities                      24   double vx;double vy;double omega
     ChassisAccelerations                   24   double ax;double ay;double alpha
     SwerveModuleVelocity                   16   double velocity;Rotation2d angle
@@ -332,10 +343,12 @@ def getSize(x: object, *, numModules: int | None = None) -> int:
 
 def getNested(x: object) -> tuple[type, ...]:
     """Return the struct types nested *directly* in this one, in schema order, without
-    duplicates: ``(Translation2d, Rotation2d)`` for Pose2d/Transform2d, ``(Rotation2d,)``
-    for the swerve module values, ``(Translation2d,)`` for MecanumDriveKinematics and
-    SwerveDriveKinematics (any N), ``()`` for the plain-double types. Their own schemas
-    must be published too; :func:`forEachNested` walks the whole tree."""
+    duplicates: ``(Translation2d, Rotation2d)`` for Pose2d/Transform2d,
+    ``(Translation3d, Rotation3d)`` for Pose3d/Transform3d, ``(Quaternion,)`` for
+    Rotation3d, ``(Rotation2d,)`` for the swerve module values, ``(Translation2d,)``
+    for MecanumDriveKinematics and SwerveDriveKinematics (any N), ``()`` for the
+    plain-double types. Their own schemas must be published too; :func:`forEachNested`
+    walks the whole tree."""
     e = _REPEATED.get(x if isinstance(x, type) else type(x))
     if e is not None and e.struct is not None:
         return e.struct.nested
@@ -366,8 +379,9 @@ def forEachNested(x: object, fn: Callable[[str, str], object], *,
 def pack(obj: StructValue) -> bytes:
     """Return the packed little-endian bytes of ``obj`` (:func:`getSize` bytes).
 
-    Rotation2d members are written as ``getRadians()`` (wrapped to [−π, π]). Raises
-    TypeError for unsupported objects (including classes instead of instances)."""
+    Rotation2d members are written as ``getRadians()`` (wrapped to [−π, π]), Rotation3d
+    members as their quaternion. Raises TypeError for unsupported objects (including
+    classes instead of instances)."""
     spec = _SPECS.get(type(obj))
     if spec is None:
         spec = _spec_of_instance(obj)
@@ -437,7 +451,8 @@ def unpack(cls: type[T], data: BytesLike, offset: int = 0, *,
            numModules: int | None = None) -> T:
     """Decode one ``cls`` from ``data[offset:]``, which must be exactly
     :func:`getSize` bytes long (as robotpy and WPILib C++ require). Returns a new object;
-    Rotation2d members come back as ``Rotation2d(value)``.
+    Rotation2d members come back as ``Rotation2d(value)``, Rotation3d members as
+    ``Rotation3d(Quaternion(w, x, y, z))`` (normalised as WPILib does).
 
     For ``cls=SwerveDriveKinematics`` the module count N is ``numModules`` if given, else
     inferred as ``(len(data) - offset) // 16`` (the length must be a multiple of 16 and

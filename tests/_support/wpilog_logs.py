@@ -15,7 +15,14 @@ import math
 import numpy as np
 import wpiutil
 import wpiutil.wpistruct as ws
-from wpimath.geometry import Pose2d, Rotation2d, Translation2d
+from wpimath.geometry import (
+    Pose2d,
+    Pose3d,
+    Rotation2d,
+    Rotation3d,
+    Translation2d,
+    Translation3d,
+)
 from wpimath.kinematics import (
     ChassisSpeeds,
     SwerveDrive4Kinematics,
@@ -110,8 +117,16 @@ def simulate_match(seconds: float = 30.0) -> dict:
     return {"t": t, "truth": np.array(truth), "modules": np.array(modules)}
 
 
+def pose3d(x: float, y: float, th: float, t: float) -> Pose3d:
+    """The planar pose (x, y, θ) at time ``t`` s as a Pose3d of a robot rocking on uneven
+    ground: a few cm of height, a few degrees of roll and pitch; its toPose2d() is
+    (x, y, θ) up to rounding."""
+    return Pose3d(Translation3d(x, y, 0.03 * (1.0 + math.sin(0.9 * t))),
+                  Rotation3d(0.05 * math.sin(0.7 * t), -0.08 * math.sin(0.5 * t + 1.0), th))
+
+
 def write_match_log(path, sim: dict, *, module_gaps=((2000, 2125),), gyro_gaps=((1000, 1015),),
-                    shuffle: bool = True) -> dict:
+                    shuffle: bool = True, poses: tuple[str, ...] = ("Pose2d",)) -> dict:
     """Write ``sim`` as a robot would log it and return what the robot computed.
 
     * ``/Drive/ModulePositions`` struct:SwerveModulePosition[] at 250 Hz (the odometry
@@ -120,7 +135,10 @@ def write_match_log(path, sim: dict, *, module_gaps=((2000, 2125),), gyro_gaps=(
       module samples late, minus ``gyro_gaps`` (index ranges in gyro samples);
     * ``/RealOutputs/Odometry/Robot`` struct:Pose2d at 50 Hz: the robot's odometry
       (robotpy-wpimath SwerveDrive4Odometry updated at every module sample from the first
-      gyro sample on, with the latest gyro sample), sampled at each gyro timestamp;
+      gyro sample on, with the latest gyro sample), sampled at each gyro timestamp; with
+      ``"Pose3d"`` in ``poses``, the same in ``/RealOutputs/Odometry/Robot3d``
+      (struct:Pose3d, as a robot on uneven ground logs it: :func:`pose3d`), and without
+      ``"Pose2d"`` only that;
     * distractors: measured module states (struct:SwerveModuleState[], 2026 name),
       chassis speeds, a camera pose (a second struct:Pose2d), battery voltage, enabled
       flag, console messages, and ``/Sim/TruePose``;
@@ -172,7 +190,10 @@ def write_match_log(path, sim: dict, *, module_gaps=((2000, 2125),), gyro_gaps=(
         e_mod = log.start("/Drive/ModulePositions", "struct:SwerveModulePosition[]", ts0,
                           SwerveModulePosition)
         e_gyro = log.start("/Drive/Gyro/YawPosition", "struct:Rotation2d", ts0, Rotation2d)
-        e_pose = log.start("/RealOutputs/Odometry/Robot", "struct:Pose2d", ts0, Pose2d)
+        e_pose = (log.start("/RealOutputs/Odometry/Robot", "struct:Pose2d", ts0, Pose2d)
+                  if "Pose2d" in poses else None)
+        e_pose3 = (log.start("/RealOutputs/Odometry/Robot3d", "struct:Pose3d", ts0, Pose3d)
+                   if "Pose3d" in poses else None)
         e_cam = log.start("/RealOutputs/Vision/Camera0/EstimatedPose", "struct:Pose2d", ts0)
         e_true = log.start("/Sim/TruePose", "struct:Pose2d", ts0)
         e_states = log.start("/RealOutputs/SwerveStates/Measured",
@@ -202,7 +223,10 @@ def write_match_log(path, sim: dict, *, module_gaps=((2000, 2125),), gyro_gaps=(
         for k, i in enumerate(pose_idx):
             ts = int(t[i])
             x, y, th = logged[k]
-            log.raw(e_pose, ws.pack(Pose2d(x, y, Rotation2d(th))), ts)
+            if e_pose is not None:
+                log.raw(e_pose, ws.pack(Pose2d(x, y, Rotation2d(th))), ts)
+            if e_pose3 is not None:
+                log.raw(e_pose3, ws.pack(pose3d(x, y, th, (ts - T0_US) / 1e6)), ts)
             tx, ty, tth = truth[i]
             log.raw(e_true, ws.pack(Pose2d(tx, ty, Rotation2d(tth))), ts)
             log.raw(e_cam, ws.pack(Pose2d(tx + 0.05, ty - 0.03, Rotation2d(tth))), ts)

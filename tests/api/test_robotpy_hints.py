@@ -260,16 +260,19 @@ def test_a_subclass_of_a_robotpy_class_gets_the_hint(wpimath_geo):
     ("Rotation3d", drivekin.Pose2d, False),
 ])
 def test_3d_objects_point_to_fromwpimath3d(name, expected, hint, wpimath_geo):
+    # Where the 2-D value belongs; fromWpimath converts them to drivekin's 3-D ones.
     value = getattr(wpimath_geo, name)()
     full = f"{type(value).__module__}.{type(value).__qualname__}"
-    assert type_name(value) == f"{full} {HINT_3D}"
+    assert type_name(value) == f"{full} {HINT}"
     assert type_name(value, expected) == (f"{full} {HINT_3D}" if hint else full)
 
 
 def test_no_false_hint_for_robotpy_types_interop_does_not_convert(wpimath_geo, wpimath_kin):
-    # 3-D values fromWpimath3d does not flatten, and robotpy's stateful classes.
+    # Coordinate frames and 2-D shapes interop does not convert, and robotpy's stateful
+    # classes.
     odometry = wpimath_kin.DifferentialDriveOdometry(wpimath_geo.Rotation2d(), 0.0, 0.0)
-    for value in (wpimath_geo.Twist3d(), wpimath_geo.Quaternion(), odometry):
+    for value in (wpimath_geo.CoordinateSystem.NWU(),
+                  wpimath_geo.Rectangle2d(wpimath_geo.Pose2d(), 1.0, 2.0), odometry):
         assert type_name(value) == f"{type(value).__module__}.{type(value).__qualname__}"
     # Containers are named as such (interop converts only their items).
     assert type_name([wpimath_geo.Pose2d()]) == "list"

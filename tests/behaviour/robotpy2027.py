@@ -14,8 +14,11 @@ Behaviour follows robotpy 2027's C++ (allwpilib 92efd74d9) where interop depends
 ``Rotation2d(x, y)`` divides by ``hypot(x, y)`` (giving (1, 0) at or below 1e-6 and for
 NaN), ``from_matrix`` copies R(0,0) and R(1,0) after its orthogonality checks (which NaN
 passes), ``DCMotor`` multiplies by the motor count and derives r, kv and kt as the C++
-constructor does. The 3-D classes are plain carriers: a Rotation3d keeps the angles it is
-given as x, y, z (robotpy derives them from a quaternion), and the 2-D projections drop z.
+constructor does, ``Rotation3d(q)`` normalises ``q`` as ``Quaternion::Normalize`` does
+(n = sqrt(((w² + x²) + y²) + z²), each component divided by n; the identity for n = 0),
+``Rotation3d(roll, pitch, yaw)`` builds its quaternion with the C++ formula, and its x, y, z
+and ``to_rotation2d`` read the angles back with the C++ formulas (Python's libm, so the
+last bits may differ from robotpy's gcem; nothing here compares them with drivekin's).
 """
 from __future__ import annotations
 
@@ -161,17 +164,59 @@ Translation3d = _plain("Translation3d", ("x", "y", "z"), readonly=True,
                        to_translation2d=lambda self: Translation2d(self._x, self._y))
 
 
-class Rotation3d(_Value):
-    # Its angles as given (robotpy derives them from a quaternion).
+class Quaternion(_Value):
+    w = _ro("w")
     x = _ro("x")
     y = _ro("y")
     z = _ro("z")
 
-    def __init__(self, roll: float = 0.0, pitch: float = 0.0, yaw: float = 0.0) -> None:
-        _set(self, x=float(roll), y=float(pitch), z=float(yaw))
+    def __init__(self, w: float = 1.0, x: float = 0.0, y: float = 0.0, z: float = 0.0) -> None:
+        _set(self, w=float(w), x=float(x), y=float(y), z=float(z))
+
+    def normalize(self) -> Quaternion:
+        w, x, y, z = self._w, self._x, self._y, self._z
+        n = math.sqrt(w * w + x * x + y * y + z * z)
+        return Quaternion() if n == 0.0 else Quaternion(w / n, x / n, y / n, z / n)
+
+
+def _euler(q: Quaternion) -> tuple[float, float, float]:
+    """Rotation3d::X(), Y(), Z() of the C++ header (gimbal lock included)."""
+    w, x, y, z = q._w, q._x, q._y, q._z
+    cxcy, sxcy = 1.0 - 2.0 * (x * x + y * y), 2.0 * (w * x + y * z)
+    roll = math.atan2(sxcy, cxcy) if cxcy * cxcy + sxcy * sxcy > 1e-20 else 0.0
+    ratio = 2.0 * (w * y - z * x)
+    pitch = math.copysign(math.pi / 2, ratio) if abs(ratio) >= 1.0 else math.asin(ratio)
+    cycz, cysz = 1.0 - 2.0 * (y * y + z * z), 2.0 * (w * z + x * y)
+    yaw = (math.atan2(cysz, cycz) if cycz * cycz + cysz * cysz > 1e-20
+           else math.atan2(2.0 * w * z, w * w - z * z))
+    return roll, pitch, yaw
+
+
+class Rotation3d(_Value):
+    x = property(lambda self: _euler(self._q)[0])
+    y = property(lambda self: _euler(self._q)[1])
+    z = property(lambda self: _euler(self._q)[2])
+
+    def __init__(self, *args: Any) -> None:
+        if len(args) == 1:
+            assert type(args[0]) is Quaternion
+            q = args[0].normalize()
+        elif len(args) == 3:
+            hr, hp, hy = (0.5 * float(a) for a in args)
+            cr, sr, cp, sp = math.cos(hr), math.sin(hr), math.cos(hp), math.sin(hp)
+            cy, sy = math.cos(hy), math.sin(hy)
+            q = Quaternion(cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy,
+                           cr * sp * cy + sr * cp * sy, cr * cp * sy - sr * sp * cy)
+        else:
+            assert not args
+            q = Quaternion()
+        _set(self, q=q)
+
+    def get_quaternion(self) -> Quaternion:
+        return self._q
 
     def to_rotation2d(self) -> Rotation2d:
-        return Rotation2d(self._z)
+        return Rotation2d(self.z)
 
 
 class _Frame3d(_Value):
@@ -197,6 +242,9 @@ class Pose3d(_Frame3d):
 
 class Transform3d(_Frame3d):
     pass
+
+
+Twist3d = _plain("Twist3d", ("dx", "dy", "dz", "rx", "ry", "rz"))
 
 
 # ---- kinematics values -------------------------------------------------------------------
@@ -303,7 +351,7 @@ class DCMotor(_Value):
 
 CLASSES: tuple[type, ...] = (
     Rotation2d, Translation2d, Pose2d, Transform2d, Twist2d,
-    Rotation3d, Translation3d, Pose3d, Transform3d,
+    Quaternion, Rotation3d, Translation3d, Pose3d, Transform3d, Twist3d,
     ChassisVelocities, ChassisAccelerations, SwerveModuleVelocity, SwerveModulePosition,
     MecanumDriveWheelVelocities, MecanumDriveWheelPositions,
     DifferentialDriveWheelVelocities, DifferentialDriveWheelPositions,

@@ -249,7 +249,10 @@ def fill(msg, values: dict) -> None:
 
 
 def test_cases_cover_every_protobuf_type():
-    assert set(protobuf.PROTOBUF_TYPES) == {c.cls for c in CASES} | {SwerveDriveKinematics}
+    # The 3-D geometry is test_protobuf3d.py's.
+    from tests.behaviour.test_protobuf3d import MESSAGES as MESSAGES_3D
+    assert set(protobuf.PROTOBUF_TYPES) == {c.cls for c in CASES} | {SwerveDriveKinematics} \
+        | set(MESSAGES_3D)
     # Everything wpistruct serializes has a protobuf message too (WPILib 2027 has
     # messages for exactly these drivekin types).
     assert set(protobuf.PROTOBUF_TYPES) == set(wpistruct.STRUCT_TYPES)

@@ -201,7 +201,8 @@ def test_descriptors_match_table(case):
 
 # Public classes that WPILib defines no struct for (no layout exists upstream in any
 # version, so drivekin does not invent one).
-NO_UPSTREAM_STRUCT = {"DeadWheelKinematics", "DifferentialSwerveModuleKinematics",
+NO_UPSTREAM_STRUCT = {"CoordinateAxis", "CoordinateSystem",
+                      "DeadWheelKinematics", "DifferentialSwerveModuleKinematics",
                       "DifferentialSwerveModuleVelocities",
                       "DifferentialSwerveMotorVelocities",
                       # PathPlannerLib's setpoint generator and its values (not WPILib's)
@@ -220,15 +221,17 @@ NOT_YET_SERIALIZED = {"DCMotor"}
 
 def test_struct_types_cover_every_value_and_kinematics_class():
     # Every public drivekin class except odometry and pose estimators (stateful, no WPILib
-    # struct) and the classes above.
+    # struct) and the classes above; the 3-D geometry is test_wpistruct3d.py's.
+    from tests.behaviour.test_wpistruct3d import CASES as CASES_3D
     public = [getattr(drivekin, n) for n in drivekin.__all__]
     expected = {c for c in public if isinstance(c, type)
                 and not isinstance(c, RobotpyClass)   # SwerveDrive4Kinematics: builds one
                 and "Odometry" not in c.__name__ and "PoseEstimator" not in c.__name__
                 and c.__name__ not in NO_UPSTREAM_STRUCT | NOT_VALUES | NOT_YET_SERIALIZED}
+    expected |= {c.cls for c in CASES_3D}
     assert set(wpistruct.STRUCT_TYPES) == expected
     assert len(wpistruct.STRUCT_TYPES) == len(expected)
-    assert {c.cls for c in CASES} | {SwerveDriveKinematics} == expected
+    assert {c.cls for c in CASES + CASES_3D} | {SwerveDriveKinematics} == expected
 
 
 @pytest.mark.parametrize("n", [2, 3, 4, 6, 8, 20])

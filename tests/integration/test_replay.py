@@ -185,6 +185,54 @@ def test_replay_poses_leaves_the_odometry_at_the_last_sample():
 
 
 # ---------------------------------------------------------------------------------------
+# A robot that logs its pose in 3-D (struct:Pose3d): compared in the plane
+
+@pytest.fixture(scope="module")
+def match3d(tmp_path_factory):
+    """6 s of the realistic log, the robot's pose logged as a Pose3d (rocking on uneven
+    ground), alone (``only``) or beside the same pose as a Pose2d (``both``)."""
+    folder = tmp_path_factory.mktemp("match3d")
+    sim = W.simulate_match(6.0)
+    out = {}
+    for name, poses in (("only", ("Pose3d",)), ("both", ("Pose2d", "Pose3d"))):
+        path = folder / f"{name}.wpilog"
+        out[name] = path, W.write_match_log(path, sim, module_gaps=((600, 625),),
+                                            gyro_gaps=((100, 103),), poses=poses)
+    return out
+
+
+def test_a_logged_pose3d_is_the_robots_pose_in_the_plane(match3d):
+    path, info = match3d["only"]
+    r = replay.replayLog(path, replay.ReplayConfig(modules=list(W.MODULES)))
+    assert r.entries["pose"] == "/RealOutputs/Odometry/Robot3d"
+    assert r.why["pose"].startswith("AdvantageKit's odometry output; not ")
+    # The Pose3d's toPose2d is the robot's planar odometry (robotpy-wpimath's) up to the
+    # rounding of its quaternion: height, roll and pitch play no part.
+    s = r.vsLogged
+    assert s.count + s.inGaps == len(info["pose_t"]) and s.inGaps == 5
+    assert s.maxPosition < 1e-9 and s.maxHeading < 1e-9
+    # The start pose is the logged one, in the plane.
+    x, y, th = info["logged"][0]
+    assert r.poses[0, :2].tolist() == pytest.approx([x, y], abs=1e-3)
+
+
+def test_a_pose2d_is_preferred_to_the_same_pose_in_3d(match3d):
+    path, info = match3d["both"]
+    r = replay.replayLog(path, replay.ReplayConfig(modules=list(W.MODULES)))
+    assert r.entries["pose"] == "/RealOutputs/Odometry/Robot"
+    assert "/RealOutputs/Odometry/Robot3d" in r.why["pose"]          # "over ..."
+    named = replay.replayLog(path, replay.ReplayConfig(
+        modules=list(W.MODULES), pose="/RealOutputs/Odometry/Robot3d",
+        truth="/RealOutputs/Odometry/Robot"))
+    assert named.entries["pose"] == "/RealOutputs/Odometry/Robot3d"
+    assert named.vsLogged.maxPosition < 1e-9 and named.vsLogged.maxHeading < 1e-9
+    # The same poses either way (the start pose is the logged one, whose Pose3d form
+    # differs from the Pose2d in the last bits of the quaternion's rounding).
+    assert named.vsTruth.maxPosition < 1e-9 and named.vsTruth.maxHeading < 1e-9
+    assert np.abs(named.poses - r.poses).max() < 1e-12
+
+
+# ---------------------------------------------------------------------------------------
 # Bad files and missing or wrong entries: one clear line, exit 1, never a traceback
 
 def _robotpy_log_with(path, entries):

@@ -7,8 +7,9 @@ Each :class:`Entry` gives the class's kind and drivetrain, and, where they exist
   the constructor from them (``build``), which both serializations use;
 * its **struct** type (name, schema, nested types; :mod:`drivekin.wpistruct`);
 * its **protobuf** message (name, file, fields; :mod:`drivekin.protobuf`);
-* its **robotpy-wpimath peer** (its class names in robotpy 2026 and 2027 and the two exact
-  converters; :mod:`drivekin.interop`), or why there is none;
+* its **robotpy-wpimath peer** (its class names in robotpy 2026 and 2027 and the two
+  converters, exact but for robotpy's renormalising Rotation3d constructor;
+  :mod:`drivekin.interop`), or why there is none;
 * for an odometry class, the **log entry type** of its position samples, by which
   :mod:`drivekin.replay` recognises a drivetrain in a log.
 * an **example**: a factory of one typical valid instance (the tests' and tools' fixture).
@@ -48,6 +49,7 @@ from drivekin.geometry3d import (
     Translation3d,
     Twist3d,
 )
+from drivekin.geometry3d import _rotation3d_from_quaternion  # type: ignore[attr-defined]
 from drivekin.motor import DCMotor
 from drivekin.mecanum import (
     MecanumDriveKinematics,
@@ -66,6 +68,7 @@ from drivekin.swervemodule import (
 #: written out for type checkers, and checked against the entries by the tests.
 SerializableValue = Union[
     Translation2d, Rotation2d, Pose2d, Transform2d, Twist2d,
+    Translation3d, Quaternion, Rotation3d, Pose3d, Transform3d, Twist3d,
     ChassisVelocities, ChassisAccelerations,
     SwerveModuleVelocity, SwerveModulePosition, SwerveModuleAcceleration,
     MecanumDriveWheelVelocities, MecanumDriveWheelPositions, MecanumDriveWheelAccelerations,
@@ -75,6 +78,7 @@ SerializableValue = Union[
 ]
 
 GEOMETRY2D_FILE = "wpimath/protobuf/geometry2d.proto"
+GEOMETRY3D_FILE = "wpimath/protobuf/geometry3d.proto"
 KINEMATICS_FILE = "wpimath/protobuf/kinematics.proto"
 
 #: A protobuf field: (name, number, message type or None for a double, repeated).
@@ -113,7 +117,8 @@ class Peer:
     ChassisVelocities), else under the same name. ``to(obj, wpimath)`` builds the
     installed generation's object (``wpimath.cls(name)`` takes the 2027 name) and
     ``frm(obj)`` reads either generation's (:func:`robotpy_attr` where their spellings
-    differ); both copy every float exactly."""
+    differ); both copy every float exactly, except that robotpy's Rotation3d constructor
+    renormalises what ``to`` gives it."""
     module: str
     names: tuple[str, ...]
     to: Callable[[Any, Any], Any]
@@ -219,6 +224,60 @@ def _translation_from(t: Any) -> Translation2d:
     return Translation2d(t.x, t.y)
 
 
+# 3-D rotations are carried as the stored quaternion. robotpy builds a Rotation3d only
+# through constructors that renormalise (Rotation3d(Quaternion) divides by the norm it
+# computes, which for a unit quaternion may be one ulp off 1), so toWpimath may move
+# each component by a few ulps; fromWpimath copies robotpy's stored quaternion as is.
+
+def _quaternion_parts(q: Any) -> tuple[float, float, float, float]:
+    # robotpy 2027's Quaternion has the properties w, x, y, z; 2026's the methods W() ...
+    w = getattr(q, "w", _MISSING)
+    if w is _MISSING:
+        return (q.W(), q.X(), q.Y(), q.Z())
+    return (w, q.x, q.y, q.z)
+
+
+def _flat_quaternion(q: Quaternion) -> tuple[float, float, float, float]:
+    return (q.getW(), q.getX(), q.getY(), q.getZ())
+
+
+def _rotation3d_to(r: Rotation3d, w: Any) -> Any:
+    q = _flat_quaternion(r.getQuaternion())
+    # The zero quaternion that Rotation3d(Quaternion) leaves when the norm overflows (as
+    # WPILib's does) is no rotation: robotpy would take it for the identity.
+    if q == (0.0, 0.0, 0.0, 0.0):
+        raise ValueError(f"toWpimath(): this {qualified(r)} stores the quaternion {q!r}, "
+                         "which is no rotation")
+    return w.cls("Rotation3d")(w.cls("Quaternion")(*q))
+
+
+def _rotation3d_from(r: Any) -> Rotation3d:
+    q = _quaternion_parts(robotpy_attr(r, "get_quaternion", "getQuaternion")())
+    try:
+        return _rotation3d_from_quaternion(*q)  # type: ignore[no-any-return]
+    except ValueError:
+        raise ValueError(f"fromWpimath(): this {qualified(r)} stores the quaternion {q!r}, "
+                         "which is not a unit quaternion") from None
+
+
+def _translation3d_to(t: Translation3d, w: Any) -> Any:
+    return w.cls("Translation3d")(t.x, t.y, t.z)
+
+
+def _translation3d_from(t: Any) -> Translation3d:
+    return Translation3d(t.x, t.y, t.z)
+
+
+def _frame3d_peer(cls: type) -> Peer:
+    # Pose3d and Transform3d: (translation, rotation) on both sides.
+    name = cls.__name__
+    return Peer("geometry", (name,),
+                lambda p, w: w.cls(name)(_translation3d_to(p.getTranslation(), w),
+                                         _rotation3d_to(p.getRotation(), w)),
+                lambda p: cls(_translation3d_from(p.translation()),
+                              _rotation3d_from(p.rotation())))
+
+
 #: robotpy-wpimath's SwerveDriveNKinematics (2026 and 2027).
 SWERVE_MODULE_COUNTS = (2, 3, 4, 6)
 
@@ -282,6 +341,30 @@ _T = Translation2d
 
 def _flat_pose(p: Any) -> tuple[float, ...]:
     return (p.getX(), p.getY(), p.getRotation().getRadians())
+
+
+_POSE3D_FIELDS: tuple[Field, ...] = (("translation", 1, "ProtobufTranslation3d", False),
+                                     ("rotation", 2, "ProtobufRotation3d", False))
+_POSE3D_SCHEMA = "Translation3d translation;Rotation3d rotation"
+
+
+def _flat_pose3d(p: Any) -> tuple[float, ...]:
+    return (p.getX(), p.getY(), p.getZ(), *_flat_quaternion(p.getRotation().getQuaternion()))
+
+
+def _rotation3d(w: float, x: float, y: float, z: float) -> Rotation3d:
+    # As WPILib unpacks one: through Rotation3d(Quaternion), which normalises.
+    return Rotation3d(Quaternion(w, x, y, z))
+
+
+def _frame3d(cls: type, index: int, example: Callable[[], Any]) -> Entry:
+    return Entry(cls, "value", flatten=_flat_pose3d,
+                 build=lambda x, y, z, w, i, j, k: cls(Translation3d(x, y, z),
+                                                       _rotation3d(w, i, j, k)),
+                 struct=Struct(cls.__name__, _POSE3D_SCHEMA, 7, (Translation3d, Rotation3d)),
+                 proto=Proto(f"Protobuf{cls.__name__}", GEOMETRY3D_FILE, index,
+                             _POSE3D_FIELDS),
+                 peer=_frame3d_peer(cls), example=example)
 
 
 def _flat_translations(ts: tuple[Translation2d, ...]) -> tuple[float, ...]:
@@ -397,7 +480,6 @@ _NEW_2027 = ("robotpy-wpimath 2026 has no {} (it is new in WPILib 2027; drivekin
              "converts the classes both robotpy generations have)")
 _PATHPLANNER = "robotpy-wpimath has no {} (it is PathPlannerLib's)"
 _DRIVEKIN_ONLY = "robotpy-wpimath has no counterpart of {}"
-_GEOMETRY_3D = "drivekin.interop does not convert {} yet (the 3-D conversions are to come)"
 _OPAQUE = ("drivekin.interop does not convert {} (robotpy-wpimath's has no accessor to read "
            "it from; build drivekin's from the same axes)")
 
@@ -441,19 +523,32 @@ ENTRIES: tuple[Entry, ...] = (
                      lambda t, w: w.cls("Twist2d")(t.dx, t.dy, t.dtheta),
                      lambda t: Twist2d(t.dx, t.dy, t.dtheta)),
            example=lambda: Twist2d(0.5, 0.25, 0.125)),
-    # 3-D geometry (drivekin.geometry3d)
-    Entry(Quaternion, "value", no_peer=_GEOMETRY_3D,
+    # Geometry in 3-D (drivekin.geometry3d; protobuf indices: WPILib's geometry3d.proto)
+    Entry(Quaternion, "value", flatten=_flat_quaternion, build=Quaternion,
+          struct=Struct("Quaternion", "double w;double x;double y;double z", 4),
+          proto=Proto("ProtobufQuaternion", GEOMETRY3D_FILE, 1, _doubles("w", "x", "y", "z")),
+          peer=Peer("geometry", ("Quaternion",),
+                    lambda q, w: w.cls("Quaternion")(*_flat_quaternion(q)),
+                    lambda q: Quaternion(*_quaternion_parts(q))),
           example=lambda: Quaternion(0.5, -0.25, 0.75, 0.125)),
-    Entry(Rotation3d, "value", no_peer=_GEOMETRY_3D,
+    Entry(Rotation3d, "value",
+          flatten=lambda r: _flat_quaternion(r.getQuaternion()), build=_rotation3d,
+          struct=Struct("Rotation3d", "Quaternion q", 4, (Quaternion,)),
+          proto=Proto("ProtobufRotation3d", GEOMETRY3D_FILE, 2,
+                      (("q", 1, "ProtobufQuaternion", False),)),
+          peer=Peer("geometry", ("Rotation3d",), _rotation3d_to, _rotation3d_from),
           example=lambda: Rotation3d(0.25, -0.5, 0.75)),
-    Entry(Translation3d, "value", no_peer=_GEOMETRY_3D,
-          example=lambda: Translation3d(1.0, 2.0, 0.5)),
-    Entry(Pose3d, "value", no_peer=_GEOMETRY_3D,
-          example=lambda: Pose3d(1.0, 2.0, 0.5, Rotation3d(0.25, -0.5, 0.75))),
-    Entry(Transform3d, "value", no_peer=_GEOMETRY_3D,
-          example=lambda: Transform3d(0.5, -1.0, 0.25, Rotation3d(-0.125, 0.25, 0.5))),
-    Entry(Twist3d, "value", no_peer=_GEOMETRY_3D,
-          example=lambda: Twist3d(0.5, 0.25, 0.125, 0.0625, -0.125, 0.25)),
+    _plain(Translation3d, GEOMETRY3D_FILE, 0, ("x", "y", "z"),
+           peer=Peer("geometry", ("Translation3d",), _translation3d_to, _translation3d_from),
+           example=lambda: Translation3d(1.0, 2.0, 0.5)),
+    _frame3d(Pose3d, 3, lambda: Pose3d(1.0, 2.0, 0.5, Rotation3d(0.25, -0.5, 0.75))),
+    _frame3d(Transform3d, 4, lambda: Transform3d(0.5, -1.0, 0.25,
+                                                 Rotation3d(-0.125, 0.25, 0.5))),
+    _plain(Twist3d, GEOMETRY3D_FILE, 5, ("dx", "dy", "dz", "rx", "ry", "rz"),
+           peer=Peer("geometry", ("Twist3d",),
+                     lambda t, w: w.cls("Twist3d")(t.dx, t.dy, t.dz, t.rx, t.ry, t.rz),
+                     lambda t: Twist3d(t.dx, t.dy, t.dz, t.rx, t.ry, t.rz)),
+           example=lambda: Twist3d(0.5, 0.25, 0.125, 0.0625, -0.125, 0.25)),
     Entry(CoordinateAxis, "value", no_peer=_OPAQUE,
           example=lambda: CoordinateAxis(1.0, 2.0, -0.5)),
     Entry(CoordinateSystem, "value", no_peer=_OPAQUE,

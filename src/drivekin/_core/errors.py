@@ -20,9 +20,9 @@ def type_name(obj: object, expected: type | None = None) -> str:
     so a robotpy ``wpimath.geometry._geometry.Translation2d`` passed where drivekin's
     Translation2d belongs is not reported as "got Translation2d". A robotpy-wpimath
     object that :mod:`drivekin.interop` converts also gets the call that converts it
-    (``fromWpimath``, or ``fromWpimath3d`` for a 3-D one) — when ``expected`` is given,
-    only if that call gives an ``expected`` (a robotpy Pose2d where a Rotation2d belongs
-    gets no hint).
+    (``fromWpimath``, or ``fromWpimath3d`` for a 3-D one where the 2-D value belongs) —
+    when ``expected`` is given, only a call that gives an ``expected`` (a robotpy Pose2d
+    where a Rotation2d belongs gets no hint).
     """
     t = type(obj)
     module = getattr(t, "__module__", None) or ""
@@ -33,30 +33,29 @@ def type_name(obj: object, expected: type | None = None) -> str:
 
 
 def _robotpy_hint(obj: object, expected: type | None) -> str:
-    found = _robotpy_conversion(obj)
-    if found is None:
+    found = [(function, result) for function, result in _robotpy_conversions(obj)
+             if expected is None or issubclass(result, expected)]
+    if not found:
         return ""
-    function, result = found
-    if expected is not None and not issubclass(result, expected):
-        return ""
+    function = found[0][0]
     if function == "fromWpimath3d":
         return (" (a robotpy-wpimath 3-D object: convert its 2-D part with "
                 "drivekin.interop.fromWpimath3d(value))")
     return " (a robotpy-wpimath object: convert it with drivekin.interop.fromWpimath(value))"
 
 
-def _robotpy_conversion(obj: object) -> tuple[str, type] | None:
-    """The drivekin.interop function that converts ``obj`` and the drivekin class it
-    returns, or None: interop's own tables, searched as interop searches them."""
+def _robotpy_conversions(obj: object) -> list[tuple[str, type]]:
+    """The drivekin.interop functions that convert ``obj`` and the drivekin class each
+    returns: interop's own tables, searched as interop searches them."""
     modules = ((getattr(k, "__module__", None) or "") for k in type(obj).__mro__)
     if not any(m == "wpimath" or m.startswith("wpimath.") for m in modules):
-        return None        # not robotpy's: never import anything on this error path
+        return []          # not robotpy's: never import anything on this error path
     try:
         from drivekin import interop
 
-        return interop._conversion(obj)
+        return interop._conversions(obj)
     except Exception:      # robotpy-wpimath missing or broken: a message without a hint
-        return None
+        return []
 
 
 def wrong_type(obj: object, expected: type, name: str) -> TypeError:

@@ -7,7 +7,7 @@ and SI units with its timestamps:
 * ``positions``: swerve (N, M, 2) ``[distance m, angle rad]``, mecanum (N, 4) m,
   differential (N, 2) ``[left, right]`` m;
 * ``gyro``: (N,) rad;
-* ``pose``: (N, 3) ``[x m, y m, θ rad]``.
+* ``pose``: (N, 3) ``[x m, y m, θ rad]`` (a logged Pose3d in the plane: its toPose2d).
 
 Names are compared after :func:`fold` (case and underscores ignored), so AdvantageKit's
 ``DrivePositionRad`` and robotpy-pykit's ``drive_position_rad`` are the same key, and a
@@ -30,6 +30,7 @@ import numpy as np
 
 from drivekin._core import catalog
 from drivekin.datalog import DataLogError, EntryInfo, LogData
+from drivekin.geometry3d import Pose3d
 
 REPLAY_PREFIX = "/drivekin/"
 
@@ -642,14 +643,32 @@ def pose_score(name: str) -> tuple[int, str]:
     return 0, "no hint in the name"
 
 
-def _find_struct_pose(log: LogData, units: Options) -> list[Signal]:
-    out = []
-    for e in _live(log):
-        if e.type == "struct:Pose2d":
-            t, v = log.values(e.name)
-            why = pose_score(e.name)[1]
-            out.append(Signal("pose", t, v, (e.name,), "Pose2d", units="m; rad", why=why))
+def _planar(rows: np.ndarray) -> np.ndarray:
+    """Pose3d struct rows (N, 7) ``[x, y, z, qw, qx, qy, qz]`` in the plane, (N, 3)
+    ``[x, y, θ]``: each unpacked as WPILib unpacks it (the quaternion normalised), then
+    its ``toPose2d()`` (x, y and the rotation about z)."""
+    build = catalog.BY_CLASS[Pose3d].build
+    assert build is not None
+    out = np.empty((len(rows), 3))
+    for i, row in enumerate(rows.tolist()):
+        p = build(*row).toPose2d()
+        out[i] = (p.getX(), p.getY(), p.getRotation().getRadians())
     return out
+
+
+def _find_struct_pose(type_string: str, layout: str, units_text: str,
+                      planar: Callable[[np.ndarray], np.ndarray] | None
+                      ) -> Callable[[LogData, Options], list[Signal]]:
+    def find(log: LogData, units: Options) -> list[Signal]:
+        out = []
+        for e in _live(log):
+            if e.type == type_string:
+                t, v = log.values(e.name)
+                why = pose_score(e.name)[1]
+                out.append(Signal("pose", t, v if planar is None else planar(v), (e.name,),
+                                  layout, units=units_text, why=why))
+        return out
+    return find
 
 
 def _find_field2d_pose(log: LogData, units: Options) -> list[Signal]:
@@ -708,7 +727,11 @@ LAYOUTS: tuple[Layout, ...] = (
     Layout("CTRE DriveState", "pose", "CTRE's NT:/DriveState/Pose with DriveState/Timestamp",
            "m; rad; timestamps s", _find_ctre_pose),
     Layout("Pose2d", "pose", "struct:Pose2d entries (AdvantageKit Odometry/Robot, CTRE "
-           "DriveState/Pose, PathPlanner currentPose)", "m; rad", _find_struct_pose),
+           "DriveState/Pose, PathPlanner currentPose)", "m; rad",
+           _find_struct_pose("struct:Pose2d", "Pose2d", "m; rad", None)),
+    Layout("Pose3d", "pose", "struct:Pose3d entries (a 3-D pose estimate), compared in the "
+           "plane", "m; rad (x, y and yaw: toPose2d)",
+           _find_struct_pose("struct:Pose3d", "Pose3d", "m; rad (toPose2d)", _planar)),
     Layout("Field2d double[3]", "pose", "SmartDashboard Field2d (legacy double[3])",
            "m; deg", _find_field2d_pose),
 )

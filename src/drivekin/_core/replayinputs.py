@@ -173,16 +173,18 @@ def _pose(log: LogData, cfg: ReplayConfig, units: layouts.Options, exclude: set[
         hits = [s for s in cands if info.name in s.entries]
         if not hits:
             raise DataLogError(f"--pose {info.name!r} has type {info.type}, expected "
-                               f"struct:Pose2d or a Field2d double[3]")
+                               f"struct:Pose2d, struct:Pose3d or a Field2d double[3]")
         return hits[0], "named with --pose"
     usable = [s for s in cands if layouts.pose_score(s.entries[0])[0] > -10]
     if not usable:
         return None, ("no pose entry" if not cands else
                       f"none of {', '.join(s.source for s in cands)} is the robot's pose "
                       f"(name one with --pose)")
+    # On equal names: CTRE's clock over its Pose2d read plainly, a 2-D pose over a 3-D
+    # one (both the robot's own, the replay is planar).
     chosen, why = _choose(usable, "pose", "--pose",
                           lambda s: (layouts.pose_score(s.entries[0])[0],
-                                     s.layout == "CTRE DriveState"))
+                                     s.layout == "CTRE DriveState", s.layout != "Pose3d"))
     rejected = [f"{s.source} ({layouts.pose_score(s.entries[0])[1].split(':')[0]})"
                 for s in cands if layouts.pose_score(s.entries[0])[0] <= -10]
     if rejected:
@@ -196,4 +198,4 @@ def _named_pose(log: LogData, name: str, option: str, opts: layouts.Options) -> 
         if info.name in s.entries:
             return s
     raise DataLogError(f"{option} {info.name!r} has type {info.type}, expected "
-                       f"struct:Pose2d or a Field2d double[3]")
+                       f"struct:Pose2d, struct:Pose3d or a Field2d double[3]")

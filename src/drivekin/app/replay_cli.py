@@ -84,10 +84,12 @@ def add_log_options(p: argparse.ArgumentParser, verb: str) -> None:
                    help="auto (default): replay the odometry thread's high-rate samples "
                         "when the log holds them (AdvantageKit OdometryTimestamps); cycle: "
                         "the once-per-loop values")
-    p.add_argument("--pose", metavar="NAME", help="the robot's logged pose (struct:Pose2d)")
+    p.add_argument("--pose", metavar="NAME",
+                   help="the robot's logged pose (struct:Pose2d, or struct:Pose3d compared "
+                        "in the plane)")
     p.add_argument("--truth", metavar="NAME",
-                   help="a second struct:Pose2d entry to compare with (e.g. a simulation's "
-                        "true pose)")
+                   help="a second struct:Pose2d or struct:Pose3d entry to compare with (e.g. "
+                        "a simulation's true pose)")
     p.add_argument("--module", type=_point("--module", 2), action="append", metavar="X,Y",
                    help="module (swerve) or wheel (mecanum: FL, FR, RL, RR) offset from the "
                         "robot centre in m, once per module in the log's order; default: "

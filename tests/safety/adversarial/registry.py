@@ -981,7 +981,7 @@ PROTOBUF = {  # function name -> Sig (receiver-less)
                S(Type(Pose2d), Bytes(lambda: bytearray(_pose_message())))],
 }
 PROTOBUF_NONCALLABLE = {"PROTOBUF_TYPES", "ProtobufValue", "PACKAGE", "GEOMETRY2D_FILE",
-                        "KINEMATICS_FILE", "SCHEMA_TYPE"}
+                        "GEOMETRY3D_FILE", "KINEMATICS_FILE", "SCHEMA_TYPE"}
 
 class SettingsFile(Kind):
     """The path of a valid PathPlanner settings.json (written once per process)."""
