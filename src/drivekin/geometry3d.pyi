@@ -220,6 +220,20 @@ class Rotation3d:
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def x_degrees(self) -> float:
+        """Counter-clockwise rotation about the X axis (roll), degrees (``x`` in rad)."""
+    @property
+    def y_degrees(self) -> float:
+        """Counter-clockwise rotation about the Y axis (pitch), degrees (``y`` in rad)."""
+    @property
+    def z_degrees(self) -> float:
+        """Counter-clockwise rotation about the Z axis (yaw), degrees (``z`` in rad)."""
+    @property
+    def angle_degrees(self) -> float:
+        """Angle of the rotation about its axis, degrees (``angle`` in rad)."""
+
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
     axis = getAxis
     from_degrees = fromDegrees
@@ -318,6 +332,21 @@ class Translation3d:
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
     def __iter__(self) -> Iterator[float]: ...
+
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def x_feet(self) -> float:
+        """X component of the translation, ft (``x`` in m)."""
+    @property
+    def y_feet(self) -> float:
+        """Y component of the translation, ft (``y`` in m)."""
+    @property
+    def z_feet(self) -> float:
+        """Z component of the translation, ft (``z`` in m)."""
+    def distance_feet(self, other: Translation3d, /) -> float:
+        """Return the distance to ``other``, ft (``getDistance(other)`` in m)."""
+    def norm_feet(self) -> float:
+        """Return the distance from the origin, ft (``getNorm()`` in m)."""
 
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
     distance = getDistance
@@ -435,6 +464,22 @@ class Pose3d(_Frame3d):
     def __add__(self, other: Transform3d, /) -> Pose3d: ...
     def __sub__(self, other: Pose3d, /) -> Transform3d: ...
 
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @staticmethod
+    def from_matrix(matrix: npt.NDArray[np.float64]) -> Pose3d:
+        """Return the pose of a 4×4 homogeneous matrix ``[[R, t], [0, 0, 0, 1]]`` in m (a
+        float64 numpy array): ``Pose3d(matrix)``. ValueError unless the last row is exactly
+        [0, 0, 0, 1] and R is special orthogonal."""
+    @property
+    def x_feet(self) -> float:
+        """X component of the position, ft (``x`` in m)."""
+    @property
+    def y_feet(self) -> float:
+        """Y component of the position, ft (``y`` in m)."""
+    @property
+    def z_feet(self) -> float:
+        """Z component of the position, ft (``z`` in m)."""
+
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
     from_feet = fromFeet
     relative_to = relativeTo
@@ -478,6 +523,22 @@ class Transform3d(_Frame3d):
         motion; the inverse of exp). Exact to a few ulps at every rotation angle, where
         WPILib's closed form cancels below about 1e-3 rad."""
     def __add__(self, other: Transform3d, /) -> Transform3d: ...
+
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @staticmethod
+    def from_matrix(matrix: npt.NDArray[np.float64]) -> Transform3d:
+        """Return the transform of a 4×4 homogeneous matrix ``[[R, t], [0, 0, 0, 1]]`` in m (a
+        float64 numpy array): ``Transform3d(matrix)``. ValueError unless the last row is
+        exactly [0, 0, 0, 1] and R is special orthogonal."""
+    @property
+    def x_feet(self) -> float:
+        """X component of the translation, ft (``x`` in m)."""
+    @property
+    def y_feet(self) -> float:
+        """Y component of the translation, ft (``y`` in m)."""
+    @property
+    def z_feet(self) -> float:
+        """Z component of the translation, ft (``z`` in m)."""
 
 @final
 class Twist3d:
@@ -534,6 +595,38 @@ class Twist3d:
         (1 ft = 0.3048 m, same bits)."""
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
+
+    # robotpy 2027's names without a Java counterpart (drivekin._core.robotpyextras).
+    @property
+    def dx_feet(self) -> float:
+        """Change along the start frame's x axis, ft (``dx`` in m); assignable."""
+    @dx_feet.setter
+    def dx_feet(self, value: float) -> None: ...
+    @property
+    def dy_feet(self) -> float:
+        """Change along the start frame's y axis, ft (``dy`` in m); assignable."""
+    @dy_feet.setter
+    def dy_feet(self, value: float) -> None: ...
+    @property
+    def dz_feet(self) -> float:
+        """Change along the start frame's z axis, ft (``dz`` in m); assignable."""
+    @dz_feet.setter
+    def dz_feet(self, value: float) -> None: ...
+    @property
+    def rx_degrees(self) -> float:
+        """Rotation vector's x component, degrees (``rx`` in rad); assignable."""
+    @rx_degrees.setter
+    def rx_degrees(self, value: float) -> None: ...
+    @property
+    def ry_degrees(self) -> float:
+        """Rotation vector's y component, degrees (``ry`` in rad); assignable."""
+    @ry_degrees.setter
+    def ry_degrees(self, value: float) -> None: ...
+    @property
+    def rz_degrees(self) -> float:
+        """Rotation vector's z component, degrees (``rz`` in rad); assignable."""
+    @rz_degrees.setter
+    def rz_degrees(self, value: float) -> None: ...
 
     # robotpy 2027's spellings (drivekin._core.pynames; scripts/stub_aliases.py)
     from_feet = fromFeet

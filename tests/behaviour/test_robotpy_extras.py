@@ -31,9 +31,9 @@ from drivekin._core.robotpyextras import EXTRAS, install_extras
 
 TABLE = json.loads((Path(__file__).parents[1] / "data" / "robotpy2027-names.json")
                    .read_text(encoding="utf-8"))["classes"]
-# The 2-D classes of the table that drivekin has, by drivekin's name.
+# The classes of the table that drivekin has, by drivekin's name.
 CLASSES = {c["drivekinName"]: c for c in TABLE.values()
-           if not c["threeD"] and c["drivekinName"] and hasattr(drivekin, c["drivekinName"])}
+           if c["drivekinName"] and hasattr(drivekin, c["drivekinName"])}
 
 FT = Fraction(3048, 10000)           # m per ft, exactly
 DEG = Fraction(math.pi) / 180        # rad per degree, with the double π of the units library
@@ -83,7 +83,8 @@ def test_every_robotpy_only_name_is_an_extra():
         if names:
             expected[name] = names
     assert set(expected) >= {"Rotation2d", "Translation2d", "ChassisVelocities",
-                             "SwerveModulePosition", "DifferentialDriveWheelAccelerations"}
+                             "SwerveModulePosition", "DifferentialDriveWheelAccelerations",
+                             "Rotation3d", "Translation3d", "Pose3d", "Transform3d", "Twist3d"}
     missing = sorted(f"{c}.{n}" for c, names in expected.items()
                      for n in names - set(EXTRAS.get(c, ())))
     assert not missing, f"robotpy 2027 names missing from EXTRAS: {missing}"
@@ -147,6 +148,10 @@ SIGNATURES = {
     # A lambda without py::arg: robotpy names no parameter.
     ("Translation2d", "distance_feet"): [("self", REQUIRED), ("other", REQUIRED)],
     ("Translation2d", "norm_feet"): [("self", REQUIRED)],
+    ("Pose3d", "from_matrix"): [("matrix", REQUIRED)],
+    ("Transform3d", "from_matrix"): [("matrix", REQUIRED)],
+    ("Translation3d", "distance_feet"): [("self", REQUIRED), ("other", REQUIRED)],
+    ("Translation3d", "norm_feet"): [("self", REQUIRED)],
 }
 
 
@@ -188,6 +193,8 @@ FIELDS = {
     "MecanumDriveWheelAccelerations": ("frontLeft", "frontRight", "rearLeft", "rearRight"),
     "DifferentialDriveWheelVelocities": ("left", "right"),
     "DifferentialDriveWheelAccelerations": ("left", "right"),
+    "Translation3d": ("x", "y", "z"), "Pose3d": ("x", "y", "z", ROT),
+    "Transform3d": ("x", "y", "z", ROT), "Twist3d": ("dx", "dy", "dz", "rx", "ry", "rz"),
 }
 PEER_CLASS = {"ChassisVelocities": "ChassisSpeeds", "SwerveModuleVelocity": "SwerveModuleState",
               "MecanumDriveWheelVelocities": "MecanumDriveWheelSpeeds",
@@ -198,6 +205,10 @@ _WHEELS = [("front_left", "frontLeft"), ("front_right", "frontRight"),
 PROPERTIES = [
     *(Prop(c, f"{a}_feet", a, FT, (f"{a}_feet", a))
       for c in ("Translation2d", "Pose2d", "Transform2d") for a in ("x", "y")),
+    *(Prop(c, f"{a}_feet", a, FT, (f"{a}_feet", a))
+      for c in ("Translation3d", "Pose3d", "Transform3d") for a in ("x", "y", "z")),
+    *(Prop("Twist3d", f"{a}_feet", a, FT, (f"{a}_feet", a)) for a in ("dx", "dy", "dz")),
+    *(Prop("Twist3d", f"{a}_degrees", a, DEG, (f"{a}_degrees", a)) for a in ("rx", "ry", "rz")),
     Prop("Twist2d", "dx_feet", "dx", FT, ("dx_feet", "dx")),
     Prop("Twist2d", "dy_feet", "dy", FT, ("dy_feet", "dy")),
     Prop("Twist2d", "dtheta_degrees", "dtheta", DEG, ("dtheta_degrees", "dtheta")),
@@ -223,18 +234,25 @@ READONLY = [p for p in PROPERTIES if p not in WRITABLE]
 prop_id = "{0.cls}.{0.name}".format
 
 
+# Rotation3d's angles in degrees read computed values (Euler angles, the rotation angle):
+# checked on their own below.
+ROTATION3D = ("x_degrees", "y_degrees", "z_degrees", "angle_degrees")
+
+
 def test_every_property_is_described_here():
-    assert {(p.cls, p.name) for p in PROPERTIES} == {
-        (c, n) for c, members in EXTRAS.items() for n, v in members.items()
-        if isinstance(v, property)}
+    assert {(p.cls, p.name) for p in PROPERTIES} | {("Rotation3d", n) for n in ROTATION3D} \
+        == {(c, n) for c, members in EXTRAS.items() for n, v in members.items()
+            if isinstance(v, property)}
     assert {(p.cls, p.name) for p in READONLY} == {
-        (c, n) for c in ("Translation2d", "Pose2d", "Transform2d") for n in ("x_feet", "y_feet")}
+        (c, n) for c in ("Translation2d", "Pose2d", "Transform2d") for n in ("x_feet", "y_feet")
+    } | {(c, f"{a}_feet") for c in ("Translation3d", "Pose3d", "Transform3d") for a in "xyz"}
 
 
 def build(ns, rotation, cls: str, field: str, value: float):
     """An instance of ``cls`` from ``ns`` (drivekin, or robotpy-wpimath 2026 with its own
     class name) with ``field`` = ``value`` and distinct values elsewhere."""
-    args = [rotation(0.1) if f == ROT else value if f == field else 0.25 * (i + 1)
+    rot = ns.Rotation3d(0.1, 0.2, 0.3) if cls.endswith("3d") else rotation(0.1)
+    args = [rot if f == ROT else value if f == field else 0.25 * (i + 1)
             for i, f in enumerate(FIELDS[cls])]
     return getattr(ns, PEER_CLASS.get(cls, cls) if ns is not drivekin else cls)(*args)
 
@@ -246,6 +264,9 @@ def si_fields(obj, cls: str) -> tuple[float, ...]:
 def state(obj, cls: str) -> bytes:
     """The bits of every field of ``obj``, its rotation's cos and sin included."""
     rot = rotation_of(obj) if ROT in FIELDS[cls] else None
+    if cls.endswith("3d") and rot is not None:
+        q = rot.getQuaternion()
+        return bits(*si_fields(obj, cls), q.getW(), q.getX(), q.getY(), q.getZ())
     return bits(*si_fields(obj, cls), *((rot.getCos(), rot.getSin()) if rot else ()))
 
 
@@ -570,4 +591,59 @@ def test_from_matrix_bad_input(cls, shape, bad, error, match):
     bad = {"eye": "eye", "list": eye.tolist(), "int64": eye.astype(np.int64),
            "shape": np.eye(5 - shape[0])}.get(bad, bad)
     with pytest.raises(error, match=match):
+        getattr(drivekin, cls).from_matrix(bad)
+
+
+# ---------------------------------------------------------------------------------------
+# The 3-D classes' own extras
+
+@pytest.mark.parametrize("name", ROTATION3D)
+@pytest.mark.parametrize("rpy", [(0.1, -0.2, 0.3), (-3.0, 1.2, 2.9), (0.0, math.pi / 2, 0.5),
+                                 (1e-300, 0.0, -5e-324)])
+def test_rotation3d_angles_in_degrees(robotpy, name, rpy):
+    """x/y/z/angle in degrees: the radian readout converted (two roundings), robotpy 2026's
+    bits where its readout in radians has drivekin's bits."""
+    r = drivekin.Rotation3d(*rpy)
+    field = name.removesuffix("_degrees")
+    rad = getattr(r, field)
+    assert close(getattr(r, name), Fraction(rad) / DEG, 2)
+    theirs = robotpy.Rotation3d(*rpy)
+    if bits(getattr(theirs, field)) == bits(rad):
+        assert bits(getattr(r, name)) == bits(getattr(theirs, name))
+    with pytest.raises(AttributeError, match=name):
+        setattr(r, name, 1.0)
+
+
+@given(x=finite, y=finite, z=finite)
+@example(x=1e306, y=0.0, z=0.0)
+def test_norm_and_distance_in_feet_3d(robotpy, x, y, z):
+    t = drivekin.Translation3d(x, y, z)
+    origin = drivekin.Translation3d()
+    if math.isinf(t.getNorm()):
+        assert t.norm_feet() == t.distance_feet(origin) == math.inf
+        return
+    norm = converts(t.norm_feet, Fraction(t.getNorm()) / FT)
+    assert converts(lambda: t.distance_feet(origin), Fraction(t.getDistance(origin)) / FT) \
+        == norm
+    theirs = robotpy.Translation3d(x, y, z)
+    if norm is not None and bits(theirs.norm()) == bits(t.getNorm()) \
+            and math.isfinite(theirs.normFeet()):
+        assert bits(norm) == bits(theirs.normFeet())
+
+
+@pytest.mark.parametrize("cls", ["Pose3d", "Transform3d"])
+def test_from_matrix_3d_is_the_matrix_constructor(robotpy, cls):
+    rot = drivekin.Rotation3d(0.3, -0.4, 1.1)
+    m = np.eye(4)
+    m[:3, :3] = rot.toMatrix()
+    m[:3, 3] = (1.5, -2.0, 0.25)
+    got = getattr(drivekin, cls).from_matrix(m)
+    assert type(got) is getattr(drivekin, cls) and got == getattr(drivekin, cls)(m)
+    theirs = getattr(robotpy, cls).fromMatrix(m)
+    assert abs(got.x - theirs.x) < 1e-15 and abs(got.z - theirs.z) < 1e-15
+    with pytest.raises(TypeError, match=f"{cls}.from_matrix"):
+        getattr(drivekin, cls).from_matrix(m.tolist())
+    bad = m.copy()
+    bad[3, 0] = 1e-3
+    with pytest.raises(ValueError):
         getattr(drivekin, cls).from_matrix(bad)

@@ -1,4 +1,4 @@
-"""robotpy 2027's names that have no WPILib Java counterpart, on drivekin's 2-D classes.
+"""robotpy 2027's names that have no WPILib Java counterpart, on drivekin's 2-D and 3-D classes.
 
 robotpy-wpimath 2027 (robotpy/mostrobotpy, ``subprojects/robotpy-wpimath/semiwrap/*.yml``)
 adds them by hand to the generated bindings: ``rename: from_matrix`` turns the Eigen-matrix
@@ -16,7 +16,7 @@ the result is a finite double, it divides first; a result beyond the largest dou
 ValueError, never inf from finite input. Arguments are checked before anything is built
 or assigned, so a failed call changes nothing.
 
-``from_feet`` is not here: drivekin has WPILib's (and robotpy 2026's) ``fromFeet``, which
+``from_feet`` is not here: drivekin has robotpy 2026's ``fromFeet`` (2-D and 3-D), which
 the names rule spells ``from_feet`` (_core/pynames). robotpy's argument forms are kept;
 ``from_matrix`` takes a float64 numpy array only, as drivekin's matrix constructors do
 (robotpy also converts nested lists and integer arrays).
@@ -35,6 +35,7 @@ from drivekin._core.numbers import as_double
 from drivekin.chassis import ChassisAccelerations
 from drivekin.differential import DifferentialDriveWheelAccelerations
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d
+from drivekin.geometry3d import Pose3d, Transform3d
 from drivekin.mecanum import MecanumDriveWheelAccelerations
 from drivekin.swervemodule import SwerveModuleAcceleration
 
@@ -133,6 +134,20 @@ def _pose_from_matrix(matrix: np.ndarray) -> Pose2d:
     return Pose2d(_array(matrix, "Pose2d.from_matrix(matrix)", "3×3"))
 
 
+def _pose3d_from_matrix(matrix: np.ndarray) -> Pose3d:
+    """Return the pose of a 4×4 homogeneous matrix ``[[R, t], [0, 0, 0, 1]]`` in m (a
+    float64 numpy array): ``Pose3d(matrix)``. ValueError unless the last row is exactly
+    [0, 0, 0, 1] and R is special orthogonal."""
+    return Pose3d(_array(matrix, "Pose3d.from_matrix(matrix)", "4×4"))
+
+
+def _transform3d_from_matrix(matrix: np.ndarray) -> Transform3d:
+    """Return the transform of a 4×4 homogeneous matrix ``[[R, t], [0, 0, 0, 1]]`` in m (a
+    float64 numpy array): ``Transform3d(matrix)``. ValueError unless the last row is
+    exactly [0, 0, 0, 1] and R is special orthogonal."""
+    return Transform3d(_array(matrix, "Transform3d.from_matrix(matrix)", "4×4"))
+
+
 def _transform_from_matrix(matrix: np.ndarray) -> Transform2d:
     """Return the transform of a 3×3 homogeneous matrix ``[[cos, −sin, x], [sin, cos, y],
     [0, 0, 1]]`` in m (a float64 numpy array): ``Transform2d(matrix)``. ValueError unless
@@ -185,17 +200,23 @@ def _differential_accelerations_from_fps(left: float, right: float
 
 
 # ---------------------------------------------------------------------------------------
-# Translation2d's methods in feet (inline_code def; robotpy names no parameter)
+# Translation2d's and Translation3d's methods in feet (inline_code def; robotpy names no
+# parameter)
 
-def _distance_feet(self: Translation2d, other: Translation2d, /) -> float:
-    """Return the distance to ``other``, ft (``getDistance(other)`` in m)."""
-    return _convert(self.getDistance(other), _FOOT[1], _FOOT[0],
-                    "Translation2d.distance_feet()")
+def _translation_feet(cls: str) -> dict[str, object]:
+    """distance_feet and norm_feet of the translation class ``cls``."""
 
+    def distance_feet(self: Any, other: Any, /) -> float:
+        """Return the distance to ``other``, ft (``getDistance(other)`` in m)."""
+        return _convert(self.getDistance(other), _FOOT[1], _FOOT[0],
+                        f"{cls}.distance_feet()")
 
-def _norm_feet(self: Translation2d) -> float:
-    """Return the distance from the origin, ft (``getNorm()`` in m)."""
-    return _convert(self.getNorm(), _FOOT[1], _FOOT[0], "Translation2d.norm_feet()")
+    def norm_feet(self: Any) -> float:
+        """Return the distance from the origin, ft (``getNorm()`` in m)."""
+        return _convert(self.getNorm(), _FOOT[1], _FOOT[0], f"{cls}.norm_feet()")
+
+    return {"distance_feet": _method(cls, "distance_feet", distance_feet),
+            "norm_feet": _method(cls, "norm_feet", norm_feet)}
 
 
 # ---------------------------------------------------------------------------------------
@@ -217,10 +238,10 @@ def _properties(cls: str, writable: bool,
         unit_name) for name, field, (unit, unit_name, si_name), what in rows}
 
 
-def _frame(cls: str, what: str) -> dict[str, object]:
-    """x_feet and y_feet, read-only (def_property_readonly) as x and y are."""
-    return _properties(cls, False, (("x_feet", "x", _FT, f"X component of the {what}"),
-                                    ("y_feet", "y", _FT, f"Y component of the {what}")))
+def _frame(cls: str, what: str, axes: str = "xy") -> dict[str, object]:
+    """x_feet, y_feet (and z_feet), read-only (def_property_readonly) as x, y, z are."""
+    return _properties(cls, False, tuple(
+        (f"{a}_feet", a, _FT, f"{a.upper()} component of the {what}") for a in axes))
 
 
 def _wheels(cls: str, suffix: str, unit: tuple[tuple[float, float], str, str]
@@ -241,8 +262,7 @@ EXTRAS: dict[str, dict[str, object]] = {
     },
     "Translation2d": {
         **_frame("Translation2d", "translation"),
-        "distance_feet": _method("Translation2d", "distance_feet", _distance_feet),
-        "norm_feet": _method("Translation2d", "norm_feet", _norm_feet),
+        **_translation_feet("Translation2d"),
     },
     "Pose2d": {
         "from_matrix": _static("Pose2d", "from_matrix", _pose_from_matrix),
@@ -257,6 +277,41 @@ EXTRAS: dict[str, dict[str, object]] = {
             ("dx_feet", "dx", _FT, "Change along the start frame's x axis"),
             ("dy_feet", "dy", _FT, "Change along the start frame's y axis"),
             ("dtheta_degrees", "dtheta", (_DEGREE, "degrees", "rad"), "Change in heading"),
+        )),
+    },
+    "Rotation3d": _properties("Rotation3d", False, (
+        ("x_degrees", "x", (_DEGREE, "degrees", "rad"),
+         "Counter-clockwise rotation about the X axis (roll)"),
+        ("y_degrees", "y", (_DEGREE, "degrees", "rad"),
+         "Counter-clockwise rotation about the Y axis (pitch)"),
+        ("z_degrees", "z", (_DEGREE, "degrees", "rad"),
+         "Counter-clockwise rotation about the Z axis (yaw)"),
+        ("angle_degrees", "angle", (_DEGREE, "degrees", "rad"),
+         "Angle of the rotation about its axis"),
+    )),
+    "Translation3d": {
+        **_frame("Translation3d", "translation", "xyz"),
+        **_translation_feet("Translation3d"),
+    },
+    "Pose3d": {
+        "from_matrix": _static("Pose3d", "from_matrix", _pose3d_from_matrix),
+        **_frame("Pose3d", "position", "xyz"),
+    },
+    "Transform3d": {
+        "from_matrix": _static("Transform3d", "from_matrix", _transform3d_from_matrix),
+        **_frame("Transform3d", "translation", "xyz"),
+    },
+    "Twist3d": {
+        **_properties("Twist3d", True, (
+            ("dx_feet", "dx", _FT, "Change along the start frame's x axis"),
+            ("dy_feet", "dy", _FT, "Change along the start frame's y axis"),
+            ("dz_feet", "dz", _FT, "Change along the start frame's z axis"),
+            ("rx_degrees", "rx", (_DEGREE, "degrees", "rad"),
+             "Rotation vector's x component"),
+            ("ry_degrees", "ry", (_DEGREE, "degrees", "rad"),
+             "Rotation vector's y component"),
+            ("rz_degrees", "rz", (_DEGREE, "degrees", "rad"),
+             "Rotation vector's z component"),
         )),
     },
     "ChassisVelocities": {
