@@ -45,6 +45,7 @@ cdef class CoordinateAxis:
 @cython.final
 cdef class CoordinateSystem:
     cdef quat_t q                # the rotation whose matrix has the axes as columns
+    cdef tuple axes              # (positive_x, positive_y, positive_z): CoordinateAxis
     cdef bint frozen
 
 

@@ -38,6 +38,17 @@ cdef inline pose3_t pose3(vec3_t t, quat_t q) noexcept nogil:
     p.q = q
     return p
 
+cdef inline twist3_t twist3(double dx, double dy, double dz, double rx, double ry,
+                            double rz) noexcept nogil:
+    cdef twist3_t t
+    t.dx = dx
+    t.dy = dy
+    t.dz = dz
+    t.rx = rx
+    t.ry = ry
+    t.rz = rz
+    return t
+
 cdef inline quat_t q_identity() noexcept nogil:
     return quat(1.0, 0.0, 0.0, 0.0)
 
