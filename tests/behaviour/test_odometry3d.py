@@ -307,3 +307,45 @@ def test_two_dead_wheels_are_dead_wheel_odometry_and_report_chassis_velocities()
         assert same_rotation(a.getRotation(), b.getRotation())
     v = two.toChassisVelocities(1.0, 2.0, 3.0)
     assert (v.vx, v.vy, v.omega) == (1.0 + 3.0 * 0.2, 2.0 + 3.0 * 0.1, 3.0)
+
+
+# ---- the step's exp against mpmath --------------------------------------------------------
+
+@pytest.mark.parametrize("angle", [0.0, 1e-12, 1e-9, 3e-8, 1e-7, 1e-6, 1e-5, 0.99e-3, 1.01e-3,
+                                   0.1, 1.0, 3.0, math.pi - 1e-6])
+def test_one_step_is_the_exact_twist_exp(angle):
+    # One update from the origin with the gyro turned by `angle` about a skew axis while the
+    # robot moves u = (dx, dy): the pose is Twist3d(dx, dy, 0, ρ).exp(), ρ the gyro change's
+    # rotation vector, to 1e-15 of |u| at every angle (WPILib's closed form B = (1 − cos θ)/θ²
+    # cancels near 1e-7 rad; the step never forms it). Two odometries: a differential drive
+    # (dy = 0), and dead wheels at the centre, one rolling forward and one left, which read
+    # (dx, dy) and sweep no arcs as the robot turns.
+    mp = pytest.importorskip("mpmath")
+    mp.mp.prec = 200
+    axis = np.array([0.3, -0.5, 0.8]) / np.linalg.norm([0.3, -0.5, 0.8])
+    gyro = R3((axis * angle).tolist())
+    w, x, y, z = (mp.mpf(float(c)) for c in quat(gyro))
+    if w < 0:
+        w, x, y, z = -w, -x, -y, -z
+    vn = mp.sqrt(x * x + y * y + z * z)
+    theta = 2 * mp.atan2(vn, w)
+    r = [c * theta / vn for c in (x, y, z)] if vn else [mp.mpf(0)] * 3
+    b = (1 - mp.cos(theta)) / theta ** 2 if theta else mp.mpf(1) / 2
+    c = (theta - mp.sin(theta)) / theta ** 3 if theta else mp.mpf(1) / 6
+    centre = DeadWheelKinematics([Pose2d(0, 0, Rotation2d()), Pose2d(0, 0, Rotation2d.kCCW_Pi_2)])
+    for u, step in (((0.7, 0.0), lambda: DifferentialDriveOdometry3d(R3(), 0.0, 0.0)
+                     .update(gyro, 0.7, 0.7)),
+                    ((0.7, -0.4), lambda: DeadWheelOdometry3d(centre, [0.0, 0.0], R3())
+                     .update([0.7, -0.4], gyro))):
+        pose = step()
+        uu = [mp.mpf(u[0]), mp.mpf(u[1]), mp.mpf(0)]
+        c1 = _cross(r, uu)
+        c2 = _cross(r, c1)
+        exact = [uu[i] + b * c1[i] + c * c2[i] for i in range(3)]
+        err = max(abs(float(exact[i]) - v) for i, v in enumerate(xyz(pose)))
+        assert err <= 1e-15 * math.hypot(*u), (angle, u, err)
+        assert same_rotation(pose.getRotation(), gyro, 1e-15)
+
+
+def _cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
