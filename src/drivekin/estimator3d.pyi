@@ -42,7 +42,7 @@ from drivekin.geometry3d import Pose3d, Rotation3d, Translation3d
 from drivekin.mecanum import MecanumDriveKinematics, MecanumDriveWheelPositions
 from drivekin.swerve import SwerveDriveKinematics, SwerveModulePosition
 
-_StdDevs = Sequence[float] | npt.NDArray[np.float64]
+_StdDevs4 = Sequence[float] | npt.NDArray[np.float64]
 _ModulePositions = Sequence[SwerveModulePosition] | npt.NDArray[np.float64]
 _WheelReadings = Sequence[float] | npt.NDArray[np.float64]
 
@@ -60,7 +60,7 @@ class _PoseEstimator3d(_EstimatorBase):
         history) with the vision corrections known for that time, or None before the
         first update after construction or a reset."""
 
-    def setVisionMeasurementStdDevs(self, vision_measurement_std_devs: _StdDevs) -> None:
+    def setVisionMeasurementStdDevs(self, vision_measurement_std_devs: _StdDevs4) -> None:
         """Set how much vision is trusted: standard deviations of the measured x (m),
         y (m), z (m) and rotation (rad), any sequence of 4 numbers or a float64 array.
         Larger values trust vision less."""
@@ -69,7 +69,7 @@ class _PoseEstimator3d(_EstimatorBase):
         self,
         vision_robot_pose: Pose3d,
         timestamp: float,
-        vision_measurement_std_devs: _StdDevs | None = None,
+        vision_measurement_std_devs: _StdDevs4 | None = None,
     ) -> None:
         """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
         on the estimator's clock). With ``vision_measurement_std_devs`` (x m, y m, z m,
@@ -122,8 +122,8 @@ class SwerveDrivePoseEstimator3d(_PoseEstimator3d):
         gyro_angle: Rotation3d,
         module_positions: _ModulePositions,
         initial_pose: Pose3d,
-        state_std_devs: _StdDevs = (0.1, 0.1, 0.1, 0.1),
-        vision_measurement_std_devs: _StdDevs = (0.9, 0.9, 0.9, 0.9),
+        state_std_devs: _StdDevs4 = (0.1, 0.1, 0.1, 0.1),
+        vision_measurement_std_devs: _StdDevs4 = (0.9, 0.9, 0.9, 0.9),
     ) -> None: ...
     def update(self, gyro_angle: Rotation3d, wheel_positions: _ModulePositions) -> Pose3d:
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
@@ -158,8 +158,8 @@ class MecanumDrivePoseEstimator3d(_PoseEstimator3d):
         gyro_angle: Rotation3d,
         wheel_positions: MecanumDriveWheelPositions,
         initial_pose: Pose3d,
-        state_std_devs: _StdDevs = (0.1, 0.1, 0.1, 0.1),
-        vision_measurement_std_devs: _StdDevs = (0.45, 0.45, 0.45, 0.45),
+        state_std_devs: _StdDevs4 = (0.1, 0.1, 0.1, 0.1),
+        vision_measurement_std_devs: _StdDevs4 = (0.45, 0.45, 0.45, 0.45),
     ) -> None: ...
     def update(self, gyro_angle: Rotation3d, wheel_positions: MecanumDriveWheelPositions) -> Pose3d:
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
@@ -197,8 +197,8 @@ class DifferentialDrivePoseEstimator3d(_PoseEstimator3d):
         left_distance: float,
         right_distance: float,
         initial_pose: Pose3d,
-        state_std_devs: _StdDevs = (0.02, 0.02, 0.02, 0.01),
-        vision_measurement_std_devs: _StdDevs = (0.1, 0.1, 0.1, 0.1),
+        state_std_devs: _StdDevs4 = (0.02, 0.02, 0.02, 0.01),
+        vision_measurement_std_devs: _StdDevs4 = (0.1, 0.1, 0.1, 0.1),
     ) -> None: ...
     @overload
     def update(self, gyro_angle: Rotation3d, left_distance: float, right_distance: float) -> Pose3d:
@@ -259,8 +259,8 @@ class DeadWheelPoseEstimator3d(_PoseEstimator3d):
         wheel_positions: _WheelReadings,
         gyro_angle: Rotation3d,
         initial_pose: Pose3d | None = None,
-        state_std_devs: _StdDevs = (0.1, 0.1, 0.1, 0.1),
-        vision_measurement_std_devs: _StdDevs = (0.9, 0.9, 0.9, 0.9),
+        state_std_devs: _StdDevs4 = (0.1, 0.1, 0.1, 0.1),
+        vision_measurement_std_devs: _StdDevs4 = (0.9, 0.9, 0.9, 0.9),
     ) -> None: ...
     def update(self, wheel_positions: _WheelReadings, gyro_angle: Rotation3d) -> Pose3d:
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""
@@ -296,8 +296,8 @@ class TwoDeadWheelPoseEstimator3d(_PoseEstimator3d):
         y_wheel_pos: float,
         gyro_angle: Rotation3d,
         initial_pose: Pose3d,
-        state_std_devs: _StdDevs = (0.1, 0.1, 0.1, 0.1),
-        vision_measurement_std_devs: _StdDevs = (0.9, 0.9, 0.9, 0.9),
+        state_std_devs: _StdDevs4 = (0.1, 0.1, 0.1, 0.1),
+        vision_measurement_std_devs: _StdDevs4 = (0.9, 0.9, 0.9, 0.9),
     ) -> None: ...
     def update(self, x_wheel_pos: float, y_wheel_pos: float, gyro_angle: Rotation3d) -> Pose3d:
         """updateWithTime at :meth:`MathSharedStore.getTimestamp`; returns the estimate."""

@@ -28,6 +28,7 @@ from drivekin._core.types cimport pose3_t, twist3_t, vec3_t
 from drivekin.estimator cimport (clock_now, finite_time, history_clamp, history_locate,
                                  history_slot, records_after, wheel_pair)
 from drivekin.geometry3d cimport Pose3d, Rotation3d, Translation3d, new_pose3d
+from drivekin.mecanum cimport MecanumDriveWheelPositions
 from drivekin.odometry3d cimport (DeadWheelOdometry3d, DifferentialDriveOdometry3d,
                                   MecanumDriveOdometry3d, SwerveDriveOdometry3d,
                                   TwoDeadWheelOdometry3d, _Odometry3d)
@@ -256,6 +257,7 @@ cdef class SwerveDrivePoseEstimator3d(_PoseEstimator3d):
     def __init__(self, kinematics, gyro_angle: Rotation3d, module_positions,
                  initial_pose: Pose3d, state_std_devs=_DEFAULT_STATE,
                  vision_measurement_std_devs=_DEFAULT_VISION):
+        check_type(gyro_angle, Rotation3d, "gyro_angle")
         check_type(initial_pose, Pose3d, "initial_pose")
         self._start()
         odo = SwerveDriveOdometry3d(kinematics, gyro_angle, module_positions, initial_pose)
@@ -287,9 +289,12 @@ cdef class MecanumDrivePoseEstimator3d(_PoseEstimator3d):
     rotation (rad).
     """
 
-    def __init__(self, kinematics, gyro_angle: Rotation3d, wheel_positions,
-                 initial_pose: Pose3d, state_std_devs=_DEFAULT_STATE,
+    def __init__(self, kinematics, gyro_angle: Rotation3d,
+                 wheel_positions: MecanumDriveWheelPositions, initial_pose: Pose3d,
+                 state_std_devs=_DEFAULT_STATE,
                  vision_measurement_std_devs=(0.45, 0.45, 0.45, 0.45)):
+        check_type(gyro_angle, Rotation3d, "gyro_angle")
+        check_type(wheel_positions, MecanumDriveWheelPositions, "wheel_positions")
         check_type(initial_pose, Pose3d, "initial_pose")
         self._start()
         odo = MecanumDriveOdometry3d(kinematics, gyro_angle, wheel_positions, initial_pose)
@@ -324,6 +329,7 @@ cdef class DifferentialDrivePoseEstimator3d(_PoseEstimator3d):
     def __init__(self, gyro_angle: Rotation3d, left_distance, right_distance,
                  initial_pose: Pose3d, state_std_devs=(0.02, 0.02, 0.02, 0.01),
                  vision_measurement_std_devs=(0.1, 0.1, 0.1, 0.1)):
+        check_type(gyro_angle, Rotation3d, "gyro_angle")
         check_type(initial_pose, Pose3d, "initial_pose")
         self._start()
         odo = DifferentialDriveOdometry3d(gyro_angle, left_distance, right_distance,
@@ -354,6 +360,7 @@ cdef class DifferentialDrivePoseEstimator3d(_PoseEstimator3d):
         resetPosition(gyro_angle, wheel_positions, pose): reset the odometry and forget the
         history and every vision correction."""
         cdef double l, r
+        check_type(gyro_angle, Rotation3d, "gyro_angle")
         self._check()
         if pose is None:
             pose, right_distance = right_distance, None
@@ -372,6 +379,7 @@ cdef class DeadWheelPoseEstimator3d(_PoseEstimator3d):
     def __init__(self, kinematics, wheel_positions, gyro_angle: Rotation3d,
                  initial_pose=None, state_std_devs=_DEFAULT_STATE,
                  vision_measurement_std_devs=_DEFAULT_VISION):
+        check_type(gyro_angle, Rotation3d, "gyro_angle")
         self._start()
         odo = DeadWheelOdometry3d(kinematics, wheel_positions, gyro_angle, initial_pose)
         self._init(odo, state_std_devs, vision_measurement_std_devs)
@@ -404,6 +412,7 @@ cdef class TwoDeadWheelPoseEstimator3d(_PoseEstimator3d):
     def __init__(self, double x_wheel_y_pos, double y_wheel_x_pos, x_wheel_pos, y_wheel_pos,
                  gyro_angle: Rotation3d, initial_pose: Pose3d, state_std_devs=_DEFAULT_STATE,
                  vision_measurement_std_devs=_DEFAULT_VISION):
+        check_type(gyro_angle, Rotation3d, "gyro_angle")
         check_type(initial_pose, Pose3d, "initial_pose")
         self._start()
         odo = TwoDeadWheelOdometry3d(x_wheel_y_pos, y_wheel_x_pos, x_wheel_pos, y_wheel_pos,
