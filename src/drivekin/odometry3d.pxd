@@ -25,6 +25,11 @@ cdef inline void odometry3d_move(pose3_t* p,                            # IN/OUT
     cdef double vn = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
     cdef double k, half, t2, b, c, inv
     cdef vec3_t a, c1, c2
+    if vn == 0.0 and dx == 0.0 and dy == 0.0:
+        # No motion: the pose keeps its bits (composing with the identity would
+        # renormalise its rotation, moving it by an ulp on every idle update).
+        tw.dx = tw.dy = tw.dz = tw.rx = tw.ry = tw.rz = 0.0
+        return
     if vn < 1e-9:
         k = 2.0 / q.w - 2.0 / 3.0 * vn * vn / (q.w * q.w * q.w)   # toRotationVector's series
         half = 0.0

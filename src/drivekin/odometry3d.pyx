@@ -90,13 +90,17 @@ cdef class _Odometry3d:
     cdef int _read(self, object a, object b, double** cur, const double** c,
                    const double** s) except -1:
         # Two wheel distances (m), as numbers: the differential drive's and the two dead
-        # wheels'; the other drivetrains read their own forms.
+        # wheels'; the other drivetrains read their own forms. Both are converted before
+        # either is stored: a number's __float__ may run this odometry re-entrantly.
+        cdef double first, second
         try:
-            self.scratch[0] = a
-            self.scratch[1] = b
+            first = a
+            second = b
         except TypeError:
             raise TypeError(f"the two wheel distances must be numbers (m), got "
                             f"{type_name(a)} and {type_name(b)}") from None
+        self.scratch[0] = first
+        self.scratch[1] = second
         cur[0] = self.scratch
         c[0] = NULL
         s[0] = NULL

@@ -349,3 +349,17 @@ def test_one_step_is_the_exact_twist_exp(angle):
 
 def _cross(a, b):
     return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+@pytest.mark.parametrize("make", ODOMETRY3D)
+def test_idle_updates_keep_the_pose_bit_for_bit(make):
+    # The same readings and gyro again are no motion: the pose must not drift by an ulp per
+    # update (a rotation renormalised against the identity would).
+    odo = make()
+    gyro = R3(0.3, -0.2, 1.1)
+    reset(odo, R3(), 0.0, odo.getPose())
+    update(odo, gyro, 0.4)
+    before = (tuple(xyz(odo.getPose())), quat(odo.getPose().getRotation()).tobytes())
+    for _ in range(100):
+        update(odo, gyro, 0.4)
+    assert (tuple(xyz(odo.getPose())), quat(odo.getPose().getRotation()).tobytes()) == before
