@@ -229,11 +229,14 @@ cdef class _EstimatorBase:
 
     cdef int _reserve(self) except -1:
         """Make room for one more sample at the end (before the odometry moves, so that a
-        failed allocation changes nothing)."""
+        failed allocation changes nothing). The live samples move back to the start only
+        while they fill at most a quarter of the allocation, which doubles otherwise: a
+        move of n samples then comes at most every 3n updates (at 50 Hz, 76 samples in
+        512 slots, every 436 updates)."""
         cdef char* grown
         if self.start + self.count < self.cap:
             return 0
-        if self.start > 0:
+        if self.start > 0 and 4 * self.count <= self.cap:
             memmove(self.buf, self.buf + self.start * self.ssize, self.ssize * self.count)
             self.start = 0
             return 0
