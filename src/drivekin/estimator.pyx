@@ -304,13 +304,15 @@ cdef class _EstimatorBase:
         if keep > 0:
             memmove(self.rec, self.rec + keep * self.rsize, self.rsize * (self.nrec - keep))
             self.nrec -= keep
-        # sampleAt(timestamp) is the (clamped) odometry pose under the record in force at
-        # the clamped time.
-        floor[0] = records_after(self, history_clamp(self, timestamp)) - 1
         # Stored under the unclamped timestamp, replacing an equal one; later records go
         # (WPILib). A record from another clock replaces the earlier ones from it too, so
         # that such a stream keeps one record rather than all of them (WPILib keeps all).
         lo = records_after(self, newest + CLOCK_GAP if far_ahead else timestamp)
+        # sampleAt(timestamp) is the (clamped) odometry pose under the record in force at
+        # the clamped time: for a timestamp inside the history, the one before that slot.
+        clamped = history_clamp(self, timestamp)
+        floor[0] = (lo if clamped == timestamp and not far_ahead
+                    else records_after(self, clamped)) - 1
         if lo > 0 and (<double*>(self.rec + (lo - 1) * self.rsize))[0] == timestamp:
             lo -= 1
         slot[0] = lo
