@@ -11,7 +11,8 @@
 # normalised exactly as WPILib does. setup.py builds with -ffp-contract=off, so a*b + c is
 # never fused, and Cython keeps the parentheses.
 # Trigonometry is drivekin's own (_core/dkmath.h: sincos, atan2; no asin, see rot3_y), the
-# same on every platform. exp and log (Quaternion.exp/log/pow only) are libm's.
+# same on every platform. exp and log, for the public Quaternion.exp/log/pow of general
+# quaternions only, are libm's; no rotation goes through them.
 # Twist3d.exp and Transform3d.log are drivekin's cancellation-free forms (see there).
 
 from libc.math cimport INFINITY, M_PI, copysign, exp, fabs, log, sqrt
@@ -314,12 +315,37 @@ cdef inline quat_t rot3_relative_to(quat_t q, quat_t o) noexcept nogil:
     # q.relativeTo(o) = o⁻¹·q.
     return q_renorm(q_mul(q_conjugate(o), q))
 
+cdef inline quat_t q_exp_pure(double x, double y, double z) noexcept nogil:
+    # Quaternion.exp of (0, x, y, z) without its scalar factor e^0: (cos m, v·sin m/m),
+    # m = ‖v‖, the series below 1e-9 as in Quaternion.exp.
+    cdef double m = sqrt(x * x + y * y + z * z)
+    cdef double s, c, k, m2
+    sincos(m, &s, &c)
+    if m < 1e-9:
+        m2 = m * m
+        k = 1.0 - m2 / 6.0 + m2 * m2 / 120.0
+    else:
+        k = s / m
+    return quat(c, x * k, y * k, z * k)
+
 cdef inline quat_t rot3_interpolate(quat_t q0, quat_t q1, double t) noexcept nogil:
-    # Slerp the short way, t not clamped: (q1·q0⁻¹)^t·q0.
+    # Slerp the short way, t not clamped: (q1·q0⁻¹)^t·q0, the power as WPILib's
+    # (log(d)·t).exp() but without its scalar part e^(t·ln‖d‖): that scales the result
+    # uniformly and the renormalisation takes it out again, so it is left away (no libm
+    # call, and a huge t cannot blow the norm up).
     cdef quat_t d = q_mul(q1, q_conjugate(q0))
+    cdef double vn, k
     if d.w < 0.0:
         d = quat(-d.w, -d.x, -d.y, -d.z)
-    return q_renorm(q_mul(q_pow(d, t), q0))
+    vn = sqrt(d.x * d.x + d.y * d.y + d.z * d.z)
+    if vn < 1e-9 and d.w != 0.0:
+        k = 1.0 / d.w - 1.0 / 3.0 * vn * vn / (d.w * d.w * d.w)
+    elif vn == 0.0:
+        k = 0.0
+    else:
+        k = atan2(vn, d.w) / vn
+    k = k * t
+    return q_renorm(q_mul(q_exp_pure(d.x * k, d.y * k, d.z * k), q0))
 
 cdef inline quat_t rot3_times(quat_t q, double k) noexcept nogil:
     # Rotation3d.times(k) = kZero.interpolate(this, k).
@@ -328,7 +354,8 @@ cdef inline quat_t rot3_times(quat_t q, double k) noexcept nogil:
 cdef inline quat_t rot3_integrate(quat_t q, double p, double r, double y,
                                   double dt) noexcept nogil:
     # q·exp((0, p, r, y)·dt/2): body-frame rates (roll, pitch, yaw), rad/s, over dt s.
-    return q_renorm(q_mul(q, q_exp(q_scale(quat(0.0, p, r, y), dt / 2.0))))
+    cdef double h = dt / 2.0
+    return q_renorm(q_mul(q, q_exp_pure(p * h, r * h, y * h)))
 
 cdef inline bint rot3_eq(quat_t a, quat_t b) noexcept nogil:
     # Rotation3d.equals: q and −q alike; within about 8.9e-5 rad.
