@@ -1,7 +1,8 @@
 # The drivetrain contract: what the code that loops over drivetrains needs from a
 # kinematics class, on C memory. drivekin.batch's kinematics functions are written once
 # against it, and so is odometry: drivekin.odometry's one 2-D implementation (and
-# drivekin.odometry3d's 3-D one) turns wheel readings into motion with _twists only.
+# drivekin.odometry3d's 3-D one) turns wheel readings into motion with _twist (an
+# update) and _twists (a replay) only.
 #
 # A wheel sample is what the class's forward map reads and its inverse map writes: W
 # values (mecanum 4, differential 2 [left, right], dead wheels W), or for a steered
@@ -12,7 +13,8 @@
 # The batch methods work on k samples at a time with the GIL released, on a private copy
 # of the parameters they read (``params``: another thread's per-call method may change
 # the object's own caches, such as the swerve heading memory or a centre of rotation,
-# while a batch runs). Dispatch costs one indirect call per chunk of samples.
+# while a batch runs). Dispatch costs one indirect call per chunk of samples, and one per
+# odometry update.
 
 from drivekin._core.types cimport vec2_t
 
