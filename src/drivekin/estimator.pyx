@@ -46,7 +46,9 @@ cnp.import_array()
 # than the history by more than that, cannot come from the estimator's clock: no robot
 # runs vision 10 s ahead of its odometry or delivers a frame 11.5 s late.
 cdef double CLOCK_GAP = 10.0
-cdef Py_ssize_t INITIAL_SAMPLES = 128   # 1.5 s of updates at 85 Hz (50 Hz: 76 samples)
+# 1.5 s of updates at 170 Hz. At 50 Hz the live 76 samples move back to the start of the
+# array every 180 updates (every 52 with 128 slots: a 3-D sample is 120 bytes).
+cdef Py_ssize_t INITIAL_SAMPLES = 256
 cdef Py_ssize_t INITIAL_RECORDS = 128  # 1.5 s of vision at 85 Hz
 # What each standard deviation measures, by the length of the vectors.
 cdef dict AXES = {3: "standard deviations (x m, y m, θ rad)",
@@ -229,14 +231,11 @@ cdef class _EstimatorBase:
 
     cdef int _reserve(self) except -1:
         """Make room for one more sample at the end (before the odometry moves, so that a
-        failed allocation changes nothing). The live samples move back to the start only
-        while they fill at most a quarter of the allocation, which doubles otherwise: a
-        move of n samples then comes at most every 3n updates (at 50 Hz, 76 samples in
-        512 slots, every 436 updates)."""
+        failed allocation changes nothing)."""
         cdef char* grown
         if self.start + self.count < self.cap:
             return 0
-        if self.start > 0 and 4 * self.count <= self.cap:
+        if self.start > 0:
             memmove(self.buf, self.buf + self.start * self.ssize, self.ssize * self.count)
             self.start = 0
             return 0
