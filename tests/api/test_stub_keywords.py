@@ -71,6 +71,7 @@ SAMPLES = {
     "_ModulePositions": lambda: [SwerveModulePosition(0.1, Rotation2d(0.2)) for _ in range(4)],
     "_WheelReadings": lambda: [0.1, 0.2, 0.3],
     "_StdDevs": lambda: (0.1, 0.2, 0.3),
+    "_StdDevs4": lambda: (0.1, 0.2, 0.3, 0.4),
     "Sequence[SwerveModulePosition] | npt.NDArray[np.float64]":
         lambda: [SwerveModulePosition(0.1, Rotation2d(0.2)) for _ in range(4)],
     "DCMotor": lambda: DCMotor.getNEO(1),
@@ -88,6 +89,7 @@ SAMPLES = {
     "Rotation3d": lambda: drivekin.Rotation3d(0.1, -0.2, 0.3),
     "Translation3d": lambda: drivekin.Translation3d(1.0, -2.0, 0.5),
     "Pose3d": lambda: drivekin.Pose3d(1.0, -2.0, 0.5, drivekin.Rotation3d(0.1, -0.2, 0.3)),
+    "Pose3d | None": lambda: drivekin.Pose3d(1.0, -2.0, 0.5, drivekin.Rotation3d(0.1, -0.2, 0.3)),
     "Transform2d": lambda: drivekin.Transform2d(1.0, -2.0, Rotation2d(0.3)),
 }
 # The axes of a CoordinateSystem must differ (NWU).
@@ -190,7 +192,9 @@ def _state(obj):
     # arguments set (an estimator's gains show in a vision measurement's effect).
     if hasattr(obj, "getEstimatedPosition"):
         obj.updateWithTime(0.0, *_UPDATE_ARGS[type(obj).__name__]())
-        obj.addVisionMeasurement(Pose2d(3.0, -1.0, Rotation2d(1.0)), 0.0)
+        vision = Pose2d(3.0, -1.0, Rotation2d(1.0))
+        obj.addVisionMeasurement(drivekin.Pose3d(vision) if type(obj).__name__.endswith("3d")
+                                 else vision, 0.0)
         return repr(obj.getEstimatedPosition())
     return repr(obj.getPose()) if hasattr(obj, "getPose") else repr(obj)
 
@@ -204,4 +208,11 @@ _UPDATE_ARGS = {
     "DifferentialDrivePoseEstimator": lambda: (Rotation2d(0.4), 0.75, 0.75),
     "TwoDeadWheelPoseEstimator": lambda: (0.75, 0.75, Rotation2d(0.4)),
     "DeadWheelPoseEstimator": lambda: ([0.1, 0.2, 0.3], Rotation2d(0.4)),
+    "SwerveDrivePoseEstimator3d": lambda: (
+        SAMPLES["Rotation3d"](), [SwerveModulePosition(0.1, Rotation2d(0.2)) for _ in range(4)]),
+    "MecanumDrivePoseEstimator3d": lambda: (
+        SAMPLES["Rotation3d"](), MecanumDriveWheelPositions(0.1, 0.2, 0.3, 0.4)),
+    "DifferentialDrivePoseEstimator3d": lambda: (SAMPLES["Rotation3d"](), 0.75, 0.75),
+    "TwoDeadWheelPoseEstimator3d": lambda: (0.75, 0.75, SAMPLES["Rotation3d"]()),
+    "DeadWheelPoseEstimator3d": lambda: ([0.1, 0.2, 0.3], SAMPLES["Rotation3d"]()),
 }

@@ -22,8 +22,8 @@ kin = SwerveDriveKinematics(Translation2d(0.3, 0.3), Translation2d(0.3, -0.3),
                             Translation2d(-0.3, 0.3), Translation2d(-0.3, -0.3))
 pos = [SwerveModulePosition(0.0, Rotation2d()) for _ in range(4)]
 est = SwerveDrivePoseEstimator(kin, Rotation2d(), pos, Pose2d())
-for i in range(127):              # 127 samples within 1.5 s: none removed, one slot free
-    est.updateWithTime(i * 0.001, Rotation2d(), pos)
+for i in range(255):              # 255 samples within 1.5 s: none removed, one slot free
+    est.updateWithTime(i * 0.0005, Rotation2d(), pos)
 
 class Reentrant:
     fired = False
