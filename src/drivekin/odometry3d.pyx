@@ -126,7 +126,7 @@ cdef class _Odometry3d:
         cdef double dth = rot3_z(turn) if self.yaw else 0.0
         cdef double out[3]
         position_changes(self.width, cur, self.prev)
-        self.kin._twists(1, cur, c, s, &dth, out)
+        self.kin._twist(cur, c, s, &dth, out)
         odometry3d_move(&self.pose, &self.twist, out[0], out[1], turn)
         self.prev_gyro = gyro
 
