@@ -53,7 +53,7 @@ if trace:
 compile_args = (["-O3", "-fno-math-errno", "-fno-trapping-math", "-ffp-contract=off"]
                 if os.name != "nt" else [])
 
-modules = ["geometry", "chassis", "swervemodule", "swerve", "_core.wheels", "_core.drivetrain",
+modules = ["geometry", "geometry3d", "chassis", "swervemodule", "swerve", "_core.wheels", "_core.drivetrain",
            "differential", "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "batch",
            "_core.alloccount", "_core.wpilog", "motor", "robotconfig", "_core.setpointkernel",
            "setpoint"]

@@ -12,7 +12,7 @@ from drivekin._core.dkmath cimport hypot
 import numpy as np
 
 from drivekin._core.types cimport pose2_t, rot2_t, twist2_t, vec2_t
-from drivekin._core.args cimport check_float64, check_type, is_number
+from drivekin._core.args cimport check_float64, check_type, is_number, refuse_reinit
 from drivekin._core.kernels cimport (
     feet_to_meters, pose, pose_interpolate, pose_relative_to, pose_times, pose_transform_by, rot_eq, rot_interp, rot_minus,
     rot_neg, rot_plus, rot_rad, rot_radians, rot_times, rot_xy, transform_inverse,
@@ -27,15 +27,6 @@ cdef double DEG = 180.0 / M_PI
 
 # Marks an argument that was not passed (None is a value callers may pass by mistake).
 cdef object MISSING = object()
-
-
-cdef int refuse_reinit(bint frozen, object self) except -1:
-    # Immutable values (and the shared constants such as Rotation2d.kZero) must not change
-    # when someone calls __init__ on an existing instance.
-    if frozen:
-        raise TypeError(f"{type(self).__name__} is immutable: __init__ cannot be called "
-                        "on an existing instance")
-    return 0
 
 
 cdef vec2_t vector2(object a) except *:

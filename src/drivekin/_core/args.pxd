@@ -95,6 +95,15 @@ cdef extern from *:
     int check_type "drivekin_check_type"(object obj, type expected, str name) except -1
 
 
+cdef inline int refuse_reinit(bint frozen, object self) except -1:
+    # Immutable values (and the shared constants such as Rotation2d.kZero) must not change
+    # when someone calls __init__ on an existing instance.
+    if frozen:
+        raise TypeError(f"{type(self).__name__} is immutable: __init__ cannot be called "
+                        "on an existing instance")
+    return 0
+
+
 cdef inline int positive_finite(double x, str name, str unit) except -1:
     if not (isfinite(x) and x > 0.0):
         raise ValueError(f"{name} must be a positive finite {unit}, got {x!r}")

@@ -47,3 +47,34 @@ def f2(x: float) -> str:
             cents += 1
     text = str(cents).rjust(3, "0")
     return f"{sign}{text[:-2]}.{text[-2:]}"
+
+
+def jstr(x: float) -> str:
+    """Format ``x`` like Java's ``Double.toString`` (``%s`` of a double): the shortest
+    digits that round-trip (Python's repr has the same), in plain notation for
+    1e-3 <= |x| < 1e7 and as ``d.dddE<n>`` otherwise, always with a fractional digit
+    (``1.0``, ``1.0E-5``, ``1.2345E10``)."""
+    x = float(x)
+    if x != x:
+        return "NaN"
+    if x in (float("inf"), float("-inf")):
+        return "Infinity" if x > 0 else "-Infinity"
+    text = repr(x)
+    sign = ""
+    if text[0] == "-":
+        sign, text = "-", text[1:]
+    mantissa, _, exponent = text.partition("e")
+    whole, _, frac = mantissa.partition(".")
+    digits = (whole + frac).lstrip("0")
+    if not digits.rstrip("0"):
+        return f"{sign}0.0"
+    # x == 0.<digits> * 10**point
+    point = (int(exponent) if exponent else 0) + len(whole) - (len(whole + frac) - len(digits))
+    digits = digits.rstrip("0")
+    if not 1e-3 <= abs(x) < 1e7:
+        return f"{sign}{digits[0]}.{digits[1:] or '0'}E{point - 1}"
+    if point <= 0:
+        return f"{sign}0.{'0' * -point}{digits}"
+    if point >= len(digits):
+        return f"{sign}{digits}{'0' * (point - len(digits))}.0"
+    return f"{sign}{digits[:point]}.{digits[point:]}"

@@ -1,0 +1,482 @@
+# 3-D geometry kernels: `cdef inline ... noexcept nogil` on the quat_t / vec3_t / pose3_t /
+# twist3_t structs (_core/types.pxd), defined once here so every module that cimports them
+# gets them inlined. No Python objects, no numpy.
+#
+# Formulas follow WPILib 2027 (Java org.wpilib.math.geometry; C++ wpi/math/geometry for
+# Twist3d.exp / Transform3d.log) in WPILib's order of operations, so that what involves no
+# trigonometry (compositions, inverses, normalisation) gives WPILib's bits: setup.py builds
+# with -ffp-contract=off, so a*b + c is never fused, and Cython keeps the parentheses.
+# Trigonometry is drivekin's own (_core/dkmath.h: sincos, atan2; asin through atan2), the
+# same on every platform. exp and log (Quaternion.exp/log/pow only) are libm's.
+# Twist3d.exp and Transform3d.log are drivekin's cancellation-free forms (see there).
+
+from libc.math cimport INFINITY, M_PI, copysign, exp, fabs, log, sqrt
+from drivekin._core.dkmath cimport atan2, sincos
+from drivekin._core.types cimport pose3_t, quat_t, twist3_t, vec3_t
+
+# ---------------------------------------------------------------------------------------
+# Builders and plain vector algebra
+
+cdef inline quat_t quat(double w, double x, double y, double z) noexcept nogil:
+    cdef quat_t q
+    q.w = w
+    q.x = x
+    q.y = y
+    q.z = z
+    return q
+
+cdef inline vec3_t vec3(double x, double y, double z) noexcept nogil:
+    cdef vec3_t v
+    v.x = x
+    v.y = y
+    v.z = z
+    return v
+
+cdef inline pose3_t pose3(vec3_t t, quat_t q) noexcept nogil:
+    cdef pose3_t p
+    p.t = t
+    p.q = q
+    return p
+
+cdef inline twist3_t twist3(double dx, double dy, double dz, double rx, double ry,
+                            double rz) noexcept nogil:
+    cdef twist3_t t
+    t.dx = dx
+    t.dy = dy
+    t.dz = dz
+    t.rx = rx
+    t.ry = ry
+    t.rz = rz
+    return t
+
+cdef inline quat_t q_identity() noexcept nogil:
+    return quat(1.0, 0.0, 0.0, 0.0)
+
+cdef inline vec3_t v3_add(vec3_t a, vec3_t b) noexcept nogil:
+    return vec3(a.x + b.x, a.y + b.y, a.z + b.z)
+
+cdef inline vec3_t v3_sub(vec3_t a, vec3_t b) noexcept nogil:
+    return vec3(a.x - b.x, a.y - b.y, a.z - b.z)
+
+cdef inline vec3_t v3_scale(vec3_t a, double k) noexcept nogil:
+    return vec3(a.x * k, a.y * k, a.z * k)
+
+cdef inline double v3_dot(vec3_t a, vec3_t b) noexcept nogil:
+    return a.x * b.x + a.y * b.y + a.z * b.z
+
+cdef inline vec3_t v3_cross(vec3_t a, vec3_t b) noexcept nogil:
+    # WPILib's Translation3d.cross / Vector.cross order of operations.
+    return vec3(a.y * b.z - b.y * a.z, a.z * b.x - b.z * a.x, a.x * b.y - b.x * a.y)
+
+cdef inline bint v3_eq(vec3_t a, vec3_t b) noexcept nogil:
+    # Translation3d.equals: each component within 1e-9 m.
+    return fabs(a.x - b.x) < 1e-9 and fabs(a.y - b.y) < 1e-9 and fabs(a.z - b.z) < 1e-9
+
+cdef inline double norm3(double x, double y, double z) noexcept nogil:
+    # sqrt(x² + y² + z²) as Java's Math.sqrt of the sum (the same bits wherever the squares
+    # neither overflow nor underflow); outside that range the vector is scaled by its
+    # largest component first, so a finite vector never gets an infinite or zero norm.
+    cdef double r = sqrt(x * x + y * y + z * z)
+    cdef double m
+    if 1e-150 < r < 1e150 or r != r:
+        return r
+    m = fabs(x)
+    if fabs(y) > m:
+        m = fabs(y)
+    if fabs(z) > m:
+        m = fabs(z)
+    if m == 0.0 or m == INFINITY:
+        return m
+    x = x / m
+    y = y / m
+    z = z / m
+    return m * sqrt(x * x + y * y + z * z)
+
+cdef inline double asin_(double r) noexcept nogil:
+    # asin for |r| <= 1 through drivekin's atan2: (1 − r)(1 + r) keeps 1 − r² exact to an
+    # ulp next to ±1 (Sterbenz), so the result is within an ulp or two of libm's.
+    return atan2(r, sqrt((1.0 - r) * (1.0 + r)))
+
+# ---------------------------------------------------------------------------------------
+# Quaternion (WPILib's Quaternion.java, operation for operation)
+
+cdef inline double q_dot(quat_t a, quat_t b) noexcept nogil:
+    return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z
+
+cdef inline double q_norm(quat_t q) noexcept nogil:
+    # sqrt(((w² + x²) + y²) + z²)
+    return sqrt(q_dot(q, q))
+
+cdef inline quat_t q_mul(quat_t a, quat_t b) noexcept nogil:
+    # Hamilton product a·b: r = r₁r₂ − v₁·v₂, v = r₁v₂ + r₂v₁ + v₁×v₂.
+    cdef double dot = a.x * b.x + a.y * b.y + a.z * b.z
+    cdef double cx = a.y * b.z - b.y * a.z
+    cdef double cy = b.x * a.z - a.x * b.z
+    cdef double cz = a.x * b.y - b.x * a.y
+    return quat(a.w * b.w - dot,
+                a.w * b.x + b.w * a.x + cx,
+                a.w * b.y + b.w * a.y + cy,
+                a.w * b.z + b.w * a.z + cz)
+
+cdef inline quat_t q_scale(quat_t q, double k) noexcept nogil:
+    return quat(q.w * k, q.x * k, q.y * k, q.z * k)
+
+cdef inline quat_t q_div(quat_t q, double k) noexcept nogil:
+    return quat(q.w / k, q.x / k, q.y / k, q.z / k)
+
+cdef inline quat_t q_conjugate(quat_t q) noexcept nogil:
+    return quat(q.w, -q.x, -q.y, -q.z)
+
+cdef inline quat_t q_inverse(quat_t q) noexcept nogil:
+    # conjugate / norm² (norm squared, as WPILib computes it: not the dot product).
+    cdef double n = q_norm(q)
+    return q_div(q_conjugate(q), n * n)
+
+cdef inline quat_t q_normalize(quat_t q) noexcept nogil:
+    # n = sqrt(((w² + x²) + y²) + z²), each component / n; a zero norm gives the identity.
+    cdef double n = q_norm(q)
+    if n == 0.0:
+        return q_identity()
+    return q_div(q, n)
+
+cdef inline bint q_eq(quat_t a, quat_t b) noexcept nogil:
+    # Quaternion.equals: the same direction and the same norm (q and −q differ).
+    cdef double na = q_norm(a), nb = q_norm(b)
+    return fabs(q_dot(a, b) - na * nb) < 1e-9 and fabs(na - nb) < 1e-9
+
+cdef inline quat_t q_exp(quat_t q) noexcept nogil:
+    cdef double scalar = exp(q.w)
+    cdef double m = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
+    cdef double s, c, k, m2
+    sincos(m, &s, &c)
+    if m < 1e-9:
+        m2 = m * m
+        k = 1.0 - m2 / 6.0 + m2 * m2 / 120.0
+    else:
+        k = s / m
+    return quat(c * scalar, q.x * k * scalar, q.y * k * scalar, q.z * k * scalar)
+
+cdef inline quat_t q_log(quat_t q) noexcept nogil:
+    cdef double n = q_norm(q)
+    cdef double scalar, vn, w, k
+    if n == 0.0:
+        return quat(0.0, 0.0, 0.0, 0.0)
+    scalar = log(n)
+    vn = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
+    w = q.w
+    if fabs(w / n + 1.0) < 1e-9:
+        return quat(scalar, -M_PI, 0.0, 0.0)
+    if vn < 1e-9 and w != 0.0:
+        k = 1.0 / w - 1.0 / 3.0 * vn * vn / (w * w * w)
+    elif vn == 0.0:
+        k = 0.0
+    else:
+        k = atan2(vn, w) / vn
+    return quat(scalar, k * q.x, k * q.y, k * q.z)
+
+cdef inline quat_t q_pow(quat_t q, double t) noexcept nogil:
+    return q_exp(q_scale(q_log(q), t))
+
+cdef inline vec3_t q_to_rvec(quat_t q) noexcept nogil:
+    # Quaternion.toRotationVector: the short way round, |θ| <= π.
+    cdef double n = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
+    cdef double k
+    if n < 1e-9:
+        k = 2.0 / q.w - 2.0 / 3.0 * n * n / (q.w * q.w * q.w)
+    elif q.w < 0.0:
+        k = 2.0 * atan2(-n, -q.w) / n
+    else:
+        k = 2.0 * atan2(n, q.w) / n
+    return vec3(k * q.x, k * q.y, k * q.z)
+
+cdef inline quat_t q_from_rvec_static(vec3_t r) noexcept nogil:
+    # Quaternion.fromRotationVector (static): (cos θ/2, r·sin(θ/2)/θ), not normalised.
+    cdef double theta = norm3(r.x, r.y, r.z)
+    cdef double s, c, k
+    sincos(theta / 2.0, &s, &c)
+    if theta < 1e-9:
+        k = 1.0 / 2.0 - theta * theta / 48.0
+    else:
+        k = s / theta
+    return quat(c, k * r.x, k * r.y, k * r.z)
+
+# ---------------------------------------------------------------------------------------
+# Rotation3d constructors (the stored quaternion)
+
+cdef inline quat_t q_from_euler(double roll, double pitch, double yaw) noexcept nogil:
+    # Extrinsic X (roll), then Y (pitch), then Z (yaw), about the fixed axes.
+    cdef double cr, sr, cp, sp, cy, sy
+    sincos(roll * 0.5, &sr, &cr)
+    sincos(pitch * 0.5, &sp, &cp)
+    sincos(yaw * 0.5, &sy, &cy)
+    return quat(cr * cp * cy + sr * sp * sy,
+                sr * cp * cy - cr * sp * sy,
+                cr * sp * cy + sr * cp * sy,
+                cr * cp * sy - sr * sp * cy)
+
+cdef inline quat_t q_from_axis_angle(vec3_t axis, double angle) noexcept nogil:
+    # Rotation3d(axis, angle): Java's axis·(1/‖axis‖)·sin(angle/2); a zero axis gives the
+    # identity (silently, as WPILib).
+    cdef double n = norm3(axis.x, axis.y, axis.z)
+    cdef double s, c, inv
+    if n == 0.0:
+        return q_identity()
+    sincos(angle / 2.0, &s, &c)
+    inv = 1.0 / n
+    return quat(c, axis.x * inv * s, axis.y * inv * s, axis.z * inv * s)
+
+cdef inline quat_t q_from_rvec(vec3_t r) noexcept nogil:
+    # Rotation3d(rvec) = Rotation3d(rvec, ‖rvec‖).
+    return q_from_axis_angle(r, norm3(r.x, r.y, r.z))
+
+cdef inline quat_t q_from_matrix(const double* R) noexcept nogil:
+    # Rotation3d(Matrix3): the trace / largest-diagonal branches (R row-major, already
+    # checked to be a rotation).
+    cdef double trace = R[0] + R[4] + R[8]
+    cdef double s
+    if trace > 0.0:
+        s = 0.5 / sqrt(trace + 1.0)
+        return quat(0.25 / s, (R[7] - R[5]) * s, (R[2] - R[6]) * s, (R[3] - R[1]) * s)
+    if R[0] > R[4] and R[0] > R[8]:
+        s = 2.0 * sqrt(1.0 + R[0] - R[4] - R[8])
+        return quat((R[7] - R[5]) / s, 0.25 * s, (R[1] + R[3]) / s, (R[2] + R[6]) / s)
+    if R[4] > R[8]:
+        s = 2.0 * sqrt(1.0 + R[4] - R[0] - R[8])
+        return quat((R[2] - R[6]) / s, (R[1] + R[3]) / s, 0.25 * s, (R[5] + R[7]) / s)
+    s = 2.0 * sqrt(1.0 + R[8] - R[0] - R[4])
+    return quat((R[3] - R[1]) / s, (R[2] + R[6]) / s, (R[5] + R[7]) / s, 0.25 * s)
+
+cdef inline double matrix_orthogonality(const double* R) noexcept nogil:
+    # ‖R·Rᵀ − I‖_F (row-major R).
+    cdef double acc = 0.0, d
+    cdef int i, j
+    for i in range(3):
+        for j in range(3):
+            d = R[3 * i] * R[3 * j] + R[3 * i + 1] * R[3 * j + 1] + R[3 * i + 2] * R[3 * j + 2]
+            if i == j:
+                d = d - 1.0
+            acc = acc + d * d
+    return sqrt(acc)
+
+cdef inline double matrix_det(const double* R) noexcept nogil:
+    return (R[0] * (R[4] * R[8] - R[5] * R[7])
+            - R[1] * (R[3] * R[8] - R[5] * R[6])
+            + R[2] * (R[3] * R[7] - R[4] * R[6]))
+
+cdef inline quat_t q_from_vectors(vec3_t a, vec3_t b) noexcept nogil:
+    # Rotation3d(initial, last): the shortest rotation taking a's direction onto b's.
+    cdef double dot = v3_dot(a, b)
+    cdef double np_ = norm3(a.x, a.y, a.z) * norm3(b.x, b.y, b.z)
+    cdef double c = dot / np_
+    cdef double ax, ay, az, n
+    cdef vec3_t e, axis
+    if c > 1.0 - 1e-9:
+        return q_identity()
+    if c < -1.0 + 1e-9:
+        # Antiparallel: a half turn about a × e, e the basis axis WPILib picks.
+        ax = fabs(a.x)
+        ay = fabs(a.y)
+        az = fabs(a.z)
+        if ax < ay:
+            e = vec3(1.0, 0.0, 0.0) if ax < az else vec3(0.0, 0.0, 1.0)
+        else:
+            e = vec3(0.0, 1.0, 0.0) if ay < az else vec3(0.0, 0.0, 1.0)
+        axis = v3_cross(a, e)
+        n = norm3(axis.x, axis.y, axis.z)
+        return quat(0.0, axis.x / n, axis.y / n, axis.z / n)
+    # (A NaN c, from a zero vector, lands here too and ends as the identity, as in WPILib.)
+    axis = v3_cross(a, b)
+    return q_normalize(quat(np_ + dot, axis.x, axis.y, axis.z))
+
+# ---------------------------------------------------------------------------------------
+# Rotation3d operations (results normalised, as WPILib's Rotation3d(Quaternion) does)
+
+cdef inline quat_t rot3_inverse(quat_t q) noexcept nogil:
+    return q_normalize(q_inverse(q))
+
+cdef inline quat_t rot3_rotate_by(quat_t q, quat_t o) noexcept nogil:
+    # q.rotateBy(o) = o·q: o applied about the fixed (extrinsic) axes.
+    return q_normalize(q_mul(o, q))
+
+cdef inline quat_t rot3_relative_to(quat_t q, quat_t o) noexcept nogil:
+    # q.relativeTo(o) = o⁻¹·q.
+    return q_normalize(q_mul(q_inverse(o), q))
+
+cdef inline quat_t rot3_interpolate(quat_t q0, quat_t q1, double t) noexcept nogil:
+    # Slerp the short way, t not clamped: (q1·q0⁻¹)^t·q0.
+    cdef quat_t d = q_mul(q1, q_inverse(q0))
+    if d.w < 0.0:
+        d = quat(-d.w, -d.x, -d.y, -d.z)
+    return q_normalize(q_mul(q_pow(d, t), q0))
+
+cdef inline quat_t rot3_times(quat_t q, double k) noexcept nogil:
+    # Rotation3d.times(k) = kZero.interpolate(this, k).
+    return rot3_interpolate(q_identity(), q, k)
+
+cdef inline quat_t rot3_integrate(quat_t q, double p, double r, double y,
+                                  double dt) noexcept nogil:
+    # q·exp((0, p, r, y)·dt/2): body-frame rates (roll, pitch, yaw), rad/s, over dt s.
+    return q_normalize(q_mul(q, q_exp(q_scale(quat(0.0, p, r, y), dt / 2.0))))
+
+cdef inline bint rot3_eq(quat_t a, quat_t b) noexcept nogil:
+    # Rotation3d.equals: q and −q alike; within about 8.9e-5 rad.
+    return fabs(fabs(q_dot(a, b)) - q_norm(a) * q_norm(b)) < 1e-9
+
+cdef inline double rot3_x(quat_t q) noexcept nogil:
+    # Roll; 0 at gimbal lock.
+    cdef double cxcy = 1.0 - 2.0 * (q.x * q.x + q.y * q.y)
+    cdef double sxcy = 2.0 * (q.w * q.x + q.y * q.z)
+    if cxcy * cxcy + sxcy * sxcy > 1e-20:
+        return atan2(sxcy, cxcy)
+    return 0.0
+
+cdef inline double rot3_y(quat_t q) noexcept nogil:
+    # Pitch; ±π/2 once the sine reaches ±1.
+    cdef double ratio = 2.0 * (q.w * q.y - q.z * q.x)
+    if fabs(ratio) >= 1.0:
+        return copysign(M_PI / 2.0, ratio)
+    return asin_(ratio)
+
+cdef inline double rot3_z(quat_t q) noexcept nogil:
+    # Yaw; at gimbal lock atan2(2wz, w² − z²).
+    cdef double cycz = 1.0 - 2.0 * (q.y * q.y + q.z * q.z)
+    cdef double cysz = 2.0 * (q.w * q.z + q.x * q.y)
+    if cycz * cycz + cysz * cysz > 1e-20:
+        return atan2(cysz, cycz)
+    return atan2(2.0 * q.w * q.z, q.w * q.w - q.z * q.z)
+
+cdef inline vec3_t q_to_euler(quat_t q) noexcept nogil:
+    # (getX, getY, getZ): roll, pitch, yaw in rad.
+    return vec3(rot3_x(q), rot3_y(q), rot3_z(q))
+
+cdef inline double rot3_angle(quat_t q) noexcept nogil:
+    # 2·atan2(‖v‖, w), in [0, 2π].
+    return 2.0 * atan2(sqrt(q.x * q.x + q.y * q.y + q.z * q.z), q.w)
+
+cdef inline vec3_t rot3_apply(quat_t q, vec3_t v) noexcept nogil:
+    # Translation3d.rotateBy: q·(0, v)·q⁻¹, WPILib's products in its order.
+    cdef quat_t r = q_mul(q_mul(q, quat(0.0, v.x, v.y, v.z)), q_inverse(q))
+    return vec3(r.x, r.y, r.z)
+
+cdef inline void rot3_matrix(quat_t q, double* R) noexcept nogil:   # OUT: 9, row-major
+    cdef double w = q.w, x = q.x, y = q.y, z = q.z
+    R[0] = 1.0 - 2.0 * (y * y + z * z)
+    R[1] = 2.0 * (x * y - w * z)
+    R[2] = 2.0 * (x * z + w * y)
+    R[3] = 2.0 * (x * y + w * z)
+    R[4] = 1.0 - 2.0 * (x * x + z * z)
+    R[5] = 2.0 * (y * z - w * x)
+    R[6] = 2.0 * (x * z - w * y)
+    R[7] = 2.0 * (y * z + w * x)
+    R[8] = 1.0 - 2.0 * (x * x + y * y)
+
+# ---------------------------------------------------------------------------------------
+# Pose3d / Transform3d (both pose3_t)
+
+cdef inline pose3_t pose3_plus(pose3_t a, pose3_t b) noexcept nogil:
+    # a.transformBy(b): a.t + b.t rotated by a's rotation; rotation b.R.rotateBy(a.R) = a·b.
+    return pose3(v3_add(a.t, rot3_apply(a.q, b.t)), rot3_rotate_by(b.q, a.q))
+
+cdef inline pose3_t pose3_relative_to(pose3_t a, pose3_t o) noexcept nogil:
+    # a.relativeTo(o) = Transform3d(o, a): (a.t − o.t) rotated by o.R.inverse(), and
+    # a.R.relativeTo(o.R).
+    return pose3(rot3_apply(rot3_inverse(o.q), v3_sub(a.t, o.t)), rot3_relative_to(a.q, o.q))
+
+cdef inline pose3_t pose3_rotate_by(pose3_t p, quat_t r) noexcept nogil:
+    # Pose3d.rotateBy: both parts about the origin, extrinsically.
+    return pose3(rot3_apply(r, p.t), rot3_rotate_by(p.q, r))
+
+cdef inline pose3_t transform3_inverse(pose3_t tr) noexcept nogil:
+    cdef quat_t inv = rot3_inverse(tr.q)
+    return pose3(rot3_apply(inv, vec3(-tr.t.x, -tr.t.y, -tr.t.z)), inv)
+
+cdef inline pose3_t transform3_plus(pose3_t a, pose3_t b) noexcept nogil:
+    # Transform3d.plus: Transform3d(kZero, kZero.transformBy(a).transformBy(b)), literally
+    # (the identity's products are not bit-neutral: they turn −0.0 into 0.0).
+    cdef pose3_t zero = pose3(vec3(0.0, 0.0, 0.0), q_identity())
+    return pose3_relative_to(pose3_plus(pose3_plus(zero, a), b), zero)
+
+cdef inline pose3_t pose3_times(pose3_t p, double k) noexcept nogil:
+    # Pose3d/Transform3d.times: the translation scaled, the rotation slerped from identity.
+    return pose3(v3_scale(p.t, k), rot3_times(p.q, k))
+
+# ---------------------------------------------------------------------------------------
+# Twist3d.exp / Transform3d.log: exact where WPILib's closed forms cancel.
+#
+# With r = θ·n̂ the rotation vector and u the twist's translation, exp's translation is
+# V·u = u + B (r × u) + C (r × (r × u)), B = (1 − cos θ)/θ², C = (θ − sin θ)/θ³, and log's
+# is V⁻¹·u = u − ½ (r × u) + D (r × (r × u)), D = (1 − (θ/2) cot(θ/2))/θ². WPILib's
+# B = (1 − cos θ)/θ² loses everything as cos θ rounds towards 1 (error ε/θ per metre: 2e-9
+# at θ = 1e-7), and its D = (1 − A/2B)/θ² magnifies that (7e-3 per metre near 1e-7).
+# Here, above θ = 1e-3: Bθ = 2 sin²(θ/2)/θ (no subtraction), Cθ² = 1 − sin θ/θ and
+# Dθ² = 1 − (θ/2)·w/‖v‖ (the cotangent read off the unit quaternion), each subtracting
+# from 1 a quantity known to a few ulps, so the error is a few ulps of |u|; the terms are
+# applied to the unit axis n̂, so nothing overflows. Below 1e-3 the Taylor series to θ⁴,
+# whose first omitted terms are below 1e-23 relative there. The rotation comes from the
+# quaternion (cos θ/2, n̂ sin θ/2) directly, never through a matrix.
+
+cdef inline pose3_t twist3_exp(twist3_t tw) noexcept nogil:
+    cdef vec3_t u = vec3(tw.dx, tw.dy, tw.dz)
+    cdef vec3_t r = vec3(tw.rx, tw.ry, tw.rz)
+    cdef double theta = norm3(r.x, r.y, r.z)
+    cdef double t2, sh, ch, k, b, c
+    cdef vec3_t a, c1, c2
+    sincos(0.5 * theta, &sh, &ch)
+    if theta < 1e-3:
+        t2 = theta * theta
+        k = 0.5 - t2 / 48.0 + t2 * t2 / 3840.0             # sin(θ/2)/θ
+        b = 0.5 - t2 / 24.0 + t2 * t2 / 720.0              # B
+        c = 1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0      # C
+        a = r
+    else:
+        k = sh / theta
+        b = 2.0 * sh * sh / theta                          # Bθ = (1 − cos θ)/θ
+        c = 1.0 - 2.0 * sh * ch / theta                    # Cθ² = 1 − sin θ/θ
+        a = vec3(r.x / theta, r.y / theta, r.z / theta)    # n̂
+    c1 = v3_cross(a, u)
+    c2 = v3_cross(a, c1)
+    return pose3(vec3(u.x + b * c1.x + c * c2.x,
+                      u.y + b * c1.y + c * c2.y,
+                      u.z + b * c1.z + c * c2.z),
+                 q_normalize(quat(ch, r.x * k, r.y * k, r.z * k)))
+
+cdef inline twist3_t pose3_log(pose3_t tr) noexcept nogil:
+    cdef twist3_t out
+    cdef quat_t q = tr.q
+    cdef vec3_t u = tr.t
+    cdef vec3_t r = q_to_rvec(q)                   # WPILib's rotation part, as it is
+    cdef double vn = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
+    cdef double w = fabs(q.w)
+    cdef double theta, t2, d, sgn
+    cdef vec3_t n, c1, c2
+    out.rx = r.x
+    out.ry = r.y
+    out.rz = r.z
+    theta = 2.0 * atan2(vn, w)                     # |r|, in [0, π]
+    c1 = v3_cross(r, u)
+    if theta < 1e-3:
+        t2 = theta * theta
+        d = 1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30240.0   # D
+        c2 = v3_cross(r, c1)
+    else:
+        # n̂ = ±v/‖v‖ (the sign that makes w >= 0, as toRotationVector's short way).
+        sgn = -1.0 / vn if q.w < 0.0 else 1.0 / vn
+        n = vec3(q.x * sgn, q.y * sgn, q.z * sgn)
+        d = 1.0 - 0.5 * theta * w / vn                     # Dθ²
+        c2 = v3_cross(n, v3_cross(n, u))
+    out.dx = u.x - 0.5 * c1.x + d * c2.x
+    out.dy = u.y - 0.5 * c1.y + d * c2.y
+    out.dz = u.z - 0.5 * c1.z + d * c2.z
+    return out
+
+cdef inline pose3_t pose3_interpolate(pose3_t a, pose3_t b, double t) noexcept nogil:
+    # Pose3d.interpolate for 0 <= t < 1 (the caller returns a for t < 0 and b for t >= 1):
+    # a + ((b − a).log()·t).exp().
+    cdef twist3_t tw = pose3_log(pose3_relative_to(b, a))
+    tw.dx = tw.dx * t
+    tw.dy = tw.dy * t
+    tw.dz = tw.dz * t
+    tw.rx = tw.rx * t
+    tw.ry = tw.ry * t
+    tw.rz = tw.rz * t
+    return pose3_plus(a, twist3_exp(tw))
