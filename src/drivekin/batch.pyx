@@ -809,30 +809,29 @@ cdef inline void gyro_turns(Py_ssize_t k, const double* g, rot2_t* prev,   # IN/
 cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
     # The odometry step (the drivetrain's motion, the gyro turn, the pose change and its
     # composition, as in update), restaged per chunk as passes over all its samples: the
-    # gyro turns; the motions (the odometry contract's _motions, given a steered
-    # drivetrain's module distances module-major with their directions' cos/sin); for
+    # gyro turns; the motions (_Odometry._motions on the chunk's readings laid out
+    # wheel-major, a steered drivetrain's with their directions' cos/sin); for
     # dead wheels without a gyro, the cos/sin of the solved dθ; the pose changes; then,
     # the only sequential pass, the compositions; then the headings. Each sample sees
     # exactly the operations of update (tests/behaviour/test_batch.py compares the bits).
     cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = odo.width
     cdef const double* x
     cdef bint gyro = odo.gyro
-    cdef double* buf = _scratch(12 * CHUNK + 2 + n + 4 * CHUNK * n)
+    cdef double* buf = _scratch(13 * CHUNK + 2 + 4 * CHUNK * n)
     cdef double* gc = buf                   # the gyro's cos and sin (CHUNK + 1 each)
     cdef double* gs = gc + CHUNK + 1
     cdef double* tc = gs + CHUNK + 1        # the heading change: cos, sin, angle
     cdef double* ts = tc + CHUNK
     cdef double* dth = ts + CHUNK
-    cdef double* mx = dth + CHUNK           # each sample's motion dx, then dy (kk apart)
-    cdef double* my
-    cdef double* px = mx + 2 * CHUNK        # the pose changes, then the poses of the chunk
+    cdef double* mx = dth + CHUNK           # each sample's motion dx, then dy (kk apart),
+    cdef double* my                         # then the wheels' dθ
+    cdef double* px = mx + 3 * CHUNK        # the pose changes, then the poses of the chunk
     cdef double* py = px + CHUNK
     cdef double* pc = py + CHUNK
     cdef double* ps = pc + CHUNK
     cdef double* hd = ps + CHUNK
-    cdef double* row = hd + CHUNK           # the odometry's scratch (one sample)
-    cdef double* md = row + n               # steered: a chunk's module distances, angles,
-    cdef double* ang = md + CHUNK * n       # cos and sin, module-major
+    cdef double* md = hd + CHUNK            # a chunk's wheel distances (steered: and module
+    cdef double* ang = md + CHUNK * n       # angles, cos and sin), wheel-major
     cdef double* mc = ang + CHUNK * n
     cdef double* ms = mc + CHUNK * n
     cdef pose2_t step, cur
@@ -850,9 +849,13 @@ cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
                         md[kk * j + i] = x[2 * (n * i + j)]
                         ang[kk * j + i] = x[2 * (n * i + j) + 1]
                 sincos_n(kk * n, ang, ms, mc)
-                odo._motions(kk, md, mc, ms, dth, mx, row)
+                odo._motions(kk, md, mc, ms, dth, mx)
             else:
-                odo._motions(kk, p.data + n * i0, NULL, NULL, dth, mx, row)
+                x = p.data + n * i0
+                for j in range(n):
+                    for i in range(kk):
+                        md[kk * j + i] = x[n * i + j]
+                odo._motions(kk, md, NULL, NULL, dth, mx)
             if not gyro:
                 sincos_n(kk, dth, ts, tc)
             # The pose changes (vectorised), then the compositions, the only sequential part.

@@ -224,12 +224,24 @@ cdef class DeadWheelKinematics(Drivetrain):
             # The common three-wheel layout with a literal size: the same kernel, unrolled
             # by the compiler (same operations in the same order, so the same bits).
             for i in range(k):
-                deadwheel_solve(3, params, params + 9, params + 15, m + 3 * i, False, 0.0,
+                deadwheel_solve(3, params, params + 9, params + 15, m + 3 * i, 1, False, 0.0,
                                 out + 3 * i)
         else:
             for i in range(k):
-                deadwheel_solve(n, params, params + 3 * n, params + 5 * n, m + n * i,
+                deadwheel_solve(n, params, params + 3 * n, params + 5 * n, m + n * i, 1,
                                 gyro != NULL, gyro[i] if gyro != NULL else 0.0, out + 3 * i)
+
+    cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
+                      const double* dth, double* out) noexcept nogil:
+        cdef Py_ssize_t i
+        cdef double r[3]
+        for i in range(k):
+            deadwheel_solve(self.n, self.p3, self.p2, self.g, d + i, k, dth != NULL,
+                            dth[i] if dth != NULL else 0.0, r)
+            out[i] = r[0]
+            out[k + i] = r[1]
+            if dth == NULL:
+                out[2 * k + i] = r[2]
 
     cdef int _need_heading(self, str call) except -1:
         raise ValueError(f"{call} needs a gyro with this layout: {self.no_heading}")
@@ -249,7 +261,7 @@ cdef class DeadWheelKinematics(Drivetrain):
         elif not self.heading:
             self._need_heading(call)
         self._read(values, self.s, what)
-        deadwheel_solve(self.n, self.p3, self.p2, self.g, self.s, gyro is not None, w, out)
+        deadwheel_solve(self.n, self.p3, self.p2, self.g, self.s, 1, gyro is not None, w, out)
         return 0
 
     cdef tuple _inverse(self, _ChassisVector v):

@@ -212,6 +212,15 @@ cdef class DifferentialDriveKinematics(Drivetrain):
             out[3 * i + 1] = 0.0
             out[3 * i + 2] = (x[1] - x[0]) / tw
 
+    cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
+                      const double* dth, double* out) noexcept nogil:
+        cdef Py_ssize_t i
+        for i in range(k):
+            out[i] = (d[i] + d[k + i]) / 2.0
+            out[k + i] = 0.0
+            if dth == NULL:
+                out[2 * k + i] = (d[k + i] - d[i]) / self._trackwidth
+
     @property
     def trackwidth(self):
         """Distance between the left and right wheels, m (read-only)."""

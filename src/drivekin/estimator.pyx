@@ -42,13 +42,15 @@ from drivekin._core.errors import type_name
 
 cnp.import_array()
 
-cdef double HISTORY = 1.5        # s of odometry poses kept (WPILib's kBufferDuration)
 # A vision timestamp more than CLOCK_GAP s newer than the newest odometry sample, or older
 # than the history by more than that, cannot come from the estimator's clock: no robot
 # runs vision 10 s ahead of its odometry or delivers a frame 11.5 s late.
 cdef double CLOCK_GAP = 10.0
 cdef Py_ssize_t INITIAL_SAMPLES = 128   # 1.5 s of updates at 85 Hz (50 Hz: 76 samples)
 cdef Py_ssize_t INITIAL_RECORDS = 128  # 1.5 s of vision at 85 Hz
+# What each standard deviation measures, by the length of the vectors.
+cdef dict AXES = {3: "standard deviations (x m, y m, θ rad)",
+                  4: "standard deviations (x m, y m, z m, θ rad)"}
 
 
 # ---------------------------------------------------------------------------------------
@@ -98,7 +100,7 @@ cdef double clock_now() except? -1.0:
                         "float") from None
 
 
-cdef inline int finite_time(double t, str what) except -1:
+cdef int finite_time(double t, str what) except -1:
     if not isfinite(t):
         raise ValueError(f"{what} must be a finite time in s, got {t!r}")
     return 0
@@ -107,17 +109,17 @@ cdef inline int finite_time(double t, str what) except -1:
 # ---------------------------------------------------------------------------------------
 # Standard deviations and gains
 
-cdef int read_std_devs(object values, str what, double* out) except -1:
-    """Three standard deviations (numbers; inf allowed, NaN not; the sign is ignored, as
+cdef int read_std_devs(object values, Py_ssize_t n, str what, double* out) except -1:
+    """n standard deviations (numbers; inf allowed, NaN not; the sign is ignored, as
     WPILib squares them) into ``out``, which is written only when all are valid."""
-    cdef double v[3]
+    cdef double v[4]
     cdef Py_ssize_t i
-    read_floats(values, 3, v, what, "standard deviations (x m, y m, θ rad)")
-    for i in range(3):
+    read_floats(values, n, v, what, AXES[n])
+    for i in range(n):
         if v[i] != v[i]:
             raise ValueError(f"{what}[{i}] must be finite, or inf for no confidence at "
                              f"all, got {v[i]!r}")
-    for i in range(3):
+    for i in range(n):
         out[i] = v[i]
     return 0
 
@@ -159,7 +161,7 @@ cdef inline pose2_t interpolate_samples(const sample_t* a, const sample_t* b,
     # so there, and for any other pair, the general form runs.
     cdef double theta = b.tw.dtheta * f, c, s
     cdef pose2_t step
-    if f <= 0.0 or f >= 1.0 or not b.joined or not fabs(b.tw.dtheta) < 3.0:
+    if f <= 0.0 or f >= 1.0 or not b.s.joined or not fabs(b.tw.dtheta) < 3.0:
         return pose_interpolate(a.p, b.p, f)
     sincos(theta, &s, &c)
     step = twist_exp_cs(b.tw.dx * f, b.tw.dy * f, theta, c, s)
@@ -171,9 +173,9 @@ cdef inline pose2_t interpolate_samples(const sample_t* a, const sample_t* b,
 
 # ---------------------------------------------------------------------------------------
 
-cdef class _PoseEstimator:
-    """Everything but the drivetrain: the pose history, the vision records and the four
-    resets shared by every estimator."""
+cdef class _EstimatorBase:
+    """The pose history's and the vision records' bookkeeping in time, the gains and the
+    clock checks, shared by the 2-D and 3-D estimators."""
 
     def __cinit__(self, *args, **kwargs):
         self.buf = NULL
@@ -183,16 +185,17 @@ cdef class _PoseEstimator:
         PyMem_Free(self.buf)
         PyMem_Free(self.rec)
 
-    cdef int _init(self, _Odometry odo, object state_std_devs, object vision_std_devs) except -1:
+    cdef int _init_history(self, Py_ssize_t axes, Py_ssize_t ssize, Py_ssize_t rsize,
+                           object state_std_devs, object vision_std_devs) except -1:
         # Called by the concrete constructors after they built the odometry and before
-        # anything is stored; ``ready`` is set last.
-        cdef double sd[3]
-        cdef double vd[3]
+        # anything is stored; the subclass sets ``ready`` once it has its odometry.
+        cdef double sd[4]
+        cdef double vd[4]
         cdef Py_ssize_t i
-        read_std_devs(state_std_devs, "state_std_devs", sd)
-        read_std_devs(vision_std_devs, "vision_measurement_std_devs", vd)
-        cdef sample_t* buf = <sample_t*>PyMem_Malloc(sizeof(sample_t) * INITIAL_SAMPLES)
-        cdef record_t* rec = <record_t*>PyMem_Malloc(sizeof(record_t) * INITIAL_RECORDS)
+        read_std_devs(state_std_devs, axes, "state_std_devs", sd)
+        read_std_devs(vision_std_devs, axes, "vision_measurement_std_devs", vd)
+        cdef char* buf = <char*>PyMem_Malloc(ssize * INITIAL_SAMPLES)
+        cdef char* rec = <char*>PyMem_Malloc(rsize * INITIAL_RECORDS)
         if buf == NULL or rec == NULL:
             PyMem_Free(buf)
             PyMem_Free(rec)
@@ -203,14 +206,12 @@ cdef class _PoseEstimator:
             raise TypeError(f"{type(self).__name__} is already initialised")
         PyMem_Free(self.buf)
         PyMem_Free(self.rec)
-        self.buf, self.cap, self.start, self.count = buf, INITIAL_SAMPLES, 0, 0
-        self.rec, self.rcap, self.nrec = rec, INITIAL_RECORDS, 0
-        for i in range(3):
+        self.buf, self.ssize, self.cap, self.start, self.count = buf, ssize, INITIAL_SAMPLES, 0, 0
+        self.rec, self.rsize, self.rcap, self.nrec = rec, rsize, INITIAL_RECORDS, 0
+        self.axes = axes
+        for i in range(axes):
             self.sd[i] = sd[i]
             self.k[i] = gain(sd[i], vd[i])
-        self.odo = odo
-        self.estimate = odo.pose
-        self.ready = True
         return 0
 
     cdef int _start(self) except -1:
@@ -229,118 +230,24 @@ cdef class _PoseEstimator:
     cdef int _reserve(self) except -1:
         """Make room for one more sample at the end (before the odometry moves, so that a
         failed allocation changes nothing)."""
-        cdef sample_t* grown
+        cdef char* grown
         if self.start + self.count < self.cap:
             return 0
         if self.start > 0:
-            memmove(self.buf, self.buf + self.start, sizeof(sample_t) * self.count)
+            memmove(self.buf, self.buf + self.start * self.ssize, self.ssize * self.count)
             self.start = 0
             return 0
-        grown = <sample_t*>PyMem_Realloc(self.buf, sizeof(sample_t) * 2 * self.cap)
+        grown = <char*>PyMem_Realloc(self.buf, self.ssize * 2 * self.cap)
         if grown == NULL:
             raise MemoryError()
         self.buf = grown
         self.cap *= 2
         return 0
 
-    cdef int _after_update(self, double t) except -1:
-        """Store the odometry's new pose at time t (room was reserved) and refresh the
-        estimate."""
-        cdef sample_t* b
-        cdef Py_ssize_t lo, hi, mid, n
-        cdef pose2_t p = self.odo.pose
-        # A call re-entered while the odometry read its inputs (a module-position
-        # sequence's Python protocol) may have taken the slot reserved for this one.
-        if self.start + self.count == self.cap:
-            self._reserve()
-        # Remove, oldest first, every sample at least HISTORY older than the newest time:
-        # t, or the newest stored sample when t is older. (WPILib measures from t, so a
-        # clock that runs backwards keeps every sample; here the history stays bounded.)
-        cdef double newest = t
-        if self.count > 0 and self.buf[self.start + self.count - 1].t > t:
-            newest = self.buf[self.start + self.count - 1].t
-        while self.count > 0 and newest - self.buf[self.start].t >= HISTORY:
-            self.start += 1
-            self.count -= 1
-        b = self.buf + self.start
-        n = self.count
-        if n > 0 and newest - t >= HISTORY:
-            # Older than the whole history: nothing would keep it, so it is not stored.
-            self.tail_is_odometry = False
-        elif n == 0 or t > b[n - 1].t:
-            b[n].t = t
-            b[n].p = p
-            b[n].tw = self.odo.twist
-            b[n].joined = n > 0 and self.tail_is_odometry
-            self.count += 1
-            self.tail_is_odometry = True
-        else:
-            # The odometry pose lands between stored ones: neither it nor the sample after
-            # it follows its predecessor by one odometry step.
-            lo, hi = 0, n            # first index with time >= t
-            while lo < hi:
-                mid = (lo + hi) // 2
-                if b[mid].t < t:
-                    lo = mid + 1
-                else:
-                    hi = mid
-            if b[lo].t == t:
-                b[lo].p = p
-            else:
-                memmove(b + lo + 1, b + lo, sizeof(sample_t) * (n - lo))
-                b[lo].t = t
-                b[lo].p = p
-                self.count += 1
-            b[lo].joined = False
-            if lo + 1 < self.count:
-                b[lo + 1].joined = False
-            self.tail_is_odometry = lo + 1 == self.count
-        self.estimate = p if self.nrec == 0 else compensate(self.rec + self.nrec - 1, p)
-        return 0
-
     cdef void _clear(self) noexcept:
         self.start = 0
         self.count = 0
         self.nrec = 0
-
-    cdef bint _sample(self, double t, pose2_t* out) noexcept:
-        """The odometry pose at time t: clamped to the stored range, interpolated along
-        the arc between neighbours; False when there is none."""
-        cdef sample_t* b = self.buf + self.start
-        cdef Py_ssize_t n = self.count, lo, hi, mid
-        if n == 0:
-            return False
-        if t <= b[0].t:
-            out[0] = b[0].p
-            return True
-        if t >= b[n - 1].t:
-            out[0] = b[n - 1].p
-            return True
-        lo, hi = 0, n - 1            # b[lo].t < t < b[hi].t, or an exact hit
-        while hi - lo > 1:
-            mid = (lo + hi) // 2
-            if b[mid].t <= t:
-                lo = mid
-            else:
-                hi = mid
-        if b[lo].t == t:
-            out[0] = b[lo].p
-        else:
-            # The history spans at most HISTORY (_after_update), so no overflow here.
-            out[0] = interpolate_samples(b + lo, b + hi, (t - b[lo].t) / (b[hi].t - b[lo].t))
-        return True
-
-    cdef Py_ssize_t _first_record_after(self, double t) noexcept:
-        """Index of the first record with time > t (nrec when there is none); the records
-        are in strictly ascending time."""
-        cdef Py_ssize_t lo = 0, hi = self.nrec, mid
-        while lo < hi:
-            mid = (lo + hi) // 2
-            if self.rec[mid].t <= t:
-                lo = mid + 1
-            else:
-                hi = mid
-        return lo
 
     cdef int _warn_clock(self, double timestamp, double newest) except -1:
         self.clock_warned = True
@@ -359,20 +266,110 @@ cdef class _PoseEstimator:
             "estimator.)", ClockMismatchWarning, stacklevel=1)
         return 0
 
+    @cython.final
+    cdef int _admit(self, double timestamp, object std_devs, Py_ssize_t* floor,
+                    Py_ssize_t* slot) except -1:
+        """addVisionMeasurement up to the pose arithmetic: 0 when the measurement is
+        ignored; else 1, with ``floor`` the record in force at the clamped timestamp (-1:
+        none) and ``slot`` the index its record takes (every later one goes), room made."""
+        cdef double clamped, newest
+        cdef bint far_ahead
+        cdef Py_ssize_t keep, lo
+        cdef char* grown
+        self._check()
+        finite_time(timestamp, "timestamp")
+        if std_devs is not None:
+            self._set_vision_std_devs(std_devs)
+        if self.count == 0:
+            return 0
+        newest = stamp(self.buf, self.ssize, self.start + self.count - 1).t
+        far_ahead = timestamp - newest > CLOCK_GAP
+        if not self.clock_warned and (far_ahead or newest - timestamp > HISTORY + CLOCK_GAP):
+            self._warn_clock(timestamp, newest)
+        if newest - HISTORY > timestamp:
+            return 0
+        # Room for one more record, before anything changes.
+        if self.nrec == self.rcap:
+            grown = <char*>PyMem_Realloc(self.rec, self.rsize * 2 * self.rcap)
+            if grown == NULL:
+                raise MemoryError()
+            self.rec = grown
+            self.rcap *= 2
+        # Drop the records no stored sample needs: everything before the newest record at
+        # or before the oldest sample.
+        keep = records_after(self, stamp(self.buf, self.ssize, self.start).t) - 1
+        if keep > 0:
+            memmove(self.rec, self.rec + keep * self.rsize, self.rsize * (self.nrec - keep))
+            self.nrec -= keep
+        # sampleAt(timestamp) is the (clamped) odometry pose under the record in force at
+        # the clamped time.
+        floor[0] = records_after(self, history_clamp(self, timestamp)) - 1
+        # Stored under the unclamped timestamp, replacing an equal one; later records go
+        # (WPILib). A record from another clock replaces the earlier ones from it too, so
+        # that such a stream keeps one record rather than all of them (WPILib keeps all).
+        lo = records_after(self, newest + CLOCK_GAP if far_ahead else timestamp)
+        if lo > 0 and (<double*>(self.rec + (lo - 1) * self.rsize))[0] == timestamp:
+            lo -= 1
+        slot[0] = lo
+        return 1
+
+    cdef int _set_vision_std_devs(self, object values) except -1:
+        cdef double vd[4]
+        cdef Py_ssize_t i
+        read_std_devs(values, self.axes, "vision_measurement_std_devs", vd)
+        for i in range(self.axes):
+            self.k[i] = gain(self.sd[i], vd[i])
+        return 0
+
+
+cdef class _PoseEstimator(_EstimatorBase):
+    """Everything but the drivetrain: the pose history, the vision records and the four
+    resets shared by every estimator."""
+
+    cdef int _init(self, _Odometry odo, object state_std_devs, object vision_std_devs) except -1:
+        self._init_history(3, sizeof(sample_t), sizeof(record_t), state_std_devs,
+                           vision_std_devs)
+        self.odo = odo
+        self.estimate = odo.pose
+        self.ready = True
+        return 0
+
+    cdef int _after_update(self, double t) except -1:
+        """Store the odometry's new pose at time t (room was reserved) and refresh the
+        estimate."""
+        cdef pose2_t p = self.odo.pose
+        cdef Py_ssize_t i = history_slot(self, t)
+        cdef sample_t* s
+        if i >= 0:
+            s = <sample_t*>self.buf + self.start + i
+            s.p = p
+            s.tw = self.odo.twist
+        self.estimate = p if self.nrec == 0 else compensate(
+            <record_t*>self.rec + self.nrec - 1, p)
+        return 0
+
+    cdef bint _sample(self, double t, pose2_t* out) noexcept:
+        """The odometry pose at time t: clamped to the stored range, interpolated along
+        the arc between neighbours; False when there is none."""
+        cdef double f
+        cdef Py_ssize_t i
+        cdef sample_t* b
+        if self.count == 0:
+            return False
+        i = history_locate(self, t, &f)
+        b = <sample_t*>self.buf + self.start + i
+        out[0] = interpolate_samples(b, b + 1, f) if f > 0.0 else b.p
+        return True
+
     cdef bint _sample_at(self, double t, pose2_t* out) noexcept:
-        cdef sample_t* b = self.buf + self.start
         cdef Py_ssize_t i
         cdef pose2_t p
         if self.count == 0:
             return False
-        # Clamp first: records stamped after the newest sample are invisible here.
-        if t < b[0].t:
-            t = b[0].t
-        elif t > b[self.count - 1].t:
-            t = b[self.count - 1].t
+        t = history_clamp(self, t)
         self._sample(t, &p)
-        i = self._first_record_after(t) - 1
-        out[0] = p if i < 0 else compensate(self.rec + i, p)
+        i = records_after(self, t) - 1
+        out[0] = p if i < 0 else compensate(<record_t*>self.rec + i, p)
         return True
 
     # -- public API -----------------------------------------------------------------------
@@ -401,14 +398,6 @@ cdef class _PoseEstimator:
         self._check()
         self._set_vision_std_devs(vision_measurement_std_devs)
 
-    cdef int _set_vision_std_devs(self, object values) except -1:
-        cdef double vd[3]
-        cdef Py_ssize_t i
-        read_std_devs(values, "vision_measurement_std_devs", vd)
-        for i in range(3):
-            self.k[i] = gain(self.sd[i], vd[i])
-        return 0
-
     def addVisionMeasurement(self, vision_robot_pose: Pose2d, double timestamp,
                              vision_measurement_std_devs=None):
         """Fuse a vision measurement of the robot's field pose taken at ``timestamp`` (s,
@@ -423,55 +412,18 @@ cdef class _PoseEstimator:
         applied as WPILib does, but replaces the earlier ones that far ahead instead of
         being kept with them, so such a stream keeps one record."""
         check_type(vision_robot_pose, Pose2d, "vision_robot_pose")
-        cdef sample_t* b
         cdef pose2_t odometry_sample, vision_sample, delta, scaled
         cdef record_t* r
-        cdef Py_ssize_t i, keep, lo
-        cdef double clamped, newest
-        cdef bint far_ahead
-        cdef record_t* grown
-        self._check()
-        finite_time(timestamp, "timestamp")
-        if vision_measurement_std_devs is not None:
-            self._set_vision_std_devs(vision_measurement_std_devs)
-        if self.count == 0:
+        cdef Py_ssize_t i, lo
+        if not self._admit(timestamp, vision_measurement_std_devs, &i, &lo):
             return
-        b = self.buf + self.start
-        newest = b[self.count - 1].t
-        far_ahead = timestamp - newest > CLOCK_GAP
-        if not self.clock_warned and (far_ahead or newest - timestamp > HISTORY + CLOCK_GAP):
-            self._warn_clock(timestamp, newest)
-        if newest - HISTORY > timestamp:
-            return
-        # Room for one more record, before anything changes.
-        if self.nrec == self.rcap:
-            grown = <record_t*>PyMem_Realloc(self.rec, sizeof(record_t) * 2 * self.rcap)
-            if grown == NULL:
-                raise MemoryError()
-            self.rec = grown
-            self.rcap *= 2
-        # Drop the records no stored sample needs: everything before the newest record at
-        # or before the oldest sample.
-        keep = self._first_record_after(b[0].t) - 1
-        if keep > 0:
-            memmove(self.rec, self.rec + keep, sizeof(record_t) * (self.nrec - keep))
-            self.nrec -= keep
         self._sample(timestamp, &odometry_sample)
-        # sampleAt(timestamp) is that same (clamped) odometry pose under the record in
-        # force at the clamped time: no second interpolation.
-        clamped = min(max(timestamp, b[0].t), newest)
-        i = self._first_record_after(clamped) - 1
-        vision_sample = odometry_sample if i < 0 else compensate(self.rec + i, odometry_sample)
+        vision_sample = odometry_sample if i < 0 else compensate(
+            <record_t*>self.rec + i, odometry_sample)
         delta = pose_relative_to((<Pose2d>vision_robot_pose).p, vision_sample)
         scaled = pose(vec(self.k[0] * delta.t.x, self.k[1] * delta.t.y),
                       rot_times(delta.r, self.k[2]))
-        # Store under the unclamped timestamp, replacing an equal one; later records go
-        # (WPILib). A record from another clock replaces the earlier ones from it too, so
-        # that such a stream keeps one record rather than all of them (WPILib keeps all).
-        lo = self._first_record_after(newest + CLOCK_GAP if far_ahead else timestamp)
-        if lo > 0 and self.rec[lo - 1].t == timestamp:
-            lo -= 1
-        r = self.rec + lo
+        r = <record_t*>self.rec + lo
         r.t = timestamp
         r.vision = pose_transform_by(vision_sample, scaled)
         r.odometry = odometry_sample
@@ -510,7 +462,7 @@ cdef class _PoseEstimator:
         cdef record_t latest
         cdef bint had = self.nrec > 0
         if had:
-            latest = self.rec[self.nrec - 1]
+            latest = (<record_t*>self.rec)[self.nrec - 1]
         self._clear()
         if not had:
             self.estimate = self.odo.pose
@@ -522,9 +474,9 @@ cdef class _PoseEstimator:
             latest.vision.r = r
             latest.odometry.r = r
         set_shift(&latest)
-        self.rec[0] = latest
+        (<record_t*>self.rec)[0] = latest
         self.nrec = 1
-        self.estimate = compensate(self.rec, self.odo.pose)
+        self.estimate = compensate(<record_t*>self.rec, self.odo.pose)
 
     cdef int _reset_done(self) except -1:
         self._clear()
@@ -644,8 +596,7 @@ cdef class MecanumDrivePoseEstimator(_PoseEstimator):
         self._reset_done()
 
 
-cdef inline int wheel_pair(object first, object second, double* l, double* r,
-                           str call) except -1:
+cdef int wheel_pair(object first, object second, double* l, double* r, str call) except -1:
     # (left m, right m) or (DifferentialDriveWheelPositions, omitted).
     if type(first) is DifferentialDriveWheelPositions:
         if second is not None:

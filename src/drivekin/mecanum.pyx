@@ -13,7 +13,8 @@ import numpy as np
 from drivekin._core.types cimport vec2_t
 from drivekin._core.args cimport check_type
 from drivekin._core.wheels cimport _WheelValues, install_bare_new
-from drivekin._core.kernels cimport clamp01, feet_to_meters, mat_vec, vec, vec_eq, wheels_desaturate
+from drivekin._core.kernels cimport (clamp01, feet_to_meters, mat_vec, mat_vec_step, vec, vec_eq,
+                                     wheels_desaturate)
 from drivekin.geometry cimport Translation2d, new_twist
 from drivekin.chassis cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
 from drivekin._core.errors import type_name
@@ -294,6 +295,19 @@ cdef class MecanumDriveKinematics(Drivetrain):
         cdef Py_ssize_t i
         for i in range(k):
             mat_vec(3, 4, params, m + 4 * i, out + 3 * i)
+
+    cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
+                      const double* dth, double* out) noexcept nogil:
+        cdef Py_ssize_t i
+        cdef double r[3]
+        for i in range(k):
+            if dth != NULL:
+                mat_vec_step(2, 4, self.f, d + i, k, r)
+            else:
+                mat_vec_step(3, 4, self.f, d + i, k, r)
+                out[2 * k + i] = r[2]
+            out[i] = r[0]
+            out[k + i] = r[1]
 
     def getFrontLeft(self):
         """Return the front-left wheel position (Translation2d, m)."""

@@ -13,18 +13,22 @@ from cpython.mem cimport PyMem_Free, PyMem_Malloc
 
 from drivekin._core.types cimport pose2_t, rot2_t
 from drivekin._core.args cimport check_type
+from drivekin._core.drivetrain cimport Drivetrain, position_changes
 from drivekin._core.wheels cimport _WheelValues
-from drivekin._core.kernels cimport (deadwheel_solve, forward_solve, forward_solve_many,
-                                     gyro_turn, mat_vec,
-                                odometry_move, odometry_move_cs, odometry_step, pose,
-                                rot_radians, rot_xy, vec)
+from drivekin._core.kernels cimport (gyro_turn, odometry_move, odometry_move_cs, pose,
+                                     rot_radians, rot_xy, vec)
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_pose
 from drivekin.swerve cimport SwerveDriveKinematics
 from drivekin.swervemodule cimport SwerveModulePosition
 from drivekin.mecanum cimport MecanumDriveKinematics, MecanumDriveWheelPositions
+from drivekin.differential cimport DifferentialDriveKinematics
 from drivekin.deadwheel cimport DeadWheelKinematics
 from drivekin.chassis cimport new_chassis_velocities
 from drivekin._core.errors import type_name
+
+# DifferentialDriveOdometry's drivetrain, as WPILib's: the trackwidth only scales the
+# wheels' dθ, which the gyro's replaces.
+cdef DifferentialDriveKinematics UNIT_TRACKWIDTH = DifferentialDriveKinematics(1.0)
 
 
 cdef pose2_t initial(object p) except *:
@@ -40,14 +44,66 @@ cdef int uninitialised(object odometry) except -1:
     raise RuntimeError(f"{type(odometry).__name__}.__init__ has not completed")
 
 
+cdef inline void advance(_Odometry o, double* cur, const double* c, const double* s,
+                         const rot2_t* gyro) noexcept:
+    # The update on readings already in C memory (cur: scratch, left holding the changes;
+    # steered: c, s the module directions): the drivetrain's motion for the heading
+    # change, which is the gyro's (gyro NULL: the wheels'), and the pose move.
+    cdef double r[3]
+    cdef double dth
+    cdef rot2_t turn
+    position_changes(o.width, cur, o.prev)
+    if gyro != NULL:
+        turn = gyro_turn(gyro[0], &o.prev_gyro)
+        dth = rot_radians(turn)
+        o.kin._twists(1, cur, c, s, &dth, r)
+        odometry_move_cs(&o.pose, &o.twist, r[0], r[1], dth, turn.c, turn.s, True)
+    else:
+        o.kin._twists(1, cur, c, s, NULL, r)
+        odometry_move(&o.pose, &o.twist, r[0], r[1], r[2])
+
+
 cdef class _Odometry:
     """Pose state and the resets shared by every odometry class."""
+
+    def __dealloc__(self):
+        PyMem_Free(self.prev)
 
     cdef int _start_init(self) except -1:
         if self.ready:
             raise TypeError(f"{type(self).__name__} is already initialised: __init__ cannot "
                             "be called again (use resetPosition)")
         return 0
+
+    cdef int _setup(self, Drivetrain kin, Py_ssize_t width, bint steered, object gyro_angle,
+                    pose2_t p, const double* readings) except -1:
+        # The end of every __init__, once its arguments are valid and ``readings`` (width
+        # values) are in C memory; gyro_angle is a Rotation2d, or None without a gyro.
+        cdef Py_ssize_t i
+        self._start_init()      # again: reading the positions may have run Python code
+        cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * width)
+        if prev == NULL:
+            raise MemoryError()
+        for i in range(width):
+            prev[i] = readings[i]
+        self.prev = prev
+        self.kin = kin
+        self.width = width
+        self.steered = steered
+        self.gyro = gyro_angle is not None
+        if self.gyro:
+            self.prev_gyro = (<Rotation2d>gyro_angle).r
+        self.pose = p
+        self.ready = True
+        return 0
+
+    cdef void _reset(self, const rot2_t* gyro, pose2_t p, const double* readings) noexcept:
+        cdef Py_ssize_t i
+        for i in range(self.width):
+            self.prev[i] = readings[i]
+        if gyro != NULL:
+            self.prev_gyro = gyro[0]
+        self.pose = p
 
     def getPose(self):
         """Return the current pose estimate (field frame, m)."""
@@ -78,8 +134,23 @@ cdef class _Odometry:
         self.pose.r = (<Rotation2d>rotation).r
 
     cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
-                       double* dth, double* mxy, double* scratch) noexcept nogil:
-        pass
+                       double* dth, double* mxy) noexcept nogil:
+        # Wheel-major, as _twists takes them, so both passes vectorise across samples.
+        cdef Py_ssize_t i, j
+        cdef double d, last
+        for j in range(self.width):
+            last = self.prev[j]
+            for i in range(k):
+                d = x[k * j + i]
+                x[k * j + i] = d - last
+                last = d
+            self.prev[j] = last
+        if self.gyro:
+            self.kin._twists(k, x, c, s, dth, mxy)
+        else:
+            self.kin._twists(k, x, c, s, NULL, mxy)
+            for i in range(k):
+                dth[i] = mxy[2 * k + i]
 
 
 cdef class SwerveDriveOdometry(_Odometry):
@@ -89,48 +160,25 @@ cdef class SwerveDriveOdometry(_Odometry):
     an (N, 2) float64 array ``[distance m, angle rad]``) and a gyro angle (Rotation2d).
     """
 
-    def __cinit__(self, *args, **kwargs):
-        self.prev = NULL
-
     def __init__(self, kinematics: SwerveDriveKinematics, gyro_angle: Rotation2d,
                  module_positions, initial_pose=None):
-        cdef Py_ssize_t i
         check_type(kinematics, SwerveDriveKinematics, "kinematics")
         check_type(gyro_angle, Rotation2d, "gyro_angle")
         cdef SwerveDriveKinematics kin = <SwerveDriveKinematics>kinematics
         self._start_init()
         cdef pose2_t p = initial(initial_pose)
         kin._read(module_positions, SwerveModulePosition, "module_positions")
-        self._start_init()      # again: reading an iterable ran Python code
-        cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kin.n)
-        if prev == NULL:
-            raise MemoryError()
-        for i in range(kin.n):
-            prev[i] = kin.s0[i]
-        self.prev = prev
-        self.kin = kin
-        self.width = kin.n
-        self.steered = True
-        self.gyro = True
-        self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.pose = p
-        self.ready = True
-
-    def __dealloc__(self):
-        PyMem_Free(self.prev)
+        self._setup(kin, kin.n, True, gyro_angle, p, kin.s0)
 
     def resetPosition(self, gyro_angle: Rotation2d, wheel_positions, pose: Pose2d):
         """Reset the pose, the gyro baseline and the module-position baseline."""
-        cdef Py_ssize_t i
         check_type(gyro_angle, Rotation2d, "gyro_angle")
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self.kin._read(wheel_positions, SwerveModulePosition, "wheel_positions")
-        for i in range(self.kin.n):
-            self.prev[i] = self.kin.s0[i]
-        self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.pose = (<Pose2d>pose).p
+        cdef SwerveDriveKinematics k = <SwerveDriveKinematics>self.kin
+        k._read(wheel_positions, SwerveModulePosition, "wheel_positions")
+        self._reset(&(<Rotation2d>gyro_angle).r, (<Pose2d>pose).p, k.s0)
 
     def update(self, gyro_angle: Rotation2d, wheel_positions):
         """Integrate the module-distance changes since the last call (at the current module
@@ -140,39 +188,12 @@ cdef class SwerveDriveOdometry(_Odometry):
         return new_pose(self.pose)
 
     cdef int _step(self, Rotation2d gyro_angle, object wheel_positions) except -1:
-        cdef SwerveDriveKinematics k = self.kin
         if not self.ready:
             uninitialised(self)
-        cdef double r[3]
+        cdef SwerveDriveKinematics k = <SwerveDriveKinematics>self.kin
         k._read(wheel_positions, SwerveModulePosition, "wheel_positions")
-        self._motion(k.s0, k.s1, k.s2, r)
-        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro_angle.r)
+        advance(self, k.s0, k.s1, k.s2, &gyro_angle.r)
         return 0
-
-    cdef void _motion(self, double* dist, const double* c, const double* s,
-                      double* r) noexcept nogil:
-        cdef Py_ssize_t i
-        cdef double d
-        for i in range(self.kin.n):
-            d = dist[i]
-            dist[i] = d - self.prev[i]
-            self.prev[i] = d
-        forward_solve(3, self.kin.n, self.kin.f1, dist, c, s, r)
-
-    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
-                       double* dth, double* mxy, double* scratch) noexcept nogil:
-        # Module-major, so both loops vectorise across samples: the distance changes,
-        # then the solve for (dx, dy) (its dθ row is not needed: the gyro gives dθ).
-        cdef Py_ssize_t i, j, n = self.kin.n
-        cdef double d, last
-        for j in range(n):
-            last = self.prev[j]
-            for i in range(k):
-                d = x[k * j + i]
-                x[k * j + i] = d - last
-                last = d
-            self.prev[j] = last
-        forward_solve_many(2, n, k, self.kin.f1, x, c, s, mxy)
 
 
 cdef class MecanumDriveOdometry(_Odometry):
@@ -188,13 +209,9 @@ cdef class MecanumDriveOdometry(_Odometry):
         check_type(wheel_positions, MecanumDriveWheelPositions, "wheel_positions")
         self._start_init()
         (<MecanumDriveKinematics>kinematics)._ready()
-        self.pose = initial(initial_pose)
-        self.kin = <MecanumDriveKinematics>kinematics
-        self.prev = (<_WheelValues>wheel_positions).w
-        self.width = 4
-        self.gyro = True
-        self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.ready = True
+        cdef pose2_t p = initial(initial_pose)
+        self._setup(<MecanumDriveKinematics>kinematics, 4, False, gyro_angle, p,
+                    (<_WheelValues>wheel_positions).w)
 
     def resetPosition(self, gyro_angle: Rotation2d,
                       wheel_positions: MecanumDriveWheelPositions, pose: Pose2d):
@@ -204,9 +221,8 @@ cdef class MecanumDriveOdometry(_Odometry):
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self.prev = (<_WheelValues>wheel_positions).w
-        self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.pose = (<Pose2d>pose).p
+        self._reset(&(<Rotation2d>gyro_angle).r, (<Pose2d>pose).p,
+                    (<_WheelValues>wheel_positions).w)
 
     def update(self, gyro_angle: Rotation2d,
                wheel_positions: MecanumDriveWheelPositions):
@@ -221,28 +237,10 @@ cdef class MecanumDriveOdometry(_Odometry):
                    MecanumDriveWheelPositions wheel_positions) except -1:
         if not self.ready:
             uninitialised(self)
-        cdef double r[3]
-        self._motion((<_WheelValues>wheel_positions).w, r)
-        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro_angle.r)
+        cdef double cur[4]
+        cur = (<_WheelValues>wheel_positions).w
+        advance(self, cur, NULL, NULL, &gyro_angle.r)
         return 0
-
-    cdef void _motion(self, const double* w, double* r) noexcept nogil:
-        cdef double d[4]
-        cdef Py_ssize_t i
-        for i in range(4):
-            d[i] = w[i] - self.prev[i]
-        for i in range(4):
-            self.prev[i] = w[i]
-        mat_vec(3, 4, self.kin.f, d, r)
-
-    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
-                       double* dth, double* mxy, double* scratch) noexcept nogil:
-        cdef Py_ssize_t i
-        cdef double r[3]
-        for i in range(k):
-            self._motion(x + 4 * i, r)
-            mxy[i] = r[0]
-            mxy[k + i] = r[1]
 
 
 cdef class DifferentialDriveOdometry(_Odometry):
@@ -256,13 +254,10 @@ cdef class DifferentialDriveOdometry(_Odometry):
                  initial_pose=None):
         check_type(gyro_angle, Rotation2d, "gyro_angle")
         self._start_init()
-        self.pose = initial(initial_pose)
-        self.prev_l = left_distance
-        self.prev_r = right_distance
-        self.width = 2
-        self.gyro = True
-        self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.ready = True
+        cdef double w[2]
+        w[0] = left_distance
+        w[1] = right_distance
+        self._setup(UNIT_TRACKWIDTH, 2, False, gyro_angle, initial(initial_pose), w)
 
     def resetPosition(self, gyro_angle: Rotation2d, double left_distance,
                       double right_distance, pose: Pose2d):
@@ -271,10 +266,10 @@ cdef class DifferentialDriveOdometry(_Odometry):
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self.prev_l = left_distance
-        self.prev_r = right_distance
-        self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.pose = (<Pose2d>pose).p
+        cdef double w[2]
+        w[0] = left_distance
+        w[1] = right_distance
+        self._reset(&(<Rotation2d>gyro_angle).r, (<Pose2d>pose).p, w)
 
     def update(self, gyro_angle: Rotation2d, double left_distance, double right_distance):
         """Integrate the wheel-distance changes since the last call (dx = mean change,
@@ -287,27 +282,35 @@ cdef class DifferentialDriveOdometry(_Odometry):
                    double right_distance) except -1:
         if not self.ready:
             uninitialised(self)
-        cdef double r[3]
-        self._motion(left_distance, right_distance, r)
-        odometry_step(&self.pose, &self.prev_gyro, &self.twist, r[0], r[1], gyro_angle.r)
+        cdef double cur[2]
+        cur[0] = left_distance
+        cur[1] = right_distance
+        advance(self, cur, NULL, NULL, &gyro_angle.r)
         return 0
 
-    cdef void _motion(self, double left_distance, double right_distance,
-                      double* r) noexcept nogil:
-        cdef double dl = left_distance - self.prev_l, dr = right_distance - self.prev_r
-        self.prev_l = left_distance
-        self.prev_r = right_distance
-        r[0] = (dl + dr) / 2.0
-        r[1] = 0.0
 
-    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
-                       double* dth, double* mxy, double* scratch) noexcept nogil:
+@cython.final
+cdef class _TwoDeadWheels(Drivetrain):
+    """TwoDeadWheelOdometry's wheels as a drivetrain: a forward-facing wheel at y = xy, a
+    left-facing one at x = yx (m). They cannot observe rotation: _twists needs dth."""
+    cdef double xy
+    cdef double yx
+
+    cdef int _ready(self) except -1:
+        return 0
+
+    cdef int _forward_check(self, bint gyro, bint accel) except -1:
+        if not gyro:
+            raise ValueError("two dead wheels cannot observe rotation: pass the gyro's")
+        return 0
+
+    cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
+                      const double* dth, double* out) noexcept nogil:
+        # The wheels' readings minus the arcs the heading change swept them through.
         cdef Py_ssize_t i
-        cdef double r[3]
         for i in range(k):
-            self._motion(x[2 * i], x[2 * i + 1], r)
-            mxy[i] = r[0]
-            mxy[k + i] = r[1]
+            out[i] = d[i] + dth[i] * self.xy
+            out[k + i] = d[k + i] - dth[i] * self.yx
 
 
 cdef class TwoDeadWheelOdometry(_Odometry):
@@ -329,15 +332,16 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         if not (isfinite(x_wheel_y_pos) and isfinite(y_wheel_x_pos)):
             raise ValueError(f"wheel offsets must be finite (m), got x_wheel_y_pos="
                              f"{x_wheel_y_pos!r}, y_wheel_x_pos={y_wheel_x_pos!r}")
-        self.pose = initial(initial_pose)
-        self.x_wheel_y = x_wheel_y_pos
-        self.y_wheel_x = y_wheel_x_pos
-        self.prev_x = x_wheel_pos
-        self.prev_y = y_wheel_pos
-        self.width = 2
-        self.gyro = True
-        self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.ready = True
+        cdef pose2_t p = initial(initial_pose)
+        cdef _TwoDeadWheels wheels = _TwoDeadWheels.__new__(_TwoDeadWheels)
+        wheels.nwheels = 2
+        wheels.gyro_forward = True
+        wheels.xy = x_wheel_y_pos
+        wheels.yx = y_wheel_x_pos
+        cdef double w[2]
+        w[0] = x_wheel_pos
+        w[1] = y_wheel_pos
+        self._setup(wheels, 2, False, gyro_angle, p, w)
 
     def resetPosition(self, double x_wheel_pos, double y_wheel_pos, gyro_angle: Rotation2d,
                       pose: Pose2d):
@@ -346,10 +350,10 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
-        self.prev_x = x_wheel_pos
-        self.prev_y = y_wheel_pos
-        self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.pose = (<Pose2d>pose).p
+        cdef double w[2]
+        w[0] = x_wheel_pos
+        w[1] = y_wheel_pos
+        self._reset(&(<Rotation2d>gyro_angle).r, (<Pose2d>pose).p, w)
 
     def update(self, double x_wheel_pos, double y_wheel_pos, gyro_angle: Rotation2d):
         """Integrate the wheel-distance changes (m) since the last call and the gyro
@@ -362,29 +366,11 @@ cdef class TwoDeadWheelOdometry(_Odometry):
                    Rotation2d gyro_angle) except -1:
         if not self.ready:
             uninitialised(self)
-        cdef double r[3]
-        cdef rot2_t turn = gyro_turn(gyro_angle.r, &self.prev_gyro)
-        cdef double dtheta = rot_radians(turn)
-        self._motion(x_wheel_pos, y_wheel_pos, dtheta, r)
-        odometry_move_cs(&self.pose, &self.twist, r[0], r[1], dtheta, turn.c, turn.s, True)
+        cdef double cur[2]
+        cur[0] = x_wheel_pos
+        cur[1] = y_wheel_pos
+        advance(self, cur, NULL, NULL, &gyro_angle.r)
         return 0
-
-    cdef void _motion(self, double x_wheel_pos, double y_wheel_pos, double dtheta,
-                      double* r) noexcept nogil:
-        # The wheels' readings minus the arcs the heading change dtheta swept them through.
-        r[0] = x_wheel_pos - self.prev_x + dtheta * self.x_wheel_y
-        r[1] = y_wheel_pos - self.prev_y - dtheta * self.y_wheel_x
-        self.prev_x = x_wheel_pos
-        self.prev_y = y_wheel_pos
-
-    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
-                       double* dth, double* mxy, double* scratch) noexcept nogil:
-        cdef Py_ssize_t i
-        cdef double r[3]
-        for i in range(k):
-            self._motion(x[2 * i], x[2 * i + 1], dth[i], r)
-            mxy[i] = r[0]
-            mxy[k + i] = r[1]
 
     def toChassisVelocities(self, double vx, double vy, double omega):
         """Return the robot velocity from the forward wheel's and left wheel's surface
@@ -392,8 +378,8 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         (vx + omega·x_wheel_y_pos, vy − omega·y_wheel_x_pos, omega)."""
         if not self.ready:
             uninitialised(self)
-        return new_chassis_velocities(vx + omega * self.x_wheel_y,
-                                      vy - omega * self.y_wheel_x, omega)
+        cdef _TwoDeadWheels w = <_TwoDeadWheels>self.kin
+        return new_chassis_velocities(vx + omega * w.xy, vy - omega * w.yx, omega)
 
 
 cdef class DeadWheelOdometry(_Odometry):
@@ -408,9 +394,6 @@ cdef class DeadWheelOdometry(_Odometry):
     must then always pass one, or never.
     """
 
-    def __cinit__(self, *args, **kwargs):
-        self.prev = NULL
-
     def __init__(self, kinematics: DeadWheelKinematics, wheel_positions,
                  gyro_angle=None, initial_pose=None):
         check_type(kinematics, DeadWheelKinematics, "kinematics")
@@ -424,25 +407,8 @@ cdef class DeadWheelOdometry(_Odometry):
             raise TypeError(f"gyro_angle must be a Rotation2d or None, "
                             f"got {type_name(gyro_angle)}")
         cdef pose2_t p = initial(initial_pose)
-        cdef double* prev = <double*>PyMem_Malloc(sizeof(double) * kin.n)
-        if prev == NULL:
-            raise MemoryError()
-        try:
-            kin._read(wheel_positions, prev, "wheel_positions")
-        except BaseException:
-            PyMem_Free(prev)
-            raise
-        self.prev = prev
-        self.kin = kin
-        self.width = kin.n
-        self.gyro = gyro_angle is not None
-        if self.gyro:
-            self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.pose = p
-        self.ready = True
-
-    def __dealloc__(self):
-        PyMem_Free(self.prev)
+        kin._read(wheel_positions, kin.s, "wheel_positions")
+        self._setup(kin, kin.n, False, gyro_angle, p, kin.s)
 
     cdef int _gyro_arg(self, object gyro_angle, str call) except -1:
         if self.gyro:
@@ -457,17 +423,14 @@ cdef class DeadWheelOdometry(_Odometry):
     def resetPosition(self, wheel_positions, gyro_angle, pose: Pose2d):
         """Reset the pose, the wheel-position baselines and (with a gyro) the gyro
         baseline; pass ``gyro_angle=None`` for an odometry without a gyro."""
-        cdef Py_ssize_t i
         check_type(pose, Pose2d, "pose")
         if not self.ready:
             uninitialised(self)
         self._gyro_arg(gyro_angle, "resetPosition")
-        self.kin._read(wheel_positions, self.kin.s, "wheel_positions")
-        for i in range(self.kin.n):
-            self.prev[i] = self.kin.s[i]
-        if self.gyro:
-            self.prev_gyro = (<Rotation2d>gyro_angle).r
-        self.pose = (<Pose2d>pose).p
+        cdef DeadWheelKinematics k = <DeadWheelKinematics>self.kin
+        k._read(wheel_positions, k.s, "wheel_positions")
+        self._reset(&(<Rotation2d>gyro_angle).r if self.gyro else NULL, (<Pose2d>pose).p,
+                    k.s)
 
     def update(self, wheel_positions, gyro_angle=None):
         """Integrate the wheel-distance changes (m) since the last call (and the gyro
@@ -476,45 +439,10 @@ cdef class DeadWheelOdometry(_Odometry):
         return new_pose(self.pose)
 
     cdef int _step(self, object wheel_positions, object gyro_angle) except -1:
-        cdef DeadWheelKinematics k = self.kin
         if not self.ready:
             uninitialised(self)
         self._gyro_arg(gyro_angle, "update")
+        cdef DeadWheelKinematics k = <DeadWheelKinematics>self.kin
         k._read(wheel_positions, k.s, "wheel_positions")
-        cdef double r[3]
-        cdef rot2_t turn
-        if self.gyro:
-            turn = gyro_turn((<Rotation2d>gyro_angle).r, &self.prev_gyro)
-            self._motion(k.s, rot_radians(turn), r)
-            odometry_move_cs(&self.pose, &self.twist, r[0], r[1], r[2], turn.c, turn.s,
-                             True)
-        else:
-            self._motion(k.s, 0.0, r)
-            odometry_move(&self.pose, &self.twist, r[0], r[1], r[2])
+        advance(self, k.s, NULL, NULL, &(<Rotation2d>gyro_angle).r if self.gyro else NULL)
         return 0
-
-    cdef void _motion(self, double* dist, double dtheta, double* r) noexcept nogil:
-        # r = (dx, dy, dθ); with a gyro dθ is the given dtheta, without one it is fitted
-        # from the wheels (dtheta is ignored).
-        cdef Py_ssize_t i
-        cdef double d
-        for i in range(self.kin.n):
-            d = dist[i]
-            dist[i] = d - self.prev[i]
-            self.prev[i] = d
-        deadwheel_solve(self.kin.n, self.kin.p3, self.kin.p2, self.kin.g, dist, self.gyro,
-                        dtheta, r)
-
-    cdef void _motions(self, Py_ssize_t k, double* x, const double* c, const double* s,
-                       double* dth, double* mxy, double* scratch) noexcept nogil:
-        # _motion turns the distances into changes in place: a copy of each row.
-        cdef Py_ssize_t i, j, n = self.width
-        cdef double r[3]
-        for i in range(k):
-            for j in range(n):
-                scratch[j] = x[n * i + j]
-            self._motion(scratch, dth[i] if self.gyro else 0.0, r)
-            if not self.gyro:
-                dth[i] = r[2]
-            mxy[i] = r[0]
-            mxy[k + i] = r[1]

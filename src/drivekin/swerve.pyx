@@ -24,7 +24,7 @@ from drivekin._core.types cimport desat_t, rot2_t, vec2_t, vec3_t
 from drivekin._core.args cimport as_fast, check_type, exact_type, float64_data, snapshot
 from drivekin._core.kernels cimport (
     chassis_discretize, desaturate_factors, desaturated_discretize_scale, forward_solve,
-    jmax, max_abs, swerve_ik, swerve_ik_accel, vec, vec_eq,
+    forward_solve_many, jmax, max_abs, swerve_ik, swerve_ik_accel, vec, vec_eq,
 )
 from drivekin.swervemodule cimport (SwerveModuleAcceleration, SwerveModulePosition,
                                     SwerveModuleVelocity, _ModuleVector, new_modules)
@@ -335,6 +335,16 @@ cdef class SwerveDriveKinematics(Drivetrain):
             else:
                 forward_solve(3, n, params, m + j, c + j, s + j, out + 3 * i)
 
+    cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
+                      const double* dth, double* out) noexcept nogil:
+        # The velocity pseudo-inverse's rows, without the dθ row when it is known. Many
+        # samples at once vectorise across the samples; for one, forward_solve is the
+        # cheaper form of the same sums.
+        cdef Py_ssize_t rows = 2 if dth != NULL else 3
+        if k == 1:
+            forward_solve(rows, self.n, self.f1, d, c, s, out)
+        else:
+            forward_solve_many(rows, self.n, k, self.f1, d, c, s, out)
 
     cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1:
         # Exact zero returns the remembered headings without looking at the CoR.

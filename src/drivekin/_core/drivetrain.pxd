@@ -1,7 +1,7 @@
 # The drivetrain contract: what the code that loops over drivetrains needs from a
 # kinematics class, on C memory. drivekin.batch's kinematics functions are written once
-# against it; the odometry classes' step uses their own kinematics directly (see
-# drivekin.odometry for the odometry half of the contract, _Odometry._motions).
+# against it, and so is odometry: drivekin.odometry's one 2-D implementation (and
+# drivekin.odometry3d's 3-D one) turns wheel readings into motion with _twists only.
 #
 # A wheel sample is what the class's forward map reads and its inverse map writes: W
 # values (mecanum 4, differential 2 [left, right], dead wheels W), or for a steered
@@ -47,3 +47,36 @@ cdef class Drivetrain:
     cdef void _forward_many(self, Py_ssize_t k, const double* m, const double* c,
                             const double* s, const double* gyro, bint accel,
                             const double* params, double* out) noexcept nogil   # OUT
+    # The odometry map: the robot's motion over k samples of wheel-position changes, each
+    # the Twist2d of WPILib's toTwist2d (dx, dy in m in the frame of the pose the sample
+    # starts from; dθ in rad, counter-clockwise).
+    # d: the changes since the previous reading (m), wheel-major: wheel (or module) j of
+    #    sample i at d[k·j + i]; steered: c, s the cos and sin of each module's angle in
+    #    the same layout (the current reading's angle, as WPILib), otherwise NULL. The
+    #    CALLER owns every buffer and the previous readings: it forms the changes
+    #    (position_changes below), so the map itself keeps no state.
+    # dth: NULL, or the k heading changes the caller knows (a gyro's, rad). Given, only
+    #    (dx, dy) are computed, for that heading change: dead wheels fit them to the
+    #    readings less the arcs the turn swept each wheel through (so 3-D odometry passes
+    #    its yaw change); swerve, mecanum and differential ignore it (their (dx, dy) do not
+    #    depend on dθ; odometry replaces their dθ by the gyro's, as WPILib does). NULL:
+    #    dθ comes from the wheels too; call _forward_check(False, False) first (dead
+    #    wheels that cannot observe rotation refuse).
+    # out: 3k values: dx at out[i], dy at out[k + i], and with dth NULL dθ at out[2k + i]
+    #    (with dth given, out[2k:] is not written). It must not overlap d, c, s or dth.
+    # Reads only what is fixed at construction (the forward matrices), so it needs no
+    # params copy and runs without the GIL; call _ready() first. Per call, k = 1.
+    cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
+                      const double* dth, double* out) noexcept nogil   # OUT
+
+
+cdef inline void position_changes(Py_ssize_t n, double* cur,                    # IN/OUT
+                                  double* prev) noexcept nogil:                 # IN/OUT
+    # One sample's n readings (m) into the changes since prev, which becomes the readings:
+    # what _twists takes (k = 1), cur[j] ← cur[j] − prev[j], prev[j] ← the old cur[j].
+    cdef Py_ssize_t j
+    cdef double r
+    for j in range(n):
+        r = cur[j]
+        cur[j] = r - prev[j]
+        prev[j] = r

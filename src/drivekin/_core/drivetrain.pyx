@@ -42,3 +42,7 @@ cdef class Drivetrain:
                             const double* s, const double* gyro, bint accel,
                             const double* params, double* out) noexcept nogil:
         pass
+
+    cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
+                      const double* dth, double* out) noexcept nogil:
+        pass

@@ -467,17 +467,24 @@ cdef inline void desaturate_factors(double real_max, const desat_t* p,
 # ---------------------------------------------------------------------------------------
 # Small dense products (mecanum, differential) and the odometry step
 
-cdef inline void mat_vec(Py_ssize_t rows, Py_ssize_t cols, const double* m, const double* x,
-                         double* out                                  # OUT, rows values
-                         ) noexcept nogil:
-    # Row-major m; summed left to right like EJML, so 0 * inf spreads NaN as in WPILib.
+cdef inline void mat_vec_step(Py_ssize_t rows, Py_ssize_t cols, const double* m,
+                              const double* x, Py_ssize_t step,
+                              double* out                             # OUT, rows values
+                              ) noexcept nogil:
+    # Row-major m times the vector x[0], x[step], x[2·step], ...; summed left to right like
+    # EJML, so 0 * inf spreads NaN as in WPILib.
     cdef Py_ssize_t r, c
     cdef double acc
     for r in range(rows):
         acc = m[r * cols] * x[0]
         for c in range(1, cols):
-            acc = acc + m[r * cols + c] * x[c]
+            acc = acc + m[r * cols + c] * x[c * step]
         out[r] = acc
+
+cdef inline void mat_vec(Py_ssize_t rows, Py_ssize_t cols, const double* m, const double* x,
+                         double* out                                  # OUT, rows values
+                         ) noexcept nogil:
+    mat_vec_step(rows, cols, m, x, 1, out)
 
 cdef inline pose2_t odometry_motion(double dx, double dy, double dtheta,
                                     double ct, double st, bint unit) noexcept nogil:
@@ -547,18 +554,20 @@ cdef inline void wheels_desaturate(Py_ssize_t n, const double* w, double attaina
 # sin φ_i, x_i sin φ_i − y_i cos φ_i). The pseudo-inverses are built once per layout.
 
 cdef inline void deadwheel_solve(Py_ssize_t n, const double* p3, const double* p2,
-                                 const double* g, const double* d, bint gyro, double w,
+                                 const double* g, const double* d, Py_ssize_t step,
+                                 bint gyro, double w,
                                  double* out                         # OUT, 3 values
                                  ) noexcept nogil:
     # Without a gyro: t = M⁺·d (p3, 3 x n). With one, dθ = w is fixed and only (dx, dy)
     # is fitted: A⁺·(d − c·w) = A⁺·d − (A⁺c)·w, with p2 = A⁺ (2 x n) and g = A⁺c.
+    # Wheel j's reading is d[j·step].
     if gyro:
-        mat_vec(2, n, p2, d, out)
+        mat_vec_step(2, n, p2, d, step, out)
         out[0] = out[0] - g[0] * w
         out[1] = out[1] - g[1] * w
         out[2] = w
     else:
-        mat_vec(3, n, p3, d, out)
+        mat_vec_step(3, n, p3, d, step, out)
 
 cdef inline double deadwheel_reading(const double* row, double x, double y, double z) noexcept nogil:
     # One wheel's reading for the chassis vector (x, y, z): the inverse map, row by row.
