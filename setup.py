@@ -54,7 +54,8 @@ compile_args = (["-O3", "-fno-math-errno", "-fno-trapping-math", "-ffp-contract=
                 if os.name != "nt" else [])
 
 modules = ["geometry", "geometry3d", "chassis", "swervemodule", "swerve", "_core.wheels", "_core.drivetrain",
-           "differential", "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "batch",
+           "differential", "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "odometry3d",
+           "estimator3d", "batch",
            "_core.alloccount", "_core.wpilog", "motor", "robotconfig", "_core.setpointkernel",
            "setpoint"]
 

@@ -28,6 +28,13 @@ from drivekin.estimator import (
     SwerveDrivePoseEstimator,
     TwoDeadWheelPoseEstimator,
 )
+from drivekin.estimator3d import (
+    DeadWheelPoseEstimator3d,
+    DifferentialDrivePoseEstimator3d,
+    MecanumDrivePoseEstimator3d,
+    SwerveDrivePoseEstimator3d,
+    TwoDeadWheelPoseEstimator3d,
+)
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.interpolation import TimeInterpolatableBuffer
 from drivekin.motor import DCMotor
@@ -58,6 +65,13 @@ from drivekin.odometry import (
     MecanumDriveOdometry,
     SwerveDriveOdometry,
     TwoDeadWheelOdometry,
+)
+from drivekin.odometry3d import (
+    DeadWheelOdometry3d,
+    DifferentialDriveOdometry3d,
+    MecanumDriveOdometry3d,
+    SwerveDriveOdometry3d,
+    TwoDeadWheelOdometry3d,
 )
 
 try:
@@ -108,6 +122,19 @@ __all__ += [
     "DifferentialSwerveModuleVelocities",
     "DifferentialSwerveMotorVelocities",
 ]
+# 3-D odometry and pose estimators (drivekin.odometry3d, drivekin.estimator3d).
+__all__ += [
+    "DeadWheelOdometry3d",
+    "DeadWheelPoseEstimator3d",
+    "DifferentialDriveOdometry3d",
+    "DifferentialDrivePoseEstimator3d",
+    "MecanumDriveOdometry3d",
+    "MecanumDrivePoseEstimator3d",
+    "SwerveDriveOdometry3d",
+    "SwerveDrivePoseEstimator3d",
+    "TwoDeadWheelOdometry3d",
+    "TwoDeadWheelPoseEstimator3d",
+]
 # PathPlannerLib's swerve setpoint generator (drivekin.setpoint; ModuleConfig and RobotConfig
 # live in drivekin.robotconfig, which drivekin.setpoint re-exports).
 __all__ += [
@@ -147,6 +174,10 @@ if TYPE_CHECKING:
     SwerveDrive4Odometry = SwerveDrive6Odometry = SwerveDriveOdometry
     SwerveDrive2PoseEstimator = SwerveDrive3PoseEstimator = SwerveDrivePoseEstimator
     SwerveDrive4PoseEstimator = SwerveDrive6PoseEstimator = SwerveDrivePoseEstimator
+    SwerveDrive2Odometry3d = SwerveDrive3Odometry3d = SwerveDriveOdometry3d
+    SwerveDrive4Odometry3d = SwerveDrive6Odometry3d = SwerveDriveOdometry3d
+    SwerveDrive2PoseEstimator3d = SwerveDrive3PoseEstimator3d = SwerveDrivePoseEstimator3d
+    SwerveDrive4PoseEstimator3d = SwerveDrive6PoseEstimator3d = SwerveDrivePoseEstimator3d
 
     class TimeInterpolatablePose2dBuffer(TimeInterpolatableBuffer[Pose2d]):
         def __init__(self, history_size: float,

@@ -5,7 +5,8 @@ integrations built on it agree with it.
   entry; a missing one fails here by name. No class has two.
 * Kinds match the contracts: the kinematics classes that implement the drivetrain
   contract subclass ``_core.drivetrain.Drivetrain``, the odometry classes
-  ``odometry._Odometry``, the estimators ``estimator._PoseEstimator``, and no other entry
+  ``odometry._Odometry``, the estimators ``estimator._PoseEstimator``, the 3-D ones
+  ``odometry3d._Odometry3d`` and ``estimator3d._PoseEstimator3d``, and no other entry
   does; every subclass of those bases is catalogued.
 * wpistruct, protobuf, interop and ``SerializableValue`` cover exactly the entries with a
   struct, a protobuf message, a robotpy-wpimath peer.
@@ -31,9 +32,12 @@ from drivekin import interop, protobuf, wpistruct
 from drivekin._core import catalog
 from drivekin._core.drivetrain import Drivetrain
 from drivekin.estimator import _PoseEstimator
+from drivekin.estimator3d import _PoseEstimator3d
 from drivekin.odometry import _Odometry
+from drivekin.odometry3d import _Odometry3d
 
-KINDS = {"value", "kinematics", "odometry", "estimator", "helper", "warning"}
+KINDS = {"value", "kinematics", "odometry", "estimator", "odometry3d", "estimator3d", "helper",
+         "warning"}
 
 # Public submodules whose classes are not the catalog's kinds: the .wpilog reader/writer
 # and its records (drivekin.datalog), replay's configuration and results (drivekin.replay),
@@ -42,7 +46,8 @@ KINDS = {"value", "kinematics", "odometry", "estimator", "helper", "warning"}
 LOG_TOOLS = {"drivekin.datalog", "drivekin.replay", "drivekin.calibrate"}
 # The modules the issue names: discovery must find every one of them.
 EXPECTED_MODULES = {"chassis", "swervemodule", "swerve", "geometry", "mecanum", "differential",
-                    "deadwheel", "diffswerve", "odometry", "estimator", "interpolation",
+                    "deadwheel", "diffswerve", "odometry", "estimator", "odometry3d",
+                    "estimator3d", "interpolation",
                     "units", "kinematics", "batch", "wpistruct", "protobuf", "interop"}
 # Kinematics entries that do not implement the drivetrain contract, and why.
 NOT_A_DRIVETRAIN = {
@@ -127,7 +132,7 @@ def test_no_class_is_registered_twice():
 @pytest.mark.parametrize("e", catalog.ENTRIES, ids=_id)
 def test_entry_kind_and_drivetrain(e):
     assert e.kind in KINDS, f"{e.cls.__name__}: unknown kind {e.kind!r}"
-    if e.kind in ("kinematics", "odometry", "estimator"):
+    if e.kind in ("kinematics", "odometry", "estimator", "odometry3d", "estimator3d"):
         assert e.drivetrain, f"{e.cls.__name__}: a {e.kind} entry names its drivetrain"
     if e.kind in ("helper", "warning"):
         assert e.drivetrain is None
@@ -143,7 +148,8 @@ def test_entries_selects_by_kind_and_drivetrain():
     for kind in KINDS:
         assert all(e.kind == kind for e in catalog.entries(kind))
     swerve = catalog.entries(drivetrain="swerve")
-    assert {e.kind for e in swerve} == {"value", "kinematics", "odometry", "estimator"}
+    assert {e.kind for e in swerve} == {"value", "kinematics", "odometry", "estimator",
+                                        "odometry3d", "estimator3d"}
     assert [e.cls for e in catalog.entries("odometry", drivetrain="swerve")] == [
         drivekin.SwerveDriveOdometry]
 
@@ -162,7 +168,8 @@ def _all_subclasses(base: type) -> set[type]:
     return out
 
 
-CONTRACTS = {"kinematics": Drivetrain, "odometry": _Odometry, "estimator": _PoseEstimator}
+CONTRACTS = {"kinematics": Drivetrain, "odometry": _Odometry, "estimator": _PoseEstimator,
+             "odometry3d": _Odometry3d, "estimator3d": _PoseEstimator3d}
 
 
 @pytest.mark.parametrize("e", catalog.ENTRIES, ids=_id)
@@ -190,7 +197,7 @@ def test_every_drivetrain_has_its_odometry_and_estimator():
     for e in catalog.entries("kinematics"):
         if e.cls in NOT_A_DRIVETRAIN:
             continue
-        for kind in ("odometry", "estimator"):
+        for kind in ("odometry", "estimator", "odometry3d", "estimator3d"):
             found = catalog.entries(kind, drivetrain=e.drivetrain)
             assert len(found) == 1, f"{e.drivetrain}: {kind} entries {found}"
 

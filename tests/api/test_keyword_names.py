@@ -40,7 +40,8 @@ DATA = json.loads((Path(__file__).resolve().parents[1] / "data" /
 # The modules whose classes follow wpimath (drivekin.setpoint and drivekin.robotconfig keep
 # PathPlannerLib's spellings; drivekin.batch has its own).
 MODULES = ("geometry", "chassis", "swervemodule", "swerve", "mecanum", "differential",
-           "diffswerve", "deadwheel", "odometry", "estimator", "motor", "interpolation")
+           "diffswerve", "deadwheel", "odometry", "estimator", "odometry3d", "estimator3d",
+           "motor", "interpolation")
 
 # semiwrap's name_transform word split (the JSON's ``rule``).
 _WORDS = re.compile(r"[A-Z]+[0-9]*(?=[A-Z][a-z0-9]|_|$)|[A-Z]?[a-z0-9]+|[A-Z]+[0-9]*")
@@ -80,7 +81,8 @@ NOT_KEYWORD_CALLABLE = {
     ("DifferentialDriveWheelVelocities", "desaturate", ("attainable_max_velocity",)): _METH_O,
     **{(cls, "sampleAt", ("timestamp",)): _METH_O
        for cls in ("SwerveDrivePoseEstimator", "MecanumDrivePoseEstimator",
-                   "DifferentialDrivePoseEstimator")},
+                   "DifferentialDrivePoseEstimator", "SwerveDrivePoseEstimator3d",
+                   "MecanumDrivePoseEstimator3d", "DifferentialDrivePoseEstimator3d")},
 }
 
 # Positional order that is not robotpy's although the names are: (class, member) -> why.

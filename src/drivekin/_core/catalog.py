@@ -38,6 +38,7 @@ from drivekin.differential import (
 )
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.geometry import _rotation_from_cos_sin  # type: ignore[attr-defined]
+from drivekin.geometry3d import Pose3d, Rotation3d
 from drivekin.motor import DCMotor
 from drivekin.mecanum import (
     MecanumDriveKinematics,
@@ -119,8 +120,8 @@ class Peer:
 @dataclass(frozen=True)
 class Entry:
     cls: type
-    kind: str                      # "value", "kinematics", "odometry", "estimator", "helper",
-                                   # "warning"
+    kind: str                      # "value", "kinematics", "odometry", "estimator",
+                                   # "odometry3d", "estimator3d", "helper", "warning"
     drivetrain: str | None = None  # "swerve", "mecanum", "differential", "deadwheel", ...
     flatten: Callable[[Any], tuple[float, ...]] | None = None
     build: Callable[..., Any] | None = None
@@ -345,6 +346,11 @@ def _start() -> Pose2d:
     return Pose2d(1.0, 2.0, _R(0.5))
 
 
+def _start3d() -> Pose3d:
+    # Off the plane: the 3-D odometry and estimators start pitched and rolled, gyro level.
+    return Pose3d(1.0, 2.0, 0.25, Rotation3d(0.1, -0.2, 0.5))
+
+
 def _double_buffer() -> Any:
     # A 1.5 s double buffer holding three samples.
     b = _dk.TimeInterpolatableBuffer.createDoubleBuffer(1.5)
@@ -479,6 +485,12 @@ ENTRIES: tuple[Entry, ...] = (
     Entry(_dk.SwerveDrivePoseEstimator, "estimator", "swerve",
           example=lambda: _dk.SwerveDrivePoseEstimator(_swerve(), _R(0.0), _swerve_zeros(),
                                                        _start())),
+    Entry(_dk.SwerveDriveOdometry3d, "odometry3d", "swerve",
+          example=lambda: _dk.SwerveDriveOdometry3d(_swerve(), Rotation3d(), _swerve_zeros(),
+                                                    _start3d())),
+    Entry(_dk.SwerveDrivePoseEstimator3d, "estimator3d", "swerve",
+          example=lambda: _dk.SwerveDrivePoseEstimator3d(_swerve(), Rotation3d(),
+                                                         _swerve_zeros(), _start3d())),
     # Mecanum
     _plain(MecanumDriveWheelVelocities, KINEMATICS_FILE, 8, _MECANUM_ATTRS, _MECANUM,
            drivetrain="mecanum",
@@ -524,6 +536,13 @@ ENTRIES: tuple[Entry, ...] = (
           example=lambda: _dk.MecanumDrivePoseEstimator(_mecanum(), _R(0.0),
                                                         MecanumDriveWheelPositions(),
                                                         _start())),
+    Entry(_dk.MecanumDriveOdometry3d, "odometry3d", "mecanum",
+          example=lambda: _dk.MecanumDriveOdometry3d(_mecanum(), Rotation3d(),
+                                                     MecanumDriveWheelPositions(), _start3d())),
+    Entry(_dk.MecanumDrivePoseEstimator3d, "estimator3d", "mecanum",
+          example=lambda: _dk.MecanumDrivePoseEstimator3d(_mecanum(), Rotation3d(),
+                                                          MecanumDriveWheelPositions(),
+                                                          _start3d())),
     # Differential
     _plain(DifferentialDriveWheelVelocities, KINEMATICS_FILE, 3, ("left", "right"),
            drivetrain="differential",
@@ -556,6 +575,11 @@ ENTRIES: tuple[Entry, ...] = (
           example=lambda: _dk.DifferentialDriveOdometry(_R(0.0), 0.0, 0.0, _start())),
     Entry(_dk.DifferentialDrivePoseEstimator, "estimator", "differential",
           example=lambda: _dk.DifferentialDrivePoseEstimator(_R(0.0), 0.0, 0.0, _start())),
+    Entry(_dk.DifferentialDriveOdometry3d, "odometry3d", "differential",
+          example=lambda: _dk.DifferentialDriveOdometry3d(Rotation3d(), 0.0, 0.0, _start3d())),
+    Entry(_dk.DifferentialDrivePoseEstimator3d, "estimator3d", "differential",
+          example=lambda: _dk.DifferentialDrivePoseEstimator3d(Rotation3d(), 0.0, 0.0,
+                                                               _start3d())),
     # Dead wheels
     Entry(DeadWheelKinematics, "kinematics", "deadwheel", no_peer=_DRIVEKIN_ONLY,
           example=_dead_wheels),
@@ -566,12 +590,24 @@ ENTRIES: tuple[Entry, ...] = (
     Entry(_dk.DeadWheelPoseEstimator, "estimator", "deadwheel",
           example=lambda: _dk.DeadWheelPoseEstimator(_dead_wheels(), [0.0, 0.0, 0.0],
                                                      _R(0.0), _start())),
+    Entry(_dk.DeadWheelOdometry3d, "odometry3d", "deadwheel",
+          example=lambda: _dk.DeadWheelOdometry3d(_dead_wheels(), [0.0, 0.0, 0.0],
+                                                  Rotation3d(), _start3d())),
+    Entry(_dk.DeadWheelPoseEstimator3d, "estimator3d", "deadwheel",
+          example=lambda: _dk.DeadWheelPoseEstimator3d(_dead_wheels(), [0.0, 0.0, 0.0],
+                                                       Rotation3d(), _start3d())),
     # Two dead wheels 0.1 m ahead and 0.2 m to the right of the centre, and a gyro.
     Entry(_dk.TwoDeadWheelOdometry, "odometry", "twodeadwheel",
           example=lambda: _dk.TwoDeadWheelOdometry(0.1, -0.2, 0.0, 0.0, _R(0.0), _start())),
     Entry(_dk.TwoDeadWheelPoseEstimator, "estimator", "twodeadwheel",
           example=lambda: _dk.TwoDeadWheelPoseEstimator(0.1, -0.2, 0.0, 0.0, _R(0.0),
                                                         _start())),
+    Entry(_dk.TwoDeadWheelOdometry3d, "odometry3d", "twodeadwheel",
+          example=lambda: _dk.TwoDeadWheelOdometry3d(0.1, -0.2, 0.0, 0.0, Rotation3d(),
+                                                     _start3d())),
+    Entry(_dk.TwoDeadWheelPoseEstimator3d, "estimator3d", "twodeadwheel",
+          example=lambda: _dk.TwoDeadWheelPoseEstimator3d(0.1, -0.2, 0.0, 0.0, Rotation3d(),
+                                                          _start3d())),
     # Differential swerve pods (per pod: not a drivetrain of their own); the example pod
     # has azimuth ratio 3, wheel ratio 5 and a 0.05 m wheel.
     Entry(_dk.DifferentialSwerveModuleKinematics, "kinematics", "diffswerve",
