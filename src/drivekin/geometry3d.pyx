@@ -24,7 +24,7 @@ from drivekin._core.kernels3d cimport (
     q_from_vectors, q_identity, q_inverse, q_log, q_mul, q_norm, q_normalize, q_pow, q_scale,
     q_to_rvec, quat, rot3_angle, rot3_apply, rot3_eq, rot3_integrate, rot3_interpolate,
     rot3_inverse, rot3_matrix, rot3_relative_to, rot3_rotate_by, rot3_times, rot3_x, rot3_y,
-    rot3_z, transform3_inverse, transform3_plus, twist3, twist3_exp, v3_add, v3_cross, v3_dot, v3_eq,
+    rot3_yaw, rot3_z, transform3_inverse, twist3, twist3_exp, v3_add, v3_cross, v3_dot, v3_eq,
     v3_scale, v3_sub, vec3,
 )
 from drivekin.geometry cimport (Pose2d, Rotation2d, Transform2d, Translation2d, new_pose,
@@ -309,12 +309,9 @@ cdef class Quaternion:
 
 
 # ---------------------------------------------------------------------------------------
-_ROTATION_FORMS = (("q",), ("roll", "pitch", "yaw"), ("axis", "angle"), ("rvec",),
-                   ("rotation_matrix",), ("initial", "final"), ("rotation",))
-
-
 cdef quat_t rotation_form(int form, tuple a) except *:
-    # One Rotation3d constructor form (an index into _ROTATION_FORMS), arguments checked.
+    # One Rotation3d constructor form, its arguments checked: 0 (q), 1 (roll, pitch, yaw),
+    # 2 (axis, angle), 3 (rvec), 4 (rotation_matrix), 5 (initial, final), 6 (rotation).
     cdef double R[9]
     if form == 0:
         check_type(a[0], Quaternion, "q")
@@ -390,28 +387,13 @@ cdef class Rotation3d:
         # A bare Rotation3d.__new__ is the identity, never the invalid (0, 0, 0, 0).
         self.q.w = 1.0
 
-    def __init__(self, a=MISSING, b=MISSING, c=MISSING, /, *, q=MISSING, roll=MISSING,
-                 pitch=MISSING, yaw=MISSING, axis=MISSING, angle=MISSING, rvec=MISSING,
-                 rotation_matrix=MISSING, initial=MISSING, final=MISSING, rotation=MISSING):
+    def __init__(self, roll=MISSING, pitch=MISSING, yaw=MISSING):
         cdef quat_t r
-        cdef int form
         refuse_reinit(self.frozen, self)
-        if (q is MISSING and roll is MISSING and pitch is MISSING and yaw is MISSING
-                and axis is MISSING and angle is MISSING and rvec is MISSING
-                and rotation_matrix is MISSING and initial is MISSING and final is MISSING
-                and rotation is MISSING):
-            if c is not MISSING:
-                r = q_from_euler(number(a, "roll"), number(b, "pitch"), number(c, "yaw"))
-            else:
-                r = rotation_positional(_given(a, b, c))
+        if type(roll) is float and type(pitch) is float and type(yaw) is float:
+            r = q_from_euler(<double>roll, <double>pitch, <double>yaw)
         else:
-            form, args = keyword_form(
-                "Rotation3d", _ROTATION_FORMS, _given(a, b, c),
-                given_keywords(("q", "roll", "pitch", "yaw", "axis", "angle", "rvec",
-                                "rotation_matrix", "initial", "final", "rotation"),
-                               (q, roll, pitch, yaw, axis, angle, rvec, rotation_matrix,
-                                initial, final, rotation)))
-            r = rotation_form(form, args)
+            r = rotation_positional(_given(roll, pitch, yaw, "Rotation3d", "roll, pitch, yaw"))
         self.q = r
         self.frozen = True
 
@@ -498,7 +480,7 @@ cdef class Rotation3d:
     def toRotation2d(self):
         """Return the yaw (:meth:`getZ`) as a Rotation2d (not a projection of the
         rotated x axis)."""
-        return new_rotation(rot_rad(rot3_z(self.q)))
+        return new_rotation(rot3_yaw(self.q))
 
     def inverse(self):
         """Return the rotation that undoes this one."""
@@ -570,15 +552,18 @@ cdef class Rotation3d:
         return f"Rotation3d({new_quaternion(self.q)})"
 
 
-cdef tuple _given(object a, object b, object c):
-    # The positional arguments passed (a MISSING one ends them).
-    if a is MISSING:
-        return ()
-    if b is MISSING:
-        return (a,)
-    if c is MISSING:
+cdef tuple _given(object a, object b, object c, str cls, str names):
+    # The arguments passed, in order; a gap (a later one passed by keyword without an
+    # earlier one) is refused.
+    if c is not MISSING:
+        if a is MISSING or b is MISSING:
+            raise TypeError(f"{cls}() takes {names} together")
+        return (a, b, c)
+    if b is not MISSING:
+        if a is MISSING:
+            raise TypeError(f"{cls}() takes {names} together")
         return (a, b)
-    return (a, b, c)
+    return () if a is MISSING else (a,)
 
 
 def _rotation3d_from_quaternion(double w, double x, double y, double z):
@@ -609,22 +594,13 @@ cdef class Translation3d:
     1e-9 m.
     """
 
-    def __init__(self, x=MISSING, y=MISSING, z=MISSING, *, distance=MISSING,
-                 angle=MISSING, vector=MISSING, translation=MISSING):
+    def __init__(self, x=0.0, y=MISSING, z=MISSING):
         cdef vec3_t v
         refuse_reinit(self.frozen, self)
-        if (distance is MISSING and angle is MISSING and vector is MISSING
-                and translation is MISSING):
-            if type(x) is float and type(y) is float and type(z) is float:
-                v = vec3(<double>x, <double>y, <double>z)
-            else:
-                v = _translation_positional(x, y, z)
+        if type(x) is float and type(y) is float and type(z) is float:
+            v = vec3(<double>x, <double>y, <double>z)
         else:
-            form, args = keyword_form(
-                "Translation3d", _TRANSLATION_FORMS, _given(x, y, z),
-                given_keywords(("distance", "angle", "vector", "translation"),
-                               (distance, angle, vector, translation)))
-            v = translation_form(form, args)
+            v = _translation_positional(x, y, z)
         self.v = v
         self.frozen = True
 
@@ -802,39 +778,24 @@ cdef class Translation3d:
         return f"Translation3d(X: {f2(self.v.x)}, Y: {f2(self.v.y)}, Z: {f2(self.v.z)})"
 
 
-_TRANSLATION_FORMS = (("x", "y", "z"), ("distance", "angle"), ("vector",), ("translation",))
-
-
-cdef vec3_t translation_form(int form, tuple a) except *:
-    # One Translation3d constructor form (an index into _TRANSLATION_FORMS).
-    if form == 0:
-        return vec3(number(a[0], "x"), number(a[1], "y"), number(a[2], "z"))
-    if form == 1:
-        check_type(a[1], Rotation3d, "angle")
-        return rot3_apply((<Rotation3d>a[1]).q, vec3(number(a[0], "distance"), 0.0, 0.0))
-    if form == 2:
-        return vector3(a[0], "vector")
-    check_type(a[0], Translation2d, "translation")
-    return vec3((<Translation2d>a[0]).v.x, (<Translation2d>a[0]).v.y, 0.0)
-
-
 cdef vec3_t _translation_positional(object x, object y, object z) except *:
-    # The positional forms, told apart by their types; missing components are 0 m.
-    if x is MISSING:
-        return vec3(0.0, 0.0, 0.0)
+    # The forms other than three floats, told apart by their types (as Translation2d's):
+    # (distance, angle: Rotation3d), (vector), (translation: Translation2d), or numbers
+    # (a missing y or z is 0 m).
+    if type(y) is Rotation3d and z is MISSING:
+        return rot3_apply((<Rotation3d>y).q, vec3(number(x, "distance"), 0.0, 0.0))
     if y is MISSING and z is MISSING:
         if type(x) is Translation2d:
-            return translation_form(3, (x,))
+            return vec3((<Translation2d>x).v.x, (<Translation2d>x).v.y, 0.0)
         if is_vector(x):
-            return translation_form(2, (x,))
-    elif z is MISSING and type(y) is Rotation3d:
-        return translation_form(1, (x, y))
-    if not (is_vector(x) or type(x) is Translation2d or type(y) is Rotation3d):
-        return translation_form(0, (x, 0.0 if y is MISSING else y, 0.0 if z is MISSING else z))
-    raise TypeError(
-        "Translation3d() takes (x, y, z: float, m), (distance: float, m, angle: "
-        "Rotation3d), (vector: 3 floats, m) or (translation: Translation2d); got "
-        f"({', '.join(type_name(v) for v in _given(x, y, z))})")
+            return vector3(x, "vector")
+    if is_vector(x) or type(x) is Translation2d or type(y) is Rotation3d:
+        raise TypeError(
+            "Translation3d() takes (x, y, z: float, m), (distance: float, m, angle: "
+            "Rotation3d), (vector: 3 floats, m) or (translation: Translation2d); got "
+            f"({', '.join(type_name(v) for v in (x, y, z) if v is not MISSING)})")
+    return vec3(number(x, "x"), 0.0 if y is MISSING else number(y, "y"),
+                0.0 if z is MISSING else number(z, "z"))
 
 
 # ---------------------------------------------------------------------------------------
@@ -906,7 +867,7 @@ cdef pose3_t frame_args(str cls, bint transform, object a, object b, object c, o
 
 cdef tuple _given4(object a, object b, object c, object d):
     if d is MISSING:
-        return _given(a, b, c)
+        return _given(a, b, c, "", "")
     return (a, b, c, d)
 
 
@@ -1083,8 +1044,7 @@ cdef class Pose3d(_Frame3d):
     def toPose2d(self):
         """Return (x, y, yaw) as a Pose2d: z dropped, the heading the Euler yaw
         (:meth:`Rotation3d.getZ`)."""
-        cdef pose2_t p = pose(vec(self.p.t.x, self.p.t.y), rot_rad(rot3_z(self.p.q)))
-        return new_pose(p)
+        return new_pose(pose(vec(self.p.t.x, self.p.t.y), rot3_yaw(self.p.q)))
 
     def exp(self, twist: Twist3d):
         """Return ``self.plus(twist.exp())`` in one call (the WPILib 2026 ``Pose3d.exp``;
@@ -1189,7 +1149,7 @@ cdef class Transform3d(_Frame3d):
     def plus(self, other: Transform3d):
         """Return this transform followed by ``other``."""
         check_type(other, Transform3d, "other")
-        return new_transform3d(transform3_plus(self.p, (<Transform3d>other).p))
+        return new_transform3d(pose3_plus(self.p, (<Transform3d>other).p))
 
     def log(self):
         """Return the Twist3d whose :meth:`Twist3d.exp` is this transform (the screw

@@ -3,16 +3,20 @@
 # gets them inlined. No Python objects, no numpy.
 #
 # Formulas follow WPILib 2027 (Java org.wpilib.math.geometry; C++ wpi/math/geometry for
-# Twist3d.exp / Transform3d.log) in WPILib's order of operations, so that what involves no
-# trigonometry (compositions, inverses, normalisation) gives WPILib's bits: setup.py builds
-# with -ffp-contract=off, so a*b + c is never fused, and Cython keeps the parentheses.
+# Twist3d.exp / Transform3d.log). Where WPILib spends a square root and divisions on
+# quaternions that are already unit (every stored Rotation3d's is, to a few ulps), the
+# kernels use the equivalent division-free forms (rot3_apply, q_renorm, the conjugate as
+# inverse): the same values to the last few bits, at a fraction of the latency. What the
+# user hands in (Quaternion, Rotation3d(Quaternion), Rotation3d(initial, final)) is
+# normalised exactly as WPILib does. setup.py builds with -ffp-contract=off, so a*b + c is
+# never fused, and Cython keeps the parentheses.
 # Trigonometry is drivekin's own (_core/dkmath.h: sincos, atan2; asin through atan2), the
 # same on every platform. exp and log (Quaternion.exp/log/pow only) are libm's.
 # Twist3d.exp and Transform3d.log are drivekin's cancellation-free forms (see there).
 
 from libc.math cimport INFINITY, M_PI, copysign, exp, fabs, log, sqrt
 from drivekin._core.dkmath cimport atan2, sincos
-from drivekin._core.types cimport pose3_t, quat_t, twist3_t, vec3_t
+from drivekin._core.types cimport pose3_t, quat_t, rot2_t, twist3_t, vec3_t
 
 # ---------------------------------------------------------------------------------------
 # Builders and plain vector algebra
@@ -231,20 +235,25 @@ cdef inline quat_t q_from_rvec(vec3_t r) noexcept nogil:
 
 cdef inline quat_t q_from_matrix(const double* R) noexcept nogil:
     # Rotation3d(Matrix3): the trace / largest-diagonal branches (R row-major, already
-    # checked to be a rotation).
+    # checked to be a rotation), then normalised: WPILib keeps the quaternion as it comes
+    # out (unit only to about the 1e-9 of the checks), drivekin keeps every stored
+    # rotation unit (see q_renorm).
     cdef double trace = R[0] + R[4] + R[8]
     cdef double s
+    cdef quat_t q
     if trace > 0.0:
         s = 0.5 / sqrt(trace + 1.0)
-        return quat(0.25 / s, (R[7] - R[5]) * s, (R[2] - R[6]) * s, (R[3] - R[1]) * s)
-    if R[0] > R[4] and R[0] > R[8]:
+        q = quat(0.25 / s, (R[7] - R[5]) * s, (R[2] - R[6]) * s, (R[3] - R[1]) * s)
+    elif R[0] > R[4] and R[0] > R[8]:
         s = 2.0 * sqrt(1.0 + R[0] - R[4] - R[8])
-        return quat((R[7] - R[5]) / s, 0.25 * s, (R[1] + R[3]) / s, (R[2] + R[6]) / s)
-    if R[4] > R[8]:
+        q = quat((R[7] - R[5]) / s, 0.25 * s, (R[1] + R[3]) / s, (R[2] + R[6]) / s)
+    elif R[4] > R[8]:
         s = 2.0 * sqrt(1.0 + R[4] - R[0] - R[8])
-        return quat((R[2] - R[6]) / s, (R[1] + R[3]) / s, 0.25 * s, (R[5] + R[7]) / s)
-    s = 2.0 * sqrt(1.0 + R[8] - R[0] - R[4])
-    return quat((R[3] - R[1]) / s, (R[2] + R[6]) / s, (R[5] + R[7]) / s, 0.25 * s)
+        q = quat((R[2] - R[6]) / s, (R[1] + R[3]) / s, 0.25 * s, (R[5] + R[7]) / s)
+    else:
+        s = 2.0 * sqrt(1.0 + R[8] - R[0] - R[4])
+        q = quat((R[3] - R[1]) / s, (R[2] + R[6]) / s, (R[5] + R[7]) / s, 0.25 * s)
+    return q_normalize(q)
 
 cdef inline double matrix_orthogonality(const double* R) noexcept nogil:
     # ‖R·Rᵀ − I‖_F (row-major R).
@@ -289,25 +298,33 @@ cdef inline quat_t q_from_vectors(vec3_t a, vec3_t b) noexcept nogil:
     return q_normalize(quat(np_ + dot, axis.x, axis.y, axis.z))
 
 # ---------------------------------------------------------------------------------------
-# Rotation3d operations (results normalised, as WPILib's Rotation3d(Quaternion) does)
+# Rotation3d operations. A stored rotation's quaternion is unit to a few ulps (or NaN):
+# every constructor normalises, and products are renormalised by q_renorm.
+
+cdef inline quat_t q_renorm(quat_t q) noexcept nogil:
+    # q/‖q‖ for a product of unit quaternions (‖q‖² = 1 + δ, |δ| a few ulps): one Newton
+    # step for 1/sqrt(‖q‖²) from 1, q·(1.5 − ‖q‖²/2), leaves |δ|²-sized error, below the
+    # rounding of the multiplications: WPILib's sqrt and four divisions without either.
+    return q_scale(q, 1.5 - 0.5 * q_dot(q, q))
 
 cdef inline quat_t rot3_inverse(quat_t q) noexcept nogil:
-    return q_normalize(q_inverse(q))
+    # The conjugate: WPILib's normalize(conjugate / norm²) of a unit quaternion.
+    return q_conjugate(q)
 
 cdef inline quat_t rot3_rotate_by(quat_t q, quat_t o) noexcept nogil:
     # q.rotateBy(o) = o·q: o applied about the fixed (extrinsic) axes.
-    return q_normalize(q_mul(o, q))
+    return q_renorm(q_mul(o, q))
 
 cdef inline quat_t rot3_relative_to(quat_t q, quat_t o) noexcept nogil:
     # q.relativeTo(o) = o⁻¹·q.
-    return q_normalize(q_mul(q_inverse(o), q))
+    return q_renorm(q_mul(q_conjugate(o), q))
 
 cdef inline quat_t rot3_interpolate(quat_t q0, quat_t q1, double t) noexcept nogil:
     # Slerp the short way, t not clamped: (q1·q0⁻¹)^t·q0.
-    cdef quat_t d = q_mul(q1, q_inverse(q0))
+    cdef quat_t d = q_mul(q1, q_conjugate(q0))
     if d.w < 0.0:
         d = quat(-d.w, -d.x, -d.y, -d.z)
-    return q_normalize(q_mul(q_pow(d, t), q0))
+    return q_renorm(q_mul(q_pow(d, t), q0))
 
 cdef inline quat_t rot3_times(quat_t q, double k) noexcept nogil:
     # Rotation3d.times(k) = kZero.interpolate(this, k).
@@ -316,7 +333,7 @@ cdef inline quat_t rot3_times(quat_t q, double k) noexcept nogil:
 cdef inline quat_t rot3_integrate(quat_t q, double p, double r, double y,
                                   double dt) noexcept nogil:
     # q·exp((0, p, r, y)·dt/2): body-frame rates (roll, pitch, yaw), rad/s, over dt s.
-    return q_normalize(q_mul(q, q_exp(q_scale(quat(0.0, p, r, y), dt / 2.0))))
+    return q_renorm(q_mul(q, q_exp(q_scale(quat(0.0, p, r, y), dt / 2.0))))
 
 cdef inline bint rot3_eq(quat_t a, quat_t b) noexcept nogil:
     # Rotation3d.equals: q and −q alike; within about 8.9e-5 rad.
@@ -354,9 +371,33 @@ cdef inline double rot3_angle(quat_t q) noexcept nogil:
     return 2.0 * atan2(sqrt(q.x * q.x + q.y * q.y + q.z * q.z), q.w)
 
 cdef inline vec3_t rot3_apply(quat_t q, vec3_t v) noexcept nogil:
-    # Translation3d.rotateBy: q·(0, v)·q⁻¹, WPILib's products in its order.
-    cdef quat_t r = q_mul(q_mul(q, quat(0.0, v.x, v.y, v.z)), q_inverse(q))
-    return vec3(r.x, r.y, r.z)
+    # Translation3d.rotateBy, q·(0, v)·q⁻¹ for a unit q: v + w·t + q_v × t with
+    # t = 2 q_v × v (no square root, no division).
+    cdef vec3_t qv = vec3(q.x, q.y, q.z)
+    cdef vec3_t t = v3_cross(qv, v)
+    cdef vec3_t c
+    t = vec3(2.0 * t.x, 2.0 * t.y, 2.0 * t.z)
+    c = v3_cross(qv, t)
+    return vec3(v.x + q.w * t.x + c.x, v.y + q.w * t.y + c.y, v.z + q.w * t.z + c.z)
+
+cdef inline rot2_t rot3_yaw(quat_t q) noexcept nogil:
+    # Rotation2d(getZ()) as its (cos, sin): the vector whose atan2 getZ takes, normalised
+    # (within an ulp of the cosine and sine of that angle; no trigonometry). A zero
+    # vector (atan2(0, 0) = 0) gives the identity.
+    cdef rot2_t r
+    cdef double c = 1.0 - 2.0 * (q.y * q.y + q.z * q.z)
+    cdef double s = 2.0 * (q.w * q.z + q.x * q.y)
+    cdef double h
+    if not c * c + s * s > 1e-20:
+        c = q.w * q.w - q.z * q.z
+        s = 2.0 * q.w * q.z
+    h = sqrt(c * c + s * s)
+    if h == 0.0:
+        c = 1.0
+        h = 1.0
+    r.c = c / h
+    r.s = s / h
+    return r
 
 cdef inline void rot3_matrix(quat_t q, double* R) noexcept nogil:   # OUT: 9, row-major
     cdef double w = q.w, x = q.x, y = q.y, z = q.z
@@ -375,26 +416,22 @@ cdef inline void rot3_matrix(quat_t q, double* R) noexcept nogil:   # OUT: 9, ro
 
 cdef inline pose3_t pose3_plus(pose3_t a, pose3_t b) noexcept nogil:
     # a.transformBy(b): a.t + b.t rotated by a's rotation; rotation b.R.rotateBy(a.R) = a·b.
-    return pose3(v3_add(a.t, rot3_apply(a.q, b.t)), rot3_rotate_by(b.q, a.q))
+    # Also Transform3d.plus (WPILib's kZero.transformBy(a).transformBy(b) seen from kZero).
+    return pose3(v3_add(a.t, rot3_apply(a.q, b.t)), q_renorm(q_mul(a.q, b.q)))
 
 cdef inline pose3_t pose3_relative_to(pose3_t a, pose3_t o) noexcept nogil:
     # a.relativeTo(o) = Transform3d(o, a): (a.t − o.t) rotated by o.R.inverse(), and
     # a.R.relativeTo(o.R).
-    return pose3(rot3_apply(rot3_inverse(o.q), v3_sub(a.t, o.t)), rot3_relative_to(a.q, o.q))
+    cdef quat_t inv = q_conjugate(o.q)
+    return pose3(rot3_apply(inv, v3_sub(a.t, o.t)), q_renorm(q_mul(inv, a.q)))
 
 cdef inline pose3_t pose3_rotate_by(pose3_t p, quat_t r) noexcept nogil:
     # Pose3d.rotateBy: both parts about the origin, extrinsically.
     return pose3(rot3_apply(r, p.t), rot3_rotate_by(p.q, r))
 
 cdef inline pose3_t transform3_inverse(pose3_t tr) noexcept nogil:
-    cdef quat_t inv = rot3_inverse(tr.q)
+    cdef quat_t inv = q_conjugate(tr.q)
     return pose3(rot3_apply(inv, vec3(-tr.t.x, -tr.t.y, -tr.t.z)), inv)
-
-cdef inline pose3_t transform3_plus(pose3_t a, pose3_t b) noexcept nogil:
-    # Transform3d.plus: Transform3d(kZero, kZero.transformBy(a).transformBy(b)), literally
-    # (the identity's products are not bit-neutral: they turn −0.0 into 0.0).
-    cdef pose3_t zero = pose3(vec3(0.0, 0.0, 0.0), q_identity())
-    return pose3_relative_to(pose3_plus(pose3_plus(zero, a), b), zero)
 
 cdef inline pose3_t pose3_times(pose3_t p, double k) noexcept nogil:
     # Pose3d/Transform3d.times: the translation scaled, the rotation slerped from identity.
@@ -438,31 +475,40 @@ cdef inline pose3_t twist3_exp(twist3_t tw) noexcept nogil:
     return pose3(vec3(u.x + b * c1.x + c * c2.x,
                       u.y + b * c1.y + c * c2.y,
                       u.z + b * c1.z + c * c2.z),
-                 q_normalize(quat(ch, r.x * k, r.y * k, r.z * k)))
+                 q_renorm(quat(ch, r.x * k, r.y * k, r.z * k)))
 
 cdef inline twist3_t pose3_log(pose3_t tr) noexcept nogil:
     cdef twist3_t out
     cdef quat_t q = tr.q
     cdef vec3_t u = tr.t
-    cdef vec3_t r = q_to_rvec(q)                   # WPILib's rotation part, as it is
     cdef double vn = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
     cdef double w = fabs(q.w)
-    cdef double theta, t2, d, sgn
-    cdef vec3_t n, c1, c2
+    cdef double half = atan2(vn, w)                # θ/2, in [0, π/2]
+    cdef double theta = 2.0 * half
+    cdef double k, t2, d, sgn
+    cdef vec3_t r, n, c1, c2
+    # The rotation part is WPILib's toRotationVector, the short way round (atan2 is odd in
+    # its first argument, so −2·atan2(n, |w|)/n is Java's 2·atan2(−n, −w)/n for w < 0).
+    if vn < 1e-9:
+        k = 2.0 / q.w - 2.0 / 3.0 * vn * vn / (q.w * q.w * q.w)
+    else:
+        k = 2.0 * half / vn
+        if q.w < 0.0:
+            k = -k
+    r = vec3(k * q.x, k * q.y, k * q.z)
     out.rx = r.x
     out.ry = r.y
     out.rz = r.z
-    theta = 2.0 * atan2(vn, w)                     # |r|, in [0, π]
     c1 = v3_cross(r, u)
     if theta < 1e-3:
         t2 = theta * theta
         d = 1.0 / 12.0 + t2 / 720.0 + t2 * t2 / 30240.0   # D
         c2 = v3_cross(r, c1)
     else:
-        # n̂ = ±v/‖v‖ (the sign that makes w >= 0, as toRotationVector's short way).
+        # n̂ = ±v/‖v‖ (the sign that makes w >= 0, as for r).
         sgn = -1.0 / vn if q.w < 0.0 else 1.0 / vn
         n = vec3(q.x * sgn, q.y * sgn, q.z * sgn)
-        d = 1.0 - 0.5 * theta * w / vn                     # Dθ²
+        d = 1.0 - half * w / vn                            # Dθ²
         c2 = v3_cross(n, v3_cross(n, u))
     out.dx = u.x - 0.5 * c1.x + d * c2.x
     out.dy = u.y - 0.5 * c1.y + d * c2.y
