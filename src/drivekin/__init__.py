@@ -36,6 +36,16 @@ from drivekin.estimator3d import (
     TwoDeadWheelPoseEstimator3d,
 )
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
+from drivekin.geometry3d import (
+    CoordinateAxis,
+    CoordinateSystem,
+    Pose3d,
+    Quaternion,
+    Rotation3d,
+    Transform3d,
+    Translation3d,
+    Twist3d,
+)
 from drivekin.interpolation import TimeInterpolatableBuffer
 from drivekin.motor import DCMotor
 from drivekin.setpoint import (
@@ -116,6 +126,17 @@ __all__ = [
     "TwoDeadWheelOdometry",
     "TwoDeadWheelPoseEstimator",
 ]
+# 3-D geometry (drivekin.geometry3d).
+__all__ += [
+    "CoordinateAxis",
+    "CoordinateSystem",
+    "Pose3d",
+    "Quaternion",
+    "Rotation3d",
+    "Transform3d",
+    "Translation3d",
+    "Twist3d",
+]
 # Differential swerve pods (drivekin.diffswerve).
 __all__ += [
     "DifferentialSwerveModuleKinematics",
@@ -193,6 +214,21 @@ if TYPE_CHECKING:
         def __init__(self, history_size: float,
                      func: Optional[Callable[[Translation2d, Translation2d, float],
                                              Translation2d]] = None) -> None: ...
+
+    class TimeInterpolatablePose3dBuffer(TimeInterpolatableBuffer[Pose3d]):
+        def __init__(self, history_size: float,
+                     func: Optional[Callable[[Pose3d, Pose3d, float], Pose3d]] = None
+                     ) -> None: ...
+
+    class TimeInterpolatableRotation3dBuffer(TimeInterpolatableBuffer[Rotation3d]):
+        def __init__(self, history_size: float,
+                     func: Optional[Callable[[Rotation3d, Rotation3d, float], Rotation3d]]
+                     = None) -> None: ...
+
+    class TimeInterpolatableTranslation3dBuffer(TimeInterpolatableBuffer[Translation3d]):
+        def __init__(self, history_size: float,
+                     func: Optional[Callable[[Translation3d, Translation3d, float],
+                                             Translation3d]] = None) -> None: ...
 
     class TimeInterpolatableFloatBuffer(TimeInterpolatableBuffer[float]):
         def __init__(self, history_size: float,

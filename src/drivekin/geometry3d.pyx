@@ -1434,9 +1434,9 @@ cdef class CoordinateSystem:
         ``transform``), expressed in the system ``from_``, converted to the system ``to``.
         A Transform3d's rotation is conjugated by the change of frame, so it stays
         intrinsic."""
-        value = _one_value(translation, rotation, pose, transform)
         check_type(from_, CoordinateSystem, "from_")
         check_type(to, CoordinateSystem, "to")
+        value = _one_value(translation, rotation, pose, transform)
         cdef quat_t f = (<CoordinateSystem>from_).q
         cdef quat_t t_inv = rot3_inverse((<CoordinateSystem>to).q)
         cdef quat_t c

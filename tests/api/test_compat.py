@@ -38,9 +38,11 @@ def test_old_paths_give_the_public_objects(module):
 
 # Value classes added after 0.1.0, which therefore has no pickles of them (their pickling
 # is tested with the class: DCMotor in tests/reference/test_dcmotor_wpilib.py, the
-# setpoint generator's values in tests/behaviour/test_setpoint.py).
+# setpoint generator's values in tests/behaviour/test_setpoint.py, the 3-D geometry in
+# tests/behaviour/test_geometry3d.py).
 NEW_SINCE_0_1_0 = {"DCMotor", "DriveFeedforwards", "ModuleConfig", "PathConstraints",
-                   "RobotConfig", "SwerveSetpoint"}
+                   "RobotConfig", "SwerveSetpoint", "Quaternion", "Rotation3d", "Translation3d",
+                   "Pose3d", "Transform3d", "Twist3d", "CoordinateAxis", "CoordinateSystem"}
 
 
 def test_pickle_data_covers_every_value_and_kinematics_class():

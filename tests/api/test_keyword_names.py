@@ -39,9 +39,9 @@ DATA = json.loads((Path(__file__).resolve().parents[1] / "data" /
 
 # The modules whose classes follow wpimath (drivekin.setpoint and drivekin.robotconfig keep
 # PathPlannerLib's spellings; drivekin.batch has its own).
-MODULES = ("geometry", "chassis", "swervemodule", "swerve", "mecanum", "differential",
-           "diffswerve", "deadwheel", "odometry", "estimator", "odometry3d", "estimator3d",
-           "motor", "interpolation")
+MODULES = ("geometry", "geometry3d", "chassis", "swervemodule", "swerve", "mecanum",
+           "differential", "diffswerve", "deadwheel", "odometry", "estimator", "odometry3d",
+           "estimator3d", "motor", "interpolation")
 
 # semiwrap's name_transform word split (the JSON's ``rule``).
 _WORDS = re.compile(r"[A-Z]+[0-9]*(?=[A-Z][a-z0-9]|_|$)|[A-Z]?[a-z0-9]+|[A-Z]+[0-9]*")
@@ -63,6 +63,11 @@ NOT_KEYWORD_CALLABLE = {
     ("Translation2d", "__init__", ("distance", "angle")): _TYPES_DECIDE,
     ("Translation2d", "__init__", ("vector",)): _TYPES_DECIDE,
     ("Rotation2d", "__init__", ("x", "y")): _TYPES_DECIDE + "; the first parameter is value",
+    **{("Rotation3d", "__init__", form): _TYPES_DECIDE + "; the parameters are roll, pitch, yaw"
+       for form in (("q",), ("axis", "angle"), ("rvec",), ("rotation_matrix",),
+                    ("initial", "final"), ("rotation",))},
+    **{("Translation3d", "__init__", form): _TYPES_DECIDE
+       for form in (("distance", "angle"), ("vector",), ("translation",))},
     ("TimeInterpolatableBuffer", "__init__", ("history_size",)):
         "the constructor is Java's createBuffer(func, history_size): func has no default "
         "(createBuffer(history_size) is the one-argument form)",
@@ -254,7 +259,9 @@ def test_every_parameter_name_is_snake_case():
             checked += 1
             names = [n for n, _, _ in sig] + _star_names(obj, cls.__name__ if name ==
                                                             "__init__" else name)
-            offenders += [f"{cls.__name__}.{name}: {n}" for n in names if snake(n) != n]
+            # A trailing underscore keeps a Python keyword usable (robotpy's from_).
+            offenders += [f"{cls.__name__}.{name}: {n}" for n in names
+                          if snake(n) != n.removesuffix("_")]
     assert checked >= 300, checked
     assert not offenders, "camelCase parameters:\n" + "\n".join(offenders)
 

@@ -83,7 +83,16 @@ SAMPLES = {
                                                for _ in range(2)],
     "ChassisVelocities": lambda: ChassisVelocities(0.1, 0.2, 0.3),
     "DriveFeedforwards": lambda: DriveFeedforwards.zeros(2),
+    "Quaternion": lambda: drivekin.Quaternion(0.5, 0.5, -0.5, 0.5),
+    "_Vector3": lambda: [0.1, -0.2, 0.3],
+    "Rotation3d": lambda: drivekin.Rotation3d(0.1, -0.2, 0.3),
+    "Translation3d": lambda: drivekin.Translation3d(1.0, -2.0, 0.5),
+    "Pose3d": lambda: drivekin.Pose3d(1.0, -2.0, 0.5, drivekin.Rotation3d(0.1, -0.2, 0.3)),
+    "Transform2d": lambda: drivekin.Transform2d(1.0, -2.0, Rotation2d(0.3)),
 }
+# The axes of a CoordinateSystem must differ (NWU).
+AXES = {"positive_x": (1.0, 0.0, 0.0), "positive_y": (0.0, 1.0, 0.0),
+        "positive_z": (0.0, 0.0, 1.0)}
 ARRAYS = {"vector": np.array([1.0, 2.0]), "matrix": None}
 # Floats that must differ (a DCMotor's free current is below its stall current).
 FLOATS = {("DCMotor", "stall_current"): 105.0, ("DCMotor", "free_current"): 1.8}
@@ -91,10 +100,16 @@ FLOATS = {("DCMotor", "stall_current"): 105.0, ("DCMotor", "free_current"): 1.8}
 
 def _value(annotation: str, name: str, cls_name: str):
     if annotation == "npt.NDArray[np.float64]":
+        if name == "matrix" and cls_name in ("Pose3d", "Transform3d"):
+            return drivekin.Pose3d(1.0, 2.0, 0.5, drivekin.Rotation3d(0.1, -0.2, 0.3)).toMatrix()
+        if name == "rotation_matrix":
+            return drivekin.Rotation3d(0.1, -0.2, 0.3).toMatrix()
         if name == "matrix":
             return (Rotation2d(0.3).toMatrix() if cls_name == "Rotation2d"
                     else Pose2d(1.0, 2.0, Rotation2d(0.3)).toMatrix())
         return ARRAYS[name]
+    if annotation == "CoordinateAxis":
+        return drivekin.CoordinateAxis(*AXES[name])
     if (cls_name, name) in FLOATS:
         return FLOATS[cls_name, name]
     return SAMPLES[annotation]()

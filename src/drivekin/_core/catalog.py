@@ -38,7 +38,16 @@ from drivekin.differential import (
 )
 from drivekin.geometry import Pose2d, Rotation2d, Transform2d, Translation2d, Twist2d
 from drivekin.geometry import _rotation_from_cos_sin  # type: ignore[attr-defined]
-from drivekin.geometry3d import Pose3d, Rotation3d
+from drivekin.geometry3d import (
+    CoordinateAxis,
+    CoordinateSystem,
+    Pose3d,
+    Quaternion,
+    Rotation3d,
+    Transform3d,
+    Translation3d,
+    Twist3d,
+)
 from drivekin.motor import DCMotor
 from drivekin.mecanum import (
     MecanumDriveKinematics,
@@ -393,6 +402,9 @@ _NEW_2027 = ("robotpy-wpimath 2026 has no {} (it is new in WPILib 2027; drivekin
              "converts the classes both robotpy generations have)")
 _PATHPLANNER = "robotpy-wpimath has no {} (it is PathPlannerLib's)"
 _DRIVEKIN_ONLY = "robotpy-wpimath has no counterpart of {}"
+_GEOMETRY_3D = "drivekin.interop does not convert {} yet (the 3-D conversions are to come)"
+_OPAQUE = ("drivekin.interop does not convert {} (robotpy-wpimath's has no accessor to read "
+           "it from; build drivekin's from the same axes)")
 
 # ---------------------------------------------------------------------------------------
 # The entries. Order within a drivetrain follows WPILib; nothing depends on it except
@@ -434,6 +446,24 @@ ENTRIES: tuple[Entry, ...] = (
                      lambda t, w: w.cls("Twist2d")(t.dx, t.dy, t.dtheta),
                      lambda t: Twist2d(t.dx, t.dy, t.dtheta)),
            example=lambda: Twist2d(0.5, 0.25, 0.125)),
+    # 3-D geometry (drivekin.geometry3d)
+    Entry(Quaternion, "value", no_peer=_GEOMETRY_3D,
+          example=lambda: Quaternion(0.5, -0.25, 0.75, 0.125)),
+    Entry(Rotation3d, "value", no_peer=_GEOMETRY_3D,
+          example=lambda: Rotation3d(0.25, -0.5, 0.75)),
+    Entry(Translation3d, "value", no_peer=_GEOMETRY_3D,
+          example=lambda: Translation3d(1.0, 2.0, 0.5)),
+    Entry(Pose3d, "value", no_peer=_GEOMETRY_3D,
+          example=lambda: Pose3d(1.0, 2.0, 0.5, Rotation3d(0.25, -0.5, 0.75))),
+    Entry(Transform3d, "value", no_peer=_GEOMETRY_3D,
+          example=lambda: Transform3d(0.5, -1.0, 0.25, Rotation3d(-0.125, 0.25, 0.5))),
+    Entry(Twist3d, "value", no_peer=_GEOMETRY_3D,
+          example=lambda: Twist3d(0.5, 0.25, 0.125, 0.0625, -0.125, 0.25)),
+    Entry(CoordinateAxis, "value", no_peer=_OPAQUE,
+          example=lambda: CoordinateAxis(1.0, 2.0, -0.5)),
+    Entry(CoordinateSystem, "value", no_peer=_OPAQUE,
+          example=lambda: CoordinateSystem(CoordinateAxis.E(), CoordinateAxis.D(),
+                                           CoordinateAxis.N())),
     # Chassis
     _plain(ChassisVelocities, KINEMATICS_FILE, 0, ("vx", "vy", "omega"),
            peer=Peer("kinematics", ("ChassisSpeeds",),

@@ -44,6 +44,8 @@ EXCEPTIONS: dict[tuple[str, str], str] = {
     ("DCMotor", "getAndymarkRs775_125"): "rs775_125",
     # C++ TimeInterpolatableBuffer::Sample: the one stateful accessor without Get.
     ("TimeInterpolatableBuffer", "getSample"): "sample",
+    # C++ Rotation3d::GetQuaternion: the one value accessor that keeps Get.
+    ("Rotation3d", "getQuaternion"): "get_quaternion",
 }
 
 _WORD = re.compile(r"[A-Z]+[0-9]*(?=[A-Z][a-z0-9]|_|$)|[A-Z]?[a-z0-9]+|[A-Z]+[0-9]*")
