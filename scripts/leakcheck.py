@@ -449,6 +449,27 @@ ERRORS += [
         sp_gen, sp_prev, np.full((4, 3), np.nan), 0.02), ValueError),
 ]
 
+# --- drivekin.batch's compositions and 3-D forms --------------------------------------
+from drivekin import DifferentialDriveOdometry3d  # noqa: E402
+
+b3_frames = np.tile([1.0, 2.0, 0.5, 0.9, 0.1, -0.2, 0.3], (8, 1))
+b3_twists = np.tile([0.1, 0.2, 0.0, 0.01, 0.02, 0.3], (8, 1))
+b3_gyro = np.tile([1.0, 0.0, 0.0, 0.0], (8, 1))
+b3_odometry = catalog.BY_CLASS[DifferentialDriveOdometry3d].example()
+OPERATIONS += [
+    ("batch.transformBy 3-D", lambda: _batch.transformBy(b3_frames, b3_frames[0])),
+    ("batch.relativeTo 2-D", lambda: _batch.relativeTo(sp_rows, sp_rows)),
+    ("batch.exp 3-D", lambda: _batch.exp(b3_twists)),
+    ("batch.log 3-D", lambda: _batch.log(b3_frames)),
+    ("batch.replay 3-D", lambda: _batch.replay(b3_odometry, b3_gyro, np.zeros((8, 2))), 10),
+]
+ERRORS += [
+    ("batch.transformBy 3-D lengths", lambda: _batch.transformBy(b3_frames, b3_frames[:7]),
+     ValueError),
+    ("batch.replay 3-D gyro (N,)", lambda: _batch.replay(b3_odometry, np.zeros(8),
+                                                         np.zeros((8, 2))), ValueError),
+]
+
 # --- every catalogued class, from its entry --------------------------------------------
 # Examples that build kinematics solve a pseudo-inverse (up to ~0.1 ms a call): those
 # kinds run a hundredth of the count; the helpers (a buffer filled in Python, ~4 µs) and

@@ -10,10 +10,20 @@ value                           shape S     columns
 ==============================  ==========  =============================================
 chassis vector / pose           (3,)        ``[vx m/s, vy m/s, omega rad/s]``,
                                             ``[x m, y m, θ rad]``, ``[dx m, dy m, dθ rad]``
+3-D pose / transform            (7,)        ``[x m, y m, z m, qw, qx, qy, qz]``
+3-D twist                       (6,)        ``[dx m, dy m, dz m, rx rad, ry rad, rz rad]``
+3-D gyro reading                (4,)        ``[w, x, y, z]`` (a Rotation3d's quaternion)
 swerve modules (M modules)      (M, 2)      ``[velocity m/s or distance m, angle rad]``
 wheels (mecanum, diff, dead)    (W,)        one value per wheel, the per-call order
 angle / time step               ()          rad / s (a float, or an (N,) stack)
 ==============================  ==========  =============================================
+
+A 3-D row is read as the per-call constructors read it: ``[x, y, z, qw, qx, qy, qz]`` is
+``Pose3d(Translation3d(x, y, z), Rotation3d(Quaternion(qw, qx, qy, qz)))`` (the
+quaternion normalised as that constructor and WPILib's struct unpacking do; a zero one is
+the identity), a gyro row ``Rotation3d(Quaternion(w, x, y, z))``. Results hold the
+getters' values (``getX()``, ..., ``getRotation().getQuaternion()``), so a result read
+back as a row is normalised again, which may move a component by an ulp.
 
 Every array must be a float64, native-endian, C-contiguous numpy array (the rule of the
 per-call buffers; ``np.ascontiguousarray(x, dtype=np.float64)`` makes one). ``out=``, when
