@@ -96,7 +96,17 @@ class Operation:
         return self.robotpy is None
 
 
+@dataclass(frozen=True)
+class Group:
+    """Rows held to a target together: the geometric mean of their ratios to robotpy (each
+    drivekin column on its own) must not exceed ``target``."""
+    title: str
+    keys: tuple                   # operation keys
+    target: float
+
+
 OPERATIONS: list[Operation] = []
+GROUPS: list[Group] = []
 
 
 def register(op: Operation) -> Operation:
@@ -863,3 +873,7 @@ _estimator_op(
     "est.sampleAt(ts)", lambda g: dict(ts=_EST_VISION_TS),
     "est.sampleAt(ts)", (0.15, 0.15),
     "between two samples, with vision records before it")
+
+
+# The 3-D rows (issue 29) register themselves, with their group.
+import registry3d  # noqa: E402,F401
