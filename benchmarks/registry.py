@@ -43,6 +43,10 @@ example dead-wheel odometry against ``DifferentialDriveOdometry.update``::
         suite="deadwheel", robotpy=None, facade=Case(...), alloc_free=Case(...),
         baseline="odometry.differential", baseline_targets=(1.3, 1.3)))
 
+A :class:`Group` holds rows to a target together: ``ratio_table.py`` reports the geometric
+mean of their ratios to robotpy. The 3-D rows and their group live in ``registry3d.py``,
+imported at the end of this module.
+
 A :class:`Case` is a one-line statement plus a ``setup(rp, dk) -> dict`` that returns the
 local names the statement uses. ``setup`` is called once per case, so mutable inputs and
 output buffers are never shared between cases. ``value`` is an optional expression,
