@@ -78,69 +78,48 @@ def _frame(g, cls, spec):
     return getattr(g, cls)(x, y, z, g.Rotation3d(*rpy))
 
 
-def _both(rp_stmt, rp_env, rp_value, dk_stmt, dk_env, dk_value, note=""):
-    """(robotpy Case, drivekin Case): ``*_env(g)`` builds the locals from the library's
-    geometry module."""
-    return (Case(rp_stmt, lambda rp, dk: rp_env(_rp3()), value=rp_value),
-            Case(dk_stmt, lambda rp, dk: dk_env(_dk3()), value=dk_value, note=note))
-
-
 _SAME = "same call as the façade: the result comes from a freelist, no allocator calls"
 
 
-def _geometry_op(key, title, rp_case, dk_case):
+def _geometry_op(key, title, stmt, env, value, rp_stmt=None, rp_env=None, note=""):
+    """A row whose cases run ``stmt`` with the locals ``env(g)``, ``g`` each library's
+    geometry module (robotpy 2026's own spelling: ``rp_stmt``, ``rp_env``). ``value`` is
+    the check's expression, with ``{lib}`` ("rp" or "dk") and ``{stmt}`` to fill in."""
+    rp_stmt = rp_stmt or stmt
+    dk = Case(stmt, lambda rp, dk: env(_dk3()), value=value.format(lib="dk", stmt=stmt),
+              note=note)
     return register(Operation(
-        key=key, title=title, suite="geometry3d", robotpy=rp_case, facade=dk_case,
-        alloc_free=Case(dk_case.stmt, dk_case.setup, value=dk_case.value, note=_SAME),
+        key=key, title=title, suite="geometry3d",
+        robotpy=Case(rp_stmt, lambda rp, dk: (rp_env or env)(_rp3()),
+                     value=value.format(lib="rp", stmt=rp_stmt)),
+        facade=dk, alloc_free=Case(stmt, dk.setup, value=dk.value, note=_SAME),
         needs_kinematics=False))
 
 
-_geometry_op("geometry3d.rotation", "Rotation3d(roll, pitch, yaw)", *_both(
-    "R(r, p, y)", lambda g: dict(R=g.Rotation3d, r=RPY[0], p=RPY[1], y=RPY[2]),
-    "rp_quat(R(r, p, y))",
-    "R(r, p, y)", lambda g: dict(R=g.Rotation3d, r=RPY[0], p=RPY[1], y=RPY[2]),
-    "dk_quat(R(r, p, y))"))
-
-_geometry_op("geometry3d.transform_by", "Pose3d.transformBy", *_both(
-    "pose.transformBy(t)",
-    lambda g: dict(pose=_frame(g, "Pose3d", POSE), t=_frame(g, "Transform3d", TRANSFORM)),
-    "rp_pose3(pose.transformBy(t))",
-    "pose.transformBy(t)",
-    lambda g: dict(pose=_frame(g, "Pose3d", POSE), t=_frame(g, "Transform3d", TRANSFORM)),
-    "dk_pose3(pose.transformBy(t))"))
-
-_geometry_op("geometry3d.relative_to", "Pose3d.relativeTo", *_both(
-    "pose.relativeTo(other)",
-    lambda g: dict(pose=_frame(g, "Pose3d", POSE), other=_frame(g, "Pose3d", OTHER)),
-    "rp_pose3(pose.relativeTo(other))",
-    "pose.relativeTo(other)",
-    lambda g: dict(pose=_frame(g, "Pose3d", POSE), other=_frame(g, "Pose3d", OTHER)),
-    "dk_pose3(pose.relativeTo(other))"))
-
-_geometry_op("geometry3d.twist_exp", "Twist3d.exp", *_both(
-    "zero.exp(twist)", lambda g: dict(zero=g.Pose3d(), twist=g.Twist3d(*TWIST)),
-    "rp_pose3(zero.exp(twist))",
-    "twist.exp()", lambda g: dict(twist=g.Twist3d(*TWIST)), "dk_pose3(twist.exp())",
-    note="robotpy 2026: Pose3d().exp(twist)"))
-
-_geometry_op("geometry3d.transform_log", "Transform3d.log", *_both(
-    "zero.log(end)", lambda g: dict(zero=g.Pose3d(), end=_frame(g, "Pose3d", TRANSFORM)),
-    "twist6(zero.log(end))",
-    "t.log()", lambda g: dict(t=_frame(g, "Transform3d", TRANSFORM)), "twist6(t.log())",
-    note="robotpy 2026: Pose3d().log(end), end the transform as a prebuilt Pose3d"))
-
-_geometry_op("geometry3d.to_pose2d", "Pose3d.toPose2d", *_both(
-    "pose.toPose2d()", lambda g: dict(pose=_frame(g, "Pose3d", POSE)),
-    "rp_pose(pose.toPose2d())",
-    "pose.toPose2d()", lambda g: dict(pose=_frame(g, "Pose3d", POSE)),
-    "dk_pose(pose.toPose2d())"))
-
+_geometry_op("geometry3d.rotation", "Rotation3d(roll, pitch, yaw)", "R(r, p, y)",
+             lambda g: dict(R=g.Rotation3d, r=RPY[0], p=RPY[1], y=RPY[2]), "{lib}_quat({stmt})")
+_geometry_op("geometry3d.transform_by", "Pose3d.transformBy", "pose.transformBy(t)",
+             lambda g: dict(pose=_frame(g, "Pose3d", POSE), t=_frame(g, "Transform3d", TRANSFORM)),
+             "{lib}_pose3({stmt})")
+_geometry_op("geometry3d.relative_to", "Pose3d.relativeTo", "pose.relativeTo(other)",
+             lambda g: dict(pose=_frame(g, "Pose3d", POSE), other=_frame(g, "Pose3d", OTHER)),
+             "{lib}_pose3({stmt})")
+_geometry_op("geometry3d.twist_exp", "Twist3d.exp", "twist.exp()",
+             lambda g: dict(twist=g.Twist3d(*TWIST)), "{lib}_pose3({stmt})",
+             rp_stmt="zero.exp(twist)", rp_env=lambda g: dict(zero=g.Pose3d(),
+                                                              twist=g.Twist3d(*TWIST)),
+             note="robotpy 2026: Pose3d().exp(twist)")
+_geometry_op("geometry3d.transform_log", "Transform3d.log", "t.log()",
+             lambda g: dict(t=_frame(g, "Transform3d", TRANSFORM)), "twist6({stmt})",
+             rp_stmt="zero.log(end)", rp_env=lambda g: dict(zero=g.Pose3d(),
+                                                            end=_frame(g, "Pose3d", TRANSFORM)),
+             note="robotpy 2026: Pose3d().log(end), end the transform as a prebuilt Pose3d")
+_geometry_op("geometry3d.to_pose2d", "Pose3d.toPose2d", "pose.toPose2d()",
+             lambda g: dict(pose=_frame(g, "Pose3d", POSE)), "{lib}_pose({stmt})")
 # Not in the group: the 2026 spelling of pose + twist.exp(), fused in both libraries.
-_geometry_op("geometry3d.pose_exp", "Pose3d.exp(twist) (pose + twist.exp())", *_both(
-    "pose.exp(twist)", lambda g: dict(pose=_frame(g, "Pose3d", POSE), twist=g.Twist3d(*TWIST)),
-    "rp_pose3(pose.exp(twist))",
-    "pose.exp(twist)", lambda g: dict(pose=_frame(g, "Pose3d", POSE), twist=g.Twist3d(*TWIST)),
-    "dk_pose3(pose.exp(twist))"))
+_geometry_op("geometry3d.pose_exp", "Pose3d.exp(twist) (pose + twist.exp())", "pose.exp(twist)",
+             lambda g: dict(pose=_frame(g, "Pose3d", POSE), twist=g.Twist3d(*TWIST)),
+             "{lib}_pose3({stmt})")
 
 
 # ---------------------------------------------------------------------------------------

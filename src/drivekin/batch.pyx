@@ -54,7 +54,8 @@ import numpy as np
 
 from drivekin._core.types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
 from drivekin._core.stacks cimport (CHUNK, _Stack, _pair, _per_sample, _result, _rows,
-                                    _scratch, _stack, chunk_len, sample_shape)
+                                    _scratch, _stack, chunk_len, sample_shape,
+                                    wheel_major)
 from drivekin._core.kernels cimport (chassis_discretize, chassis_discretize_cs,
                                      desaturate_factors, desaturated_discretize_scale,
                                      gyro_turn,
@@ -802,8 +803,7 @@ cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
     # dead wheels without a gyro, the cos/sin of the solved dθ; the pose changes; then,
     # the only sequential pass, the compositions; then the headings. Each sample sees
     # exactly the operations of update (tests/behaviour/test_batch.py compares the bits).
-    cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = odo.width
-    cdef const double* x
+    cdef Py_ssize_t i, i0, ch, kk, count = p.n, n = odo.width
     cdef bint gyro = odo.gyro
     cdef double* buf = _scratch(13 * CHUNK + 2 + 4 * CHUNK * n)
     cdef double* gc = buf                   # the gyro's cos and sin (CHUNK + 1 each)
@@ -830,19 +830,11 @@ cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
             my = mx + kk
             if gyro:
                 gyro_turns(kk, g.data + i0, &odo.prev_gyro, gc, gs, tc, ts, dth)
+            wheel_major(kk, n, p.data + p.width * i0, odo.steered, md, ang)
             if odo.steered:
-                x = p.data + 2 * n * i0
-                for j in range(n):
-                    for i in range(kk):
-                        md[kk * j + i] = x[2 * (n * i + j)]
-                        ang[kk * j + i] = x[2 * (n * i + j) + 1]
                 sincos_n(kk * n, ang, ms, mc)
                 odo._motions(kk, md, mc, ms, dth, mx)
             else:
-                x = p.data + n * i0
-                for j in range(n):
-                    for i in range(kk):
-                        md[kk * j + i] = x[n * i + j]
                 odo._motions(kk, md, NULL, NULL, dth, mx)
             if not gyro:
                 sincos_n(kk, dth, ts, tc)

@@ -14,7 +14,7 @@ from drivekin._core.kernels3d cimport (pose3, pose3_log, pose3_plus, pose3_relat
                                        q_normalize, q_to_rvec, quat, rot3_relative_to,
                                        rot3_z, twist3, twist3_exp, vec3)
 from drivekin._core.stacks cimport (CHUNK, _Stack, _pair, _result, _scratch, _stack,
-                                    chunk_len, sample_shape)
+                                    chunk_len, sample_shape, wheel_major)
 from drivekin.odometry3d cimport _Odometry3d
 
 
@@ -136,18 +136,9 @@ cdef int _replay3(_Odometry3d odo, _Stack p, _Stack g, _Stack o) except -1:
                 ry[i] = rho.y
                 rz[i] = rho.z
                 dth[i] = rot3_z(turn) if yaw else 0.0
+            wheel_major(kk, n, p.data + p.width * i0, steered, md, ang)
             if steered:
-                x = p.data + 2 * n * i0
-                for j in range(n):
-                    for i in range(kk):
-                        md[kk * j + i] = x[2 * (n * i + j)]
-                        ang[kk * j + i] = x[2 * (n * i + j) + 1]
                 sincos_n(kk * n, ang, ms, mc)
-            else:
-                x = p.data + n * i0
-                for j in range(n):
-                    for i in range(kk):
-                        md[kk * j + i] = x[n * i + j]
             for j in range(n):
                 for i in range(kk):
                     r = md[kk * j + i]

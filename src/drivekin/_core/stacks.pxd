@@ -26,6 +26,23 @@ cdef inline Py_ssize_t chunk_len(Py_ssize_t i0, Py_ssize_t count) noexcept nogil
     return CHUNK if count - i0 > CHUNK else count - i0
 
 
+cdef inline void wheel_major(Py_ssize_t k, Py_ssize_t n, const double* x, bint steered,
+                             double* m, double* a) noexcept nogil:   # OUT m (and a)
+    # k samples of n wheels (sample-major, as the stacks hold them) laid out wheel-major,
+    # wheel j of sample i at m[k·j + i]: its value, or a steered module's magnitude there
+    # and its angle at a[k·j + i].
+    cdef Py_ssize_t i, j
+    if steered:
+        for j in range(n):
+            for i in range(k):
+                m[k * j + i] = x[2 * (n * i + j)]
+                a[k * j + i] = x[2 * (n * i + j) + 1]
+    else:
+        for j in range(n):
+            for i in range(k):
+                m[k * j + i] = x[n * i + j]
+
+
 # The shape of one wheel sample: W values, or a steered drivetrain's W modules of
 # [magnitude, angle rad].
 cdef inline tuple sample_shape(Py_ssize_t w, bint steered):
