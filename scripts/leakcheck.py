@@ -48,6 +48,8 @@ from drivekin import (
     SwerveModulePosition, SwerveModuleVelocity, Transform2d, Translation2d, Twist2d,
     TwoDeadWheelOdometry, wpistruct,
 )
+from drivekin import (DifferentialDriveOdometry3d, Pose3d, Rotation3d, SwerveDriveOdometry3d,
+                      SwerveDrivePoseEstimator3d, Translation3d)
 from drivekin._core import catalog
 from drivekin.geometry import _rotation_from_cos_sin as rotation_from_cos_sin
 
@@ -449,9 +451,45 @@ ERRORS += [
         sp_gen, sp_prev, np.full((4, 3), np.nan), 0.02), ValueError),
 ]
 
-# --- drivekin.batch's compositions and 3-D forms --------------------------------------
-from drivekin import DifferentialDriveOdometry3d  # noqa: E402
+# --- 3-D odometry and pose estimators ---------------------------------------------------
+gyro3 = Rotation3d(0.1, -0.2, 0.3)
+pose3 = Pose3d(1.0, 2.0, 0.1, Rotation3d(0.05, 0.0, 0.4))
+swerve_odo3 = SwerveDriveOdometry3d(swerve, Rotation3d(), positions)
+swerve_est3 = SwerveDrivePoseEstimator3d(swerve, Rotation3d(), positions, Pose3d())
+est3_clock = itertools.count(0.0, 0.02).__next__
 
+
+def est3_step_and_vision():
+    # The history slides and the records stay bounded: one update, one measurement 50 ms
+    # old, on the same clock.
+    t = est3_clock()
+    swerve_est3.updateWithTime(t, gyro3, positions)
+    swerve_est3.addVisionMeasurement(pose3, t - 0.05, (0.5, 0.5, 0.5, 0.5))
+
+
+OPERATIONS += [
+    ("swerve odometry3d update list", lambda: swerve_odo3.update(gyro3, positions)),
+    ("swerve odometry3d update ndarray", lambda: swerve_odo3.update(gyro3, positions_arr)),
+    ("swerve odometry3d resetPosition", lambda: swerve_odo3.resetPosition(
+        gyro3, positions, pose3)),
+    ("swerve odometry3d resetRotation", lambda: swerve_odo3.resetRotation(gyro3)),
+    ("swerve estimator3d updateWithTime + addVisionMeasurement", est3_step_and_vision),
+    ("swerve estimator3d sampleAt", lambda: swerve_est3.sampleAt(0.5)),
+    ("swerve estimator3d resetTranslation", lambda: swerve_est3.resetTranslation(
+        Translation3d(1.0, 2.0, 3.0))),
+]
+ERRORS += [
+    ("swerve odometry3d update short", lambda: swerve_odo3.update(gyro3, positions[:3]),
+     ValueError),
+    ("swerve odometry3d update 2-D gyro", lambda: swerve_odo3.update(angle, positions),
+     TypeError),
+    ("swerve estimator3d 3 std devs", lambda: swerve_est3.setVisionMeasurementStdDevs(
+        (0.5, 0.5, 0.5)), ValueError),
+    ("swerve estimator3d 2-D vision pose", lambda: swerve_est3.addVisionMeasurement(
+        pose, 0.0), TypeError),
+]
+
+# --- drivekin.batch's compositions and 3-D forms --------------------------------------
 b3_frames = np.tile([1.0, 2.0, 0.5, 0.9, 0.1, -0.2, 0.3], (8, 1))
 b3_twists = np.tile([0.1, 0.2, 0.0, 0.01, 0.02, 0.3], (8, 1))
 b3_gyro = np.tile([1.0, 0.0, 0.0, 0.0], (8, 1))
@@ -474,7 +512,8 @@ ERRORS += [
 # Examples that build kinematics solve a pseudo-inverse (up to ~0.1 ms a call): those
 # kinds run a hundredth of the count; the helpers (a buffer filled in Python, ~4 µs) and
 # a copy (~2 µs through copyreg) a tenth at most.
-EXAMPLE_DIVISOR = {"kinematics": 100, "odometry": 100, "estimator": 100, "helper": 10}
+EXAMPLE_DIVISOR = {"kinematics": 100, "odometry": 100, "estimator": 100, "odometry3d": 100,
+                   "estimator3d": 100, "helper": 10}
 
 for _e in catalog.ENTRIES:
     if _e.example is None:

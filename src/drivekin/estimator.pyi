@@ -24,7 +24,8 @@ history needs more room, and returned poses come from the Pose2d freelist.
 # either side.
 #
 # As at runtime, the estimators derive from the private base _PoseEstimator, which
-# declares the methods they share.
+# declares the methods they share (its own base, _EstimatorBase, the bookkeeping shared
+# with drivekin.estimator3d, has no Python-visible members).
 
 from collections.abc import Callable, Sequence
 from typing import final, overload
@@ -71,7 +72,13 @@ class MathSharedStore:
     set_timestamp_source = setTimestampSource
 
 @disjoint_base
-class _PoseEstimator:
+class _EstimatorBase:
+    """The pose history's and the vision records' bookkeeping in time, the gains and the
+    clock checks, shared by the 2-D and 3-D estimators.
+    """
+
+@disjoint_base
+class _PoseEstimator(_EstimatorBase):
     """Everything but the drivetrain: the pose history, the vision records and the four
     resets shared by every estimator.
     """

@@ -25,7 +25,8 @@ calls; returned poses come from the Pose3d freelist.
 # either side.
 #
 # As at runtime, the estimators derive from the private base _PoseEstimator3d, which
-# declares the methods they share.
+# declares the methods they share (its base, drivekin.estimator's _EstimatorBase, has no
+# Python-visible members).
 
 from collections.abc import Sequence
 from typing import overload, final
@@ -36,6 +37,7 @@ from typing_extensions import disjoint_base
 
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.differential import DifferentialDriveWheelPositions
+from drivekin.estimator import _EstimatorBase
 from drivekin.geometry3d import Pose3d, Rotation3d, Translation3d
 from drivekin.mecanum import MecanumDriveKinematics, MecanumDriveWheelPositions
 from drivekin.swerve import SwerveDriveKinematics, SwerveModulePosition
@@ -45,7 +47,7 @@ _ModulePositions = Sequence[SwerveModulePosition] | npt.NDArray[np.float64]
 _WheelReadings = Sequence[float] | npt.NDArray[np.float64]
 
 @disjoint_base
-class _PoseEstimator3d:
+class _PoseEstimator3d(_EstimatorBase):
     """Everything but the drivetrain: the pose history, the vision records and the four
     resets shared by every 3-D estimator.
     """

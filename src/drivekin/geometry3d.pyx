@@ -1434,8 +1434,12 @@ cdef class CoordinateSystem:
         ``transform``), expressed in the system ``from_``, converted to the system ``to``.
         A Transform3d's rotation is conjugated by the change of frame, so it stays
         intrinsic."""
-        check_type(from_, CoordinateSystem, "from_")
-        check_type(to, CoordinateSystem, "to")
+        if from_ is not MISSING:
+            check_type(from_, CoordinateSystem, "from_")
+        if to is not MISSING:
+            check_type(to, CoordinateSystem, "to")
+        if from_ is MISSING or to is MISSING:
+            raise TypeError("CoordinateSystem.convert() takes the value, from_ and to")
         value = _one_value(translation, rotation, pose, transform)
         cdef quat_t f = (<CoordinateSystem>from_).q
         cdef quat_t t_inv = rot3_inverse((<CoordinateSystem>to).q)

@@ -19,9 +19,8 @@ from libc.string cimport memcpy
 
 from drivekin._core.args cimport check_type
 from drivekin._core.drivetrain cimport Drivetrain, position_changes
-from drivekin._core.kernels3d cimport (pose3, pose3_plus, q_identity, q_to_rvec,
-                                       rot3_relative_to, rot3_z, twist3_exp, vec3)
-from drivekin._core.types cimport pose3_t, quat_t, vec3_t
+from drivekin._core.kernels3d cimport pose3, q_identity, rot3_relative_to, rot3_z, vec3
+from drivekin._core.types cimport pose3_t, quat_t
 from drivekin._core.wheels cimport _WheelValues
 from drivekin.chassis cimport new_chassis_velocities
 from drivekin.deadwheel cimport DeadWheelKinematics
@@ -109,18 +108,11 @@ cdef class _Odometry3d:
         # dead wheels take the yaw of Δ for the arcs the turn swept them through, as
         # WPILib's two-dead-wheel draft does), pose ← pose + Twist3d(dx, dy, 0, ρ).exp().
         cdef quat_t turn = rot3_relative_to(gyro, self.prev_gyro)
-        cdef vec3_t rho = q_to_rvec(turn)
         cdef double dth = rot3_z(turn) if self.yaw else 0.0
         cdef double out[3]
         position_changes(self.width, cur, self.prev)
         self.kin._twists(1, cur, c, s, &dth, out)
-        self.twist.dx = out[0]
-        self.twist.dy = out[1]
-        self.twist.dz = 0.0
-        self.twist.rx = rho.x
-        self.twist.ry = rho.y
-        self.twist.rz = rho.z
-        self.pose = pose3_plus(self.pose, twist3_exp(self.twist))
+        odometry3d_move(&self.pose, &self.twist, out[0], out[1], turn)
         self.prev_gyro = gyro
 
     cdef int _reset(self, object gyro_angle, object a, object b, object pose) except -1:

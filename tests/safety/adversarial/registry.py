@@ -12,7 +12,8 @@ introspects each class's members and fails, naming the member, when something is
 here — so a new class or method joins the suite by construction. Each class's valid
 instance (:data:`VALID`) is its catalog ``example``, except the few listed in
 :data:`SPECIAL` with the state the suite needs; :data:`KINEMATICS`, :data:`ODOMETRY`,
-:data:`ESTIMATORS` and :data:`INIT_ONCE` follow from the entries' kinds. To add a class:
+:data:`ESTIMATORS` (their 3-D counterparts too) and :data:`INIT_ONCE` follow from the
+entries' kinds. To add a class:
 its catalog entry (with an ``example``), a second instance in :data:`ALT` if it is a value,
 whether it is immutable (:data:`IMMUTABLE`), and a ``Sig`` for every member.
 """
@@ -69,6 +70,21 @@ from drivekin import (
 )
 from drivekin import (DCMotor, DriveFeedforwards, ModuleConfig, PathConstraints, RobotConfig,
                       SwerveSetpoint, SwerveSetpointGenerator)
+from drivekin import (
+    DeadWheelOdometry3d,
+    DeadWheelPoseEstimator3d,
+    DifferentialDriveOdometry3d,
+    DifferentialDrivePoseEstimator3d,
+    MecanumDriveOdometry3d,
+    MecanumDrivePoseEstimator3d,
+    Pose3d,
+    Rotation3d as R3,
+    SwerveDriveOdometry3d,
+    SwerveDrivePoseEstimator3d,
+    Translation3d as T3,
+    TwoDeadWheelOdometry3d,
+    TwoDeadWheelPoseEstimator3d,
+)
 
 N = 4  # modules of the registry's swerve drive
 
@@ -114,7 +130,8 @@ SPECIAL = {
                            "that wrongly touches the heading memory is visible",
     DSK: "small ratios for drive-level factors in (0, 1), and a reset offset",
     **{e.cls: "one odometry sample at t = 0, so sampleAt and vision measurements have "
-              "history" for e in catalog.entries("estimator")},
+              "history" for kind in ("estimator", "estimator3d")
+       for e in catalog.entries(kind)},
     Units: "no instances: the receiver of its static methods is the class itself",
     SwerveSetpointGenerator: "compatibility='pathplanner', whose compatibility property "
                              "reads a value (the default mode's is None, which reads as a "
@@ -186,13 +203,17 @@ IMMUTABLE = {T, R, Pose2d, Transform2d}
 KINEMATICS = {e.cls for e in catalog.entries("kinematics")}
 ODOMETRY = {e.cls for e in catalog.entries("odometry")}
 ESTIMATORS = {e.cls for e in catalog.entries("estimator")}
+ODOMETRY3D = {e.cls for e in catalog.entries("odometry3d")}
+ESTIMATORS3D = {e.cls for e in catalog.entries("estimator3d")}
 # DCMotor is immutable too, but has no default value for __new__ to match: a __new__'d
 # one refuses to compute, as the kinematics do.
-INIT_ONCE = IMMUTABLE | KINEMATICS | ODOMETRY | ESTIMATORS | {TIB, DCMotor}
+INIT_ONCE = (IMMUTABLE | KINEMATICS | ODOMETRY | ESTIMATORS | ODOMETRY3D | ESTIMATORS3D
+             | {TIB, DCMotor})
 # The setpoint generator's values are immutable and refuse a second __init__ the same way.
 INIT_ONCE |= {ModuleConfig, RobotConfig, PathConstraints, DriveFeedforwards, SwerveSetpoint,
               SwerveSetpointGenerator}
-STATEFUL = ODOMETRY | ESTIMATORS | {TIB}   # no value semantics: not copyable, no str of values
+# No value semantics: not copyable, no str of values.
+STATEFUL = ODOMETRY | ESTIMATORS | ODOMETRY3D | ESTIMATORS3D | {TIB}
 NAMESPACES = {MathSharedStore, Units}      # static methods only; the clock is not deterministic
 
 
@@ -765,6 +786,85 @@ API[DeadWheelPoseEstimator] = _estimator_api(
      S(Obj(DeadWheelKinematics), _DW, Obj(R, none_ok=True), Obj(Pose2d, none_ok=True),
        _STD, _STD)],
     (_DW, Obj(R)), (_DW, Obj(R), Obj(Pose2d)))
+
+
+# ---- 3-D odometry and pose estimators ---------------------------------------------
+# As the 2-D ones, with Rotation3d gyros, Pose3d poses and four standard deviations. Each
+# VALID estimator has one odometry sample at t = 0; the readings are the catalog examples'.
+
+_POSE3D_RESETS = {"getPose": S(), "resetPose": S(Obj(Pose3d)),
+                  "resetTranslation": S(Obj(T3)), "resetRotation": S(Obj(R3))}
+
+
+def _odometry3d(init, readings, gyro_last=False):
+    """3-D odometry members: ``init`` the constructor's arguments before the optional
+    initial pose, ``readings`` the kinds of one sample (before the gyro, or after it)."""
+    def call(*tail):
+        return S(*readings, Obj(R3), *tail) if gyro_last else S(Obj(R3), *readings, *tail)
+    return {"__init__": S(*init, Obj(Pose3d, none_ok=True)),
+            "resetPosition": call(Obj(Pose3d)), "update": call(), **_POSE3D_RESETS}
+
+
+API[SwerveDriveOdometry3d] = _odometry3d(
+    (Obj(SwerveDriveKinematics), Obj(R3), Seq(SMP)), (Seq(SMP),))
+API[MecanumDriveOdometry3d] = _odometry3d(
+    (Obj(MecanumDriveKinematics), Obj(R3), Obj(MWP)), (Obj(MWP),))
+API[DifferentialDriveOdometry3d] = _odometry3d((Obj(R3), NUM, NUM), (NUM, NUM))
+API[DeadWheelOdometry3d] = _odometry3d(
+    (Obj(DeadWheelKinematics), _DW, Obj(R3)), (_DW,), gyro_last=True)
+API[TwoDeadWheelOdometry3d] = _odometry3d(
+    (NUM, NUM, NUM, NUM, Obj(R3)), (NUM, NUM), gyro_last=True)
+API[TwoDeadWheelOdometry3d]["toChassisVelocities"] = S(NUM, NUM, NUM)
+# The swerve and dead-wheel readings also come as float64 arrays.
+for _cls, _seq, _arr in ((SwerveDriveOdometry3d, Seq, _MOD_ARR),
+                         (DeadWheelOdometry3d, Floats, _DW_ARR)):
+    for _m in ("__init__", "resetPosition", "update"):
+        _s = API[_cls][_m]
+        API[_cls][_m] = [_s, Sig(*[(_arr if isinstance(k, _seq) else k) for k in _s.kinds])]
+
+_STD4 = Floats(4)
+_UPDATE3D = {
+    SwerveDrivePoseEstimator3d: (R3(), [SMP(0.0, R(0.0)) for _ in range(N)]),
+    MecanumDrivePoseEstimator3d: (R3(), MWP(0.0, 0.0, 0.0, 0.0)),
+    DifferentialDrivePoseEstimator3d: (R3(), 0.0, 0.0),
+    DeadWheelPoseEstimator3d: ([0.0] * DEAD_WHEELS, R3()),
+    TwoDeadWheelPoseEstimator3d: (0.0, 0.0, R3()),
+}
+for _cls in ESTIMATORS3D:
+    VALID[_cls] = _estimator(catalog.BY_CLASS[_cls].example, *_UPDATE3D[_cls])
+
+
+def _estimator3d_api(init, update_kinds, reset_kinds):
+    return {
+        "__init__": [S(*init), S(*init, _STD4, _STD4)],
+        "update": S(*update_kinds), "updateWithTime": S(Num(1.0), *update_kinds),
+        "resetPosition": S(*reset_kinds),
+        "getEstimatedPosition": S(), "sampleAt": S(NUM),
+        "setVisionMeasurementStdDevs": [S(_STD4), S(Arr((4,), list_ok=True))],
+        "addVisionMeasurement": [S(Obj(Pose3d), NUM),
+                                 S(Obj(Pose3d), NUM, Floats(4, none_ok=True))],
+        **{k: v for k, v in _POSE3D_RESETS.items() if k != "getPose"},
+    }
+
+
+API[SwerveDrivePoseEstimator3d] = _estimator3d_api(
+    (Obj(SwerveDriveKinematics), Obj(R3), Seq(SMP), Obj(Pose3d)),
+    (Obj(R3), Seq(SMP)), (Obj(R3), Seq(SMP), Obj(Pose3d)))
+API[MecanumDrivePoseEstimator3d] = _estimator3d_api(
+    (Obj(MecanumDriveKinematics), Obj(R3), Obj(MWP), Obj(Pose3d)),
+    (Obj(R3), Obj(MWP)), (Obj(R3), Obj(MWP), Obj(Pose3d)))
+API[DifferentialDrivePoseEstimator3d] = _estimator3d_api(
+    (Obj(R3), NUM, NUM, Obj(Pose3d)), (Obj(R3), NUM, NUM), (Obj(R3), NUM, NUM, Obj(Pose3d)))
+API[DifferentialDrivePoseEstimator3d].update(
+    update=[S(Obj(R3), NUM, NUM), S(Obj(R3), Obj(DWP))],
+    updateWithTime=[S(Num(1.0), Obj(R3), NUM, NUM), S(Num(1.0), Obj(R3), Obj(DWP))],
+    resetPosition=[S(Obj(R3), NUM, NUM, Obj(Pose3d)), S(Obj(R3), Obj(DWP), Obj(Pose3d))])
+API[DeadWheelPoseEstimator3d] = _estimator3d_api(
+    (Obj(DeadWheelKinematics), _DW, Obj(R3), Obj(Pose3d, none_ok=True)),
+    (_DW, Obj(R3)), (_DW, Obj(R3), Obj(Pose3d)))
+API[TwoDeadWheelPoseEstimator3d] = _estimator3d_api(
+    (NUM, NUM, NUM, NUM, Obj(R3), Obj(Pose3d)),
+    (NUM, NUM, Obj(R3)), (NUM, NUM, Obj(R3), Obj(Pose3d)))
 
 
 class ClockSource(Kind):

@@ -10,7 +10,7 @@ import numpy as np
 
 import drivekin
 from tests.safety.adversarial import registry as reg
-from tests.safety.adversarial.registry import ODOMETRY, Const, Prop
+from tests.safety.adversarial.registry import ODOMETRY, ODOMETRY3D, Const, Prop
 
 CLEAN = (TypeError, ValueError)
 
@@ -112,6 +112,24 @@ def _odometry_probe(o):
     return (o.getPose().x, o.getPose().y, *_rot(o.getPose().getRotation()), pose.x)
 
 
+def _odometry3d_probe(o):
+    # As _odometry_probe: the readings the 3-D odometry was built with (a level gyro).
+    g = drivekin.Rotation3d()
+    if isinstance(o, drivekin.SwerveDriveOdometry3d):
+        pose = o.update(g, [drivekin.SwerveModulePosition(0.0, drivekin.Rotation2d(0.0))
+                            for _ in range(reg.N)])
+    elif isinstance(o, drivekin.MecanumDriveOdometry3d):
+        pose = o.update(g, drivekin.MecanumDriveWheelPositions(0.0, 0.0, 0.0, 0.0))
+    elif isinstance(o, drivekin.DeadWheelOdometry3d):
+        pose = o.update([0.0] * reg.DEAD_WHEELS, g)
+    elif isinstance(o, drivekin.TwoDeadWheelOdometry3d):
+        pose = o.update(0.0, 0.0, g)
+    else:
+        pose = o.update(g, 0.0, 0.0)
+    p, q = o.getPose(), o.getPose().getRotation().getQuaternion()
+    return (p.getX(), p.getY(), p.getZ(), q.getW(), q.getX(), q.getY(), q.getZ(), pose.getX())
+
+
 FIELDS = {
     drivekin.Translation2d: lambda v: (v.x, v.y),
     drivekin.Rotation2d: _rot,
@@ -133,6 +151,7 @@ FIELDS = {
         tuple((p.x, p.y, *_rot(p.getRotation())) for p in k.getWheelPoses()),
         k.requiresGyro()),
     **{c: _odometry_probe for c in ODOMETRY},
+    **{c: _odometry3d_probe for c in ODOMETRY3D},
 }
 
 

@@ -88,8 +88,11 @@ def test_kinds_follow_the_catalog():
     assert reg.KINEMATICS == {e.cls for e in catalog.entries("kinematics")}
     assert reg.ODOMETRY == {e.cls for e in catalog.entries("odometry")}
     assert reg.ESTIMATORS == {e.cls for e in catalog.entries("estimator")}
+    assert reg.ODOMETRY3D == {e.cls for e in catalog.entries("odometry3d")}
+    assert reg.ESTIMATORS3D == {e.cls for e in catalog.entries("estimator3d")}
     assert reg.IMMUTABLE <= {e.cls for e in catalog.entries("value")}
-    assert reg.INIT_ONCE >= reg.KINEMATICS | reg.ODOMETRY | reg.ESTIMATORS | reg.IMMUTABLE
+    assert reg.INIT_ONCE >= (reg.KINEMATICS | reg.ODOMETRY | reg.ESTIMATORS | reg.ODOMETRY3D
+                             | reg.ESTIMATORS3D | reg.IMMUTABLE)
 
 
 @pytest.mark.parametrize("cls", sorted(reg.ODOMETRY, key=lambda c: c.__name__),
@@ -102,3 +105,11 @@ def test_odometry_starts_at_the_probe_readings(cls):
     assert support.snap(obj) == support.snap(obj)
     assert (obj.getPose().x, obj.getPose().y,
             obj.getPose().getRotation().getRadians()) == pose
+
+
+@pytest.mark.parametrize("cls", sorted(reg.ODOMETRY3D, key=lambda c: c.__name__),
+                         ids=lambda c: c.__name__)
+def test_odometry3d_starts_at_the_probe_readings(cls):
+    obj = reg.VALID[cls]()
+    before = support.snap(obj)
+    assert support.snap(obj) == before   # each snap updates with the probe's readings
