@@ -8,14 +8,14 @@ Rotation3d(Quaternion(w, x, y, z)): the quaternion normalised as that constructo
 from cpython.mem cimport PyMem_Free
 from drivekin._core.dkmath cimport sincos_n
 
-from drivekin._core.types cimport pose3_t, quat_t, twist3_t, vec3_t
+from drivekin._core.types cimport pose3_t, quat_t, twist3_t
 from drivekin._core.drivetrain cimport Drivetrain
 from drivekin._core.kernels3d cimport (pose3, pose3_log, pose3_plus, pose3_relative_to,
-                                       q_normalize, q_to_rvec, quat, rot3_relative_to,
-                                       rot3_z, twist3, twist3_exp, vec3)
+                                       q_normalize, quat, rot3_relative_to, rot3_z, twist3,
+                                       twist3_exp, vec3)
 from drivekin._core.stacks cimport (CHUNK, _Stack, _pair, _result, _scratch, _stack,
                                     chunk_len, sample_shape, wheel_major)
-from drivekin.odometry3d cimport _Odometry3d
+from drivekin.odometry3d cimport _Odometry3d, odometry3d_move
 
 
 cdef inline pose3_t read_pose(const double* r) noexcept nogil:
@@ -95,21 +95,19 @@ cdef object replay3(_Odometry3d odo, object gyro, object positions, object out):
 
 
 cdef int _replay3(_Odometry3d odo, _Stack p, _Stack g, _Stack o) except -1:
-    # Odometry3d.update (odometry3d.pyx's _move) restaged per chunk: the gyro changes and
-    # their rotation vectors; the wheel readings laid out wheel-major (a steered
+    # Odometry3d.update (odometry3d.pyx's _move) restaged per chunk: the gyro changes (and
+    # their yaw, for dead wheels); the wheel readings laid out wheel-major (a steered
     # drivetrain's with their directions' cos/sin, vectorised) and turned into changes;
     # the drivetrain's (dx, dy) for the chunk (_twists, k samples as k calls); then, in
-    # order, the exp of each twist composed onto the pose. Each sample sees exactly the
-    # operations of update (tests/behaviour/test_batch3d.py compares the bits).
+    # order, each step's move (odometry3d_move, update's own kernel). Each sample sees
+    # exactly the operations of update (tests/behaviour/test_batch3d.py compares the bits).
     cdef Drivetrain kin = odo.kin
     cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = odo.width
     cdef bint steered = kin.steered, yaw = odo.yaw
-    cdef double* buf = _scratch(7 * CHUNK + 4 * CHUNK * n)
-    cdef double* rx = buf                   # each sample's gyro change: rotation vector,
-    cdef double* ry = rx + CHUNK            # and its yaw (0 unless the map takes it)
-    cdef double* rz = ry + CHUNK
-    cdef double* dth = rz + CHUNK
-    cdef double* mxy = dth + CHUNK          # the motions: dx, then dy, kk apart (3 CHUNK)
+    cdef double* buf = _scratch(3 * CHUNK + 4 * CHUNK * n)   # freed below: nothing raises
+    cdef quat_t turns[CHUNK]                # each sample's gyro change,
+    cdef double dth[CHUNK]                  # and its yaw (0 unless the map takes it)
+    cdef double* mxy = buf                  # the motions: dx, then dy, kk apart (3 CHUNK)
     cdef double* md = mxy + 3 * CHUNK       # a chunk's wheel readings, then their changes;
     cdef double* ang = md + CHUNK * n       # steered: module angles, cos and sin
     cdef double* mc = ang + CHUNK * n
@@ -117,9 +115,8 @@ cdef int _replay3(_Odometry3d odo, _Stack p, _Stack g, _Stack o) except -1:
     cdef double* prev = odo.prev
     cdef const double* x
     cdef double r
-    cdef quat_t gq, turn
+    cdef quat_t gq
     cdef quat_t before = odo.prev_gyro
-    cdef vec3_t rho
     cdef pose3_t cur = odo.pose
     cdef twist3_t tw = odo.twist
     with nogil:
@@ -129,13 +126,9 @@ cdef int _replay3(_Odometry3d odo, _Stack p, _Stack g, _Stack o) except -1:
             for i in range(kk):
                 x = g.data + 4 * (i0 + i)
                 gq = q_normalize(quat(x[0], x[1], x[2], x[3]))
-                turn = rot3_relative_to(gq, before)
+                turns[i] = rot3_relative_to(gq, before)
                 before = gq
-                rho = q_to_rvec(turn)
-                rx[i] = rho.x
-                ry[i] = rho.y
-                rz[i] = rho.z
-                dth[i] = rot3_z(turn) if yaw else 0.0
+                dth[i] = rot3_z(turns[i]) if yaw else 0.0
             wheel_major(kk, n, p.data + p.width * i0, steered, md, ang)
             if steered:
                 sincos_n(kk * n, ang, ms, mc)
@@ -146,8 +139,7 @@ cdef int _replay3(_Odometry3d odo, _Stack p, _Stack g, _Stack o) except -1:
                     prev[j] = r
             kin._twists(kk, md, mc if steered else NULL, ms if steered else NULL, dth, mxy)
             for i in range(kk):
-                tw = twist3(mxy[i], mxy[kk + i], 0.0, rx[i], ry[i], rz[i])
-                cur = pose3_plus(cur, twist3_exp(tw))
+                odometry3d_move(&cur, &tw, mxy[i], mxy[kk + i], turns[i])
                 write_pose(o.data + 7 * (i0 + i), cur)
         odo.pose = cur
         odo.prev_gyro = before
