@@ -43,7 +43,8 @@ instruction set in use, the best the CPU has, chosen at import: ``"AVX-512"`` or
 ``"AVX2"`` (x86_64 CPUs that have them), ``"SSE2"`` (other x86_64), ``"NEON"``
 (aarch64). The vector and scalar forms perform the same operations in the same order, so
 results are the same bits whichever is in use, on every supported platform
-(docs/DESIGN.md, "One trig").
+(docs/DESIGN.md, "One trig"). The 3-D forms run the per-call kernels sample by sample,
+with the scalar forms (a 3-D replay's module angles excepted).
 """
 from cpython.mem cimport PyMem_Free
 from drivekin._core.dkmath cimport atan2, atan2_n, sincos, sincos_n, trig_isa, trig_use
