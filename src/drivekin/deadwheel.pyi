@@ -11,7 +11,8 @@ Stacking the wheels gives d = M·t with t = (dx, dy, dθ). Without a gyro the wh
 observe all three components and t is the least-squares solution M⁺·d (exact for three
 wheels). With a gyro, dθ is taken from it and only (dx, dy) is fitted, which two
 non-parallel wheels always observe. Redundant wheels are averaged in by the least-squares
-fit, never ignored. Both pseudo-inverses are built once, at construction.
+fit, never ignored. Both pseudo-inverses are built once, at construction (drivekin's own,
+the same bits on every platform).
 """
 
 # Hand-written stub for the compiled module drivekin.deadwheel (deadwheel.pyx). The

@@ -11,7 +11,8 @@ Stacking the wheels gives d = M·t with t = (dx, dy, dθ). Without a gyro the wh
 observe all three components and t is the least-squares solution M⁺·d (exact for three
 wheels). With a gyro, dθ is taken from it and only (dx, dy) is fitted, which two
 non-parallel wheels always observe. Redundant wheels are averaged in by the least-squares
-fit, never ignored. Both pseudo-inverses are built once, at construction.
+fit, never ignored. Both pseudo-inverses are built once, at construction (drivekin's own,
+the same bits on every platform).
 """
 cimport cython
 from drivekin._core.drivetrain cimport Drivetrain
@@ -25,12 +26,13 @@ from drivekin._core.dkmath cimport atan2, hypot
 
 import numpy as np
 
-from drivekin._core.kernels cimport deadwheel_reading, deadwheel_solve
+from drivekin._core.kernels cimport deadwheel_reading, deadwheel_solve, mat_vec_step
 from drivekin._core.args cimport check_type, read_floats, vector_data
 from drivekin.geometry cimport Pose2d, Rotation2d, Translation2d, new_twist
 from drivekin._core.args cimport snapshot
 from drivekin.chassis cimport (ChassisAccelerations, ChassisVelocities, _ChassisVector,
                                new_chassis_velocities)
+from drivekin._core.drivetrain import pseudo_inverse
 from drivekin._core.errors import type_name
 
 cnp.import_array()
@@ -69,6 +71,20 @@ cdef inline void readings(Py_ssize_t w, const double* rows, const double* x,
     cdef Py_ssize_t j
     for j in range(w):
         y[j] = deadwheel_reading(rows + 3 * j, x[0], x[1], x[2])
+
+
+cdef inline void twists(DeadWheelKinematics kin, Py_ssize_t k, const double* d,
+                        const double* dth, double* out) noexcept nogil:
+    # The drivetrain contract's _twists: deadwheel_solve for each sample.
+    cdef Py_ssize_t i
+    cdef double r[3]
+    for i in range(k):
+        deadwheel_solve(kin.n, kin.p3, kin.p2, kin.g, d + i, k, dth != NULL,
+                        dth[i] if dth != NULL else 0.0, r)
+        out[i] = r[0]
+        out[k + i] = r[1]
+        if dth == NULL:
+            out[2 * k + i] = r[2]
 
 
 cdef class DeadWheelKinematics(Drivetrain):
@@ -117,8 +133,13 @@ cdef class DeadWheelKinematics(Drivetrain):
         sv = np.linalg.svd(a, compute_uv=False)
         if not sv[1] > RANK_TOL * sv[0]:
             raise ValueError(parallel_message(rows[0, 0], rows[0, 1]))
-        pa = np.linalg.pinv(a)
-        g = pa @ rows[:, 2]
+        cdef double[:, ::1] mr = rows
+        cdef double[:, ::1] m2 = pseudo_inverse(a)
+        cdef double shift[2]
+        # A⁺c, summed in wheel order as the solve sums (numpy's @ may call a BLAS whose
+        # order and fused multiply-adds depend on the build).
+        mat_vec_step(2, n, &m2[0, 0], &mr[0, 2], 3, shift)
+        g = (shift[0], shift[1])
         # Rank of M with the lever arms measured in units of the layout's size, so that
         # neither the choice of metres nor a small robot decides observability. Lever arms
         # that vanish on that scale (every wheel line through one point) leave rotation
@@ -130,7 +151,7 @@ cdef class DeadWheelKinematics(Drivetrain):
         sv = np.linalg.svd(scaled, compute_uv=False)
         heading = n >= 3 and sv[2] > RANK_TOL * sv[0]
         if heading:
-            p3 = np.linalg.pinv(rows)
+            p3 = pseudo_inverse(rows)
             why = None
         else:
             p3 = np.zeros((3, n))
@@ -140,9 +161,7 @@ cdef class DeadWheelKinematics(Drivetrain):
             why = (f"{n} wheels cannot observe rotation" if n < 3 else
                    f"every wheel's line passes through ({px:.6g}, {py:.6g}) m, so a "
                    "rotation about that point cannot be observed")
-        cdef double[:, ::1] mr = np.ascontiguousarray(rows)
-        cdef double[:, ::1] m3 = np.ascontiguousarray(p3)
-        cdef double[:, ::1] m2 = np.ascontiguousarray(pa)
+        cdef double[:, ::1] m3 = p3
         # Reading a generic iterable ran Python code, which may have initialised this
         # object meanwhile; committing now would leak and replace that state.
         self._refuse_reinit()
@@ -233,15 +252,11 @@ cdef class DeadWheelKinematics(Drivetrain):
 
     cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
                       const double* dth, double* out) noexcept nogil:
-        cdef Py_ssize_t i
-        cdef double r[3]
-        for i in range(k):
-            deadwheel_solve(self.n, self.p3, self.p2, self.g, d + i, k, dth != NULL,
-                            dth[i] if dth != NULL else 0.0, r)
-            out[i] = r[0]
-            out[k + i] = r[1]
-            if dth == NULL:
-                out[2 * k + i] = r[2]
+        twists(self, k, d, dth, out)
+
+    cdef void _twist(self, const double* d, const double* c, const double* s,
+                     const double* dth, double* out) noexcept nogil:
+        twists(self, 1, d, dth, out)
 
     cdef int _need_heading(self, str call) except -1:
         raise ValueError(f"{call} needs a gyro with this layout: {self.no_heading}")

@@ -158,6 +158,17 @@ cdef inline DifferentialDriveWheelVelocities new_wheel_velocities(double l, doub
 
 
 # ---------------------------------------------------------------------------------------
+cdef inline void twists(double trackwidth, Py_ssize_t k, const double* d, const double* dth,
+                        double* out) noexcept nogil:
+    # The drivetrain contract's _twists: d[i] left, d[k + i] right.
+    cdef Py_ssize_t i
+    for i in range(k):
+        out[i] = (d[i] + d[k + i]) / 2.0
+        out[k + i] = 0.0
+        if dth == NULL:
+            out[2 * k + i] = (d[k + i] - d[i]) / trackwidth
+
+
 cdef class DifferentialDriveKinematics(Drivetrain):
     """DifferentialDriveKinematics(trackwidth)
 
@@ -214,12 +225,11 @@ cdef class DifferentialDriveKinematics(Drivetrain):
 
     cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
                       const double* dth, double* out) noexcept nogil:
-        cdef Py_ssize_t i
-        for i in range(k):
-            out[i] = (d[i] + d[k + i]) / 2.0
-            out[k + i] = 0.0
-            if dth == NULL:
-                out[2 * k + i] = (d[k + i] - d[i]) / self._trackwidth
+        twists(self._trackwidth, k, d, dth, out)
+
+    cdef void _twist(self, const double* d, const double* c, const double* s,
+                     const double* dth, double* out) noexcept nogil:
+        twists(self._trackwidth, 1, d, dth, out)
 
     @property
     def trackwidth(self):

@@ -152,6 +152,10 @@ cdef class Quaternion:
     1e-9 (so q and −q differ as Quaternions, although they are the same rotation).
     """
 
+    def __cinit__(self):
+        # A bare Quaternion.__new__ is the default (1, 0, 0, 0).
+        self.q.w = 1.0
+
     def __init__(self, double w=1.0, double x=0.0, double y=0.0, double z=0.0):
         refuse_reinit(self.frozen, self)
         self.q = quat(w, x, y, z)
@@ -708,10 +712,11 @@ cdef class Translation3d:
 
     def nearest(self, translations):
         """Return the element of ``translations`` closest to this point (first on ties)."""
-        for t in translations:
+        items = list(translations)          # one pass: a generator is read once
+        for t in items:
             if type(t) is not Translation3d:
                 raise TypeError(f"nearest() takes Translation3d objects, got {type_name(t)}")
-        return min(translations, key=self.getDistance)
+        return min(items, key=self.getDistance)
 
     def interpolate(self, end_value: Translation3d, double t):
         """Return the linear interpolation towards ``end_value``; ``t`` is not clamped."""
@@ -1456,10 +1461,12 @@ cdef class CoordinateSystem:
                                     rot3_rotate_by(rot3_rotate_by(p.q, f), t_inv)))
         if type(value) is Transform3d:
             p = (<Transform3d>value).p
+            # coordRot = from.R.rotateBy(to.R⁻¹); the rotation is
+            # coordRot⁻¹.rotateBy(R.rotateBy(coordRot)) = coordRot·R·coordRot⁻¹.
             c = rot3_rotate_by(f, t_inv)
             return new_transform3d(pose3(_convert_vector(p.t, f, t_inv),
-                                         rot3_rotate_by(rot3_rotate_by(p.q, c),
-                                                        rot3_inverse(c))))
+                                         rot3_rotate_by(rot3_inverse(c),
+                                                        rot3_rotate_by(p.q, c))))
         raise TypeError("CoordinateSystem.convert() takes a Translation3d, Rotation3d, Pose3d "
                         f"or Transform3d, got {type_name(value)}")
 
@@ -1467,6 +1474,8 @@ cdef class CoordinateSystem:
         return (CoordinateSystem, self.axes)
 
     def __repr__(self):
+        if self.axes is None:
+            return "<uninitialised CoordinateSystem>"
         return f"CoordinateSystem({self.axes[0]!r}, {self.axes[1]!r}, {self.axes[2]!r})"
 
 

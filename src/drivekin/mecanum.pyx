@@ -17,6 +17,7 @@ from drivekin._core.kernels cimport (clamp01, feet_to_meters, mat_vec, mat_vec_s
                                      wheels_desaturate)
 from drivekin.geometry cimport Translation2d, new_twist
 from drivekin.chassis cimport ChassisAccelerations, ChassisVelocities, new_chassis_velocities
+from drivekin._core.drivetrain import pseudo_inverse
 from drivekin._core.errors import type_name
 
 cdef Translation2d ORIGIN = Translation2d()
@@ -199,6 +200,22 @@ cdef inline void inverse_rows(const double* wx, const double* wy, vec2_t cor,
             m[3 * i + 2] = x - y
 
 
+cdef inline void twists(const double* f, Py_ssize_t k, const double* d, const double* dth,
+                        double* out) noexcept nogil:
+    # The drivetrain contract's _twists with the forward matrix f (the dθ row only when
+    # no heading change is given).
+    cdef Py_ssize_t i
+    cdef double r[3]
+    for i in range(k):
+        if dth != NULL:
+            mat_vec_step(2, 4, f, d + i, k, r)
+        else:
+            mat_vec_step(3, 4, f, d + i, k, r)
+            out[2 * k + i] = r[2]
+        out[i] = r[0]
+        out[k + i] = r[1]
+
+
 cdef class MecanumDriveKinematics(Drivetrain):
     """MecanumDriveKinematics(front_left_wheel, front_right_wheel, rear_left_wheel, rear_right_wheel)
 
@@ -230,11 +247,11 @@ cdef class MecanumDriveKinematics(Drivetrain):
                 raise ValueError(f"wheel {i} position must be finite (m), got {t!r}")
             wx[i] = t.v.x
             wy[i] = t.v.y
-        # The pseudo-inverse of the CoR = 0 matrix (numpy's SVD pinv, as WPILib Java's
-        # EJML; built once, so its cost is irrelevant), before the object is touched.
+        # The pseudo-inverse of the CoR = 0 matrix (as WPILib Java's EJML pinv; drivekin's
+        # own, the same bits everywhere), before the object is touched.
         inverse_rows(wx, wy, vec(0.0, 0.0), m)
-        cdef double[:, ::1] f = np.ascontiguousarray(
-            np.linalg.pinv(np.array([m[i] for i in range(12)]).reshape(4, 3)))
+        cdef double[:, ::1] f = pseudo_inverse(
+            np.array([m[i] for i in range(12)]).reshape(4, 3))
         self.wx = wx
         self.wy = wy
         self.m = m
@@ -298,16 +315,11 @@ cdef class MecanumDriveKinematics(Drivetrain):
 
     cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
                       const double* dth, double* out) noexcept nogil:
-        cdef Py_ssize_t i
-        cdef double r[3]
-        for i in range(k):
-            if dth != NULL:
-                mat_vec_step(2, 4, self.f, d + i, k, r)
-            else:
-                mat_vec_step(3, 4, self.f, d + i, k, r)
-                out[2 * k + i] = r[2]
-            out[i] = r[0]
-            out[k + i] = r[1]
+        twists(self.f, k, d, dth, out)
+
+    cdef void _twist(self, const double* d, const double* c, const double* s,
+                     const double* dth, double* out) noexcept nogil:
+        twists(self.f, 1, d, dth, out)
 
     def getFrontLeft(self):
         """Return the front-left wheel position (Translation2d, m)."""

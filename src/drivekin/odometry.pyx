@@ -44,22 +44,23 @@ cdef int uninitialised(object odometry) except -1:
     raise RuntimeError(f"{type(odometry).__name__}.__init__ has not completed")
 
 
-cdef inline void advance(_Odometry o, double* cur, const double* c, const double* s,
-                         const rot2_t* gyro) noexcept:
-    # The update on readings already in C memory (cur: scratch, left holding the changes;
-    # steered: c, s the module directions): the drivetrain's motion for the heading
-    # change, which is the gyro's (gyro NULL: the wheels'), and the pose move.
+cdef inline void advance(_Odometry o, Py_ssize_t width, double* cur, const double* c,
+                         const double* s, const rot2_t* gyro) noexcept:
+    # The update on the width (= o.width: the classes that know it pass a literal, which
+    # the compiler unrolls) readings already in C memory (cur: scratch, left holding the
+    # changes; steered: c, s the module directions): the drivetrain's motion for the
+    # heading change, which is the gyro's (gyro NULL: the wheels'), and the pose move.
     cdef double r[3]
     cdef double dth
     cdef rot2_t turn
-    position_changes(o.width, cur, o.prev)
+    position_changes(width, cur, o.prev)
     if gyro != NULL:
         turn = gyro_turn(gyro[0], &o.prev_gyro)
         dth = rot_radians(turn)
-        o.kin._twists(1, cur, c, s, &dth, r)
+        o.kin._twist(cur, c, s, &dth, r)
         odometry_move_cs(&o.pose, &o.twist, r[0], r[1], dth, turn.c, turn.s, True)
     else:
-        o.kin._twists(1, cur, c, s, NULL, r)
+        o.kin._twist(cur, c, s, NULL, r)
         odometry_move(&o.pose, &o.twist, r[0], r[1], r[2])
 
 
@@ -192,7 +193,7 @@ cdef class SwerveDriveOdometry(_Odometry):
             uninitialised(self)
         cdef SwerveDriveKinematics k = <SwerveDriveKinematics>self.kin
         k._read(wheel_positions, SwerveModulePosition, "wheel_positions")
-        advance(self, k.s0, k.s1, k.s2, &gyro_angle.r)
+        advance(self, k.n, k.s0, k.s1, k.s2, &gyro_angle.r)
         return 0
 
 
@@ -239,7 +240,7 @@ cdef class MecanumDriveOdometry(_Odometry):
             uninitialised(self)
         cdef double cur[4]
         cur = (<_WheelValues>wheel_positions).w
-        advance(self, cur, NULL, NULL, &gyro_angle.r)
+        advance(self, 4, cur, NULL, NULL, &gyro_angle.r)
         return 0
 
 
@@ -285,8 +286,17 @@ cdef class DifferentialDriveOdometry(_Odometry):
         cdef double cur[2]
         cur[0] = left_distance
         cur[1] = right_distance
-        advance(self, cur, NULL, NULL, &gyro_angle.r)
+        advance(self, 2, cur, NULL, NULL, &gyro_angle.r)
         return 0
+
+
+cdef inline void two_wheel_twists(double xy, double yx, Py_ssize_t k, const double* d,
+                                  const double* dth, double* out) noexcept nogil:
+    # The wheels' readings minus the arcs the heading change swept them through.
+    cdef Py_ssize_t i
+    for i in range(k):
+        out[i] = d[i] + dth[i] * xy
+        out[k + i] = d[k + i] - dth[i] * yx
 
 
 @cython.final
@@ -306,11 +316,11 @@ cdef class _TwoDeadWheels(Drivetrain):
 
     cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
                       const double* dth, double* out) noexcept nogil:
-        # The wheels' readings minus the arcs the heading change swept them through.
-        cdef Py_ssize_t i
-        for i in range(k):
-            out[i] = d[i] + dth[i] * self.xy
-            out[k + i] = d[k + i] - dth[i] * self.yx
+        two_wheel_twists(self.xy, self.yx, k, d, dth, out)
+
+    cdef void _twist(self, const double* d, const double* c, const double* s,
+                     const double* dth, double* out) noexcept nogil:
+        two_wheel_twists(self.xy, self.yx, 1, d, dth, out)
 
 
 cdef class TwoDeadWheelOdometry(_Odometry):
@@ -369,7 +379,7 @@ cdef class TwoDeadWheelOdometry(_Odometry):
         cdef double cur[2]
         cur[0] = x_wheel_pos
         cur[1] = y_wheel_pos
-        advance(self, cur, NULL, NULL, &gyro_angle.r)
+        advance(self, 2, cur, NULL, NULL, &gyro_angle.r)
         return 0
 
     def toChassisVelocities(self, double vx, double vy, double omega):
@@ -444,5 +454,5 @@ cdef class DeadWheelOdometry(_Odometry):
         self._gyro_arg(gyro_angle, "update")
         cdef DeadWheelKinematics k = <DeadWheelKinematics>self.kin
         k._read(wheel_positions, k.s, "wheel_positions")
-        advance(self, k.s, NULL, NULL, &(<Rotation2d>gyro_angle).r if self.gyro else NULL)
+        advance(self, k.n, k.s, NULL, NULL, &(<Rotation2d>gyro_angle).r if self.gyro else NULL)
         return 0

@@ -70,6 +70,7 @@ cdef class _Odometry3d:
     # Read one sample of readings (the public classes' one or two arguments) into C memory:
     # ``cur`` the distances (m, writable: they become the changes), ``c``/``s`` the module
     # directions of a steered drivetrain (else NULL). Raises without changing anything.
+    # The base reads two numbers (the differential drive's and the two dead wheels').
     cdef int _read(self, object a, object b, double** cur, const double** c,
                    const double** s) except -1
     # update without building the returned Pose3d (the estimators call it).

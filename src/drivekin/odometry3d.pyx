@@ -89,7 +89,18 @@ cdef class _Odometry3d:
 
     cdef int _read(self, object a, object b, double** cur, const double** c,
                    const double** s) except -1:
-        raise TypeError(f"{type(self).__name__} does not read wheel positions")
+        # Two wheel distances (m), as numbers: the differential drive's and the two dead
+        # wheels'; the other drivetrains read their own forms.
+        try:
+            self.scratch[0] = a
+            self.scratch[1] = b
+        except TypeError:
+            raise TypeError(f"the two wheel distances must be numbers (m), got "
+                            f"{type_name(a)} and {type_name(b)}") from None
+        cur[0] = self.scratch
+        c[0] = NULL
+        s[0] = NULL
+        return 0
 
     cdef int _step(self, Rotation3d gyro_angle, object a, object b) except -1:
         cdef double* cur
@@ -231,17 +242,6 @@ cdef class MecanumDriveOdometry3d(_Odometry3d):
         return new_pose3d(self.pose)
 
 
-cdef int read_pair(object a, object b, double* out) except -1:
-    # Two distances (m), as numbers.
-    try:
-        out[0] = a
-        out[1] = b
-    except TypeError:
-        raise TypeError(f"the two wheel distances must be numbers (m), got {type_name(a)} "
-                        f"and {type_name(b)}") from None
-    return 0
-
-
 cdef class DifferentialDriveOdometry3d(_Odometry3d):
     """DifferentialDriveOdometry3d(gyro_angle, left_distance, right_distance, initial_pose=Pose3d())
 
@@ -255,14 +255,6 @@ cdef class DifferentialDriveOdometry3d(_Odometry3d):
         # The trackwidth only sets the wheels' dθ, which 3-D odometry does not use.
         self._begin(DifferentialDriveKinematics(1.0), 2, False, gyro_angle, left_distance,
                     right_distance, initial_pose)
-
-    cdef int _read(self, object a, object b, double** cur, const double** c,
-                   const double** s) except -1:
-        read_pair(a, b, self.scratch)
-        cur[0] = self.scratch
-        c[0] = NULL
-        s[0] = NULL
-        return 0
 
     def resetPosition(self, gyro_angle: Rotation3d, left_distance, right_distance,
                       pose: Pose3d):
@@ -334,14 +326,6 @@ cdef class TwoDeadWheelOdometry3d(_Odometry3d):
         self.x_wheel_y = x_wheel_y_pos
         self.y_wheel_x = y_wheel_x_pos
         self._begin(kin, 2, True, gyro_angle, x_wheel_pos, y_wheel_pos, initial_pose)
-
-    cdef int _read(self, object a, object b, double** cur, const double** c,
-                   const double** s) except -1:
-        read_pair(a, b, self.scratch)
-        cur[0] = self.scratch
-        c[0] = NULL
-        s[0] = NULL
-        return 0
 
     def resetPosition(self, x_wheel_pos, y_wheel_pos, gyro_angle: Rotation3d, pose: Pose3d):
         """Reset the pose, the gyro baseline and the wheel-distance baselines."""

@@ -31,6 +31,7 @@ from drivekin.swervemodule cimport (SwerveModuleAcceleration, SwerveModulePositi
 from drivekin.geometry cimport Rotation2d, Translation2d, Twist2d, new_rotation, new_twist
 from drivekin.chassis cimport (ChassisAccelerations, ChassisVelocities, check_discretize_fits,
                               new_chassis_velocities)
+from drivekin._core.drivetrain import pseudo_inverse
 from drivekin._core.errors import type_name
 
 cnp.import_array()
@@ -159,8 +160,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
             if not (isfinite((<Translation2d>t).v.x) and isfinite((<Translation2d>t).v.y)):
                 raise ValueError(f"module {i} position must be finite (m), got {t!r}")
         # Forward kinematics is the least-squares inverse of the inverse-kinematics
-        # matrices at CoR = 0. It is built once, so numpy's SVD pseudo-inverse (the same
-        # as WPILib Java's EJML pinv, rank-deficient layouts included) costs nothing later.
+        # matrices at CoR = 0 (WPILib Java's EJML pinv, rank-deficient layouts included),
+        # drivekin's own (the same bits on every platform), built once.
         # Everything that can fail runs before the object is touched.
         xs = np.array([(<Translation2d>t).v.x for t in mods])
         ys = np.array([(<Translation2d>t).v.y for t in mods])
@@ -176,8 +177,8 @@ cdef class SwerveDriveKinematics(Drivetrain):
         m2[0::2, 3] = -ys
         m2[1::2, 2] = -ys
         m2[1::2, 3] = xs
-        cdef double[:, ::1] p1 = np.ascontiguousarray(np.linalg.pinv(m1))
-        cdef double[:, ::1] p2 = np.ascontiguousarray(np.linalg.pinv(m2))
+        cdef double[:, ::1] p1 = pseudo_inverse(m1)
+        cdef double[:, ::1] p2 = pseudo_inverse(m2)
         # Reading a generic iterable above ran Python code, which may have initialised
         # this object meanwhile; committing now would leak and replace that state.
         self._refuse_reinit()
@@ -337,14 +338,17 @@ cdef class SwerveDriveKinematics(Drivetrain):
 
     cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
                       const double* dth, double* out) noexcept nogil:
-        # The velocity pseudo-inverse's rows, without the dθ row when it is known. Many
-        # samples at once vectorise across the samples; for one, forward_solve is the
-        # cheaper form of the same sums.
-        cdef Py_ssize_t rows = 2 if dth != NULL else 3
-        if k == 1:
-            forward_solve(rows, self.n, self.f1, d, c, s, out)
+        # The velocity pseudo-inverse's rows, without the dθ row when it is known; the
+        # loop over samples innermost, so it vectorises.
+        forward_solve_many(2 if dth != NULL else 3, self.n, k, self.f1, d, c, s, out)
+
+    cdef void _twist(self, const double* d, const double* c, const double* s,
+                     const double* dth, double* out) noexcept nogil:
+        # forward_solve: the cheaper form of the same sums for one sample.
+        if dth != NULL:
+            forward_solve(2, self.n, self.f1, d, c, s, out)
         else:
-            forward_solve_many(rows, self.n, k, self.f1, d, c, s, out)
+            forward_solve(3, self.n, self.f1, d, c, s, out)
 
     cdef int _ik(self, ChassisVelocities cv, Translation2d cor) except -1:
         # Exact zero returns the remembered headings without looking at the CoR.

@@ -65,15 +65,20 @@ cdef class Drivetrain:
     # out: 3k values: dx at out[i], dy at out[k + i], and with dth NULL dθ at out[2k + i]
     #    (with dth given, out[2k:] is not written). It must not overlap d, c, s or dth.
     # Reads only what is fixed at construction (the forward matrices), so it needs no
-    # params copy and runs without the GIL; call _ready() first. Per call, k = 1.
+    # params copy and runs without the GIL; call _ready() first.
     cdef void _twists(self, Py_ssize_t k, const double* d, const double* c, const double* s,
                       const double* dth, double* out) noexcept nogil   # OUT
+    # _twists of one sample (k = 1: out is dx, dy[, dθ]), for an update. The base calls
+    # _twists; a drivetrain overrides it with the same arithmetic specialised for one
+    # sample, since a per-call update pays for every instruction.
+    cdef void _twist(self, const double* d, const double* c, const double* s,
+                     const double* dth, double* out) noexcept nogil   # OUT
 
 
 cdef inline void position_changes(Py_ssize_t n, double* cur,                    # IN/OUT
                                   double* prev) noexcept nogil:                 # IN/OUT
     # One sample's n readings (m) into the changes since prev, which becomes the readings:
-    # what _twists takes (k = 1), cur[j] ← cur[j] − prev[j], prev[j] ← the old cur[j].
+    # what _twist takes, cur[j] ← cur[j] − prev[j], prev[j] ← the old cur[j].
     cdef Py_ssize_t j
     cdef double r
     for j in range(n):

@@ -10,7 +10,7 @@
 # user hands in (Quaternion, Rotation3d(Quaternion), Rotation3d(initial, final)) is
 # normalised exactly as WPILib does. setup.py builds with -ffp-contract=off, so a*b + c is
 # never fused, and Cython keeps the parentheses.
-# Trigonometry is drivekin's own (_core/dkmath.h: sincos, atan2; asin through atan2), the
+# Trigonometry is drivekin's own (_core/dkmath.h: sincos, atan2; no asin, see rot3_y), the
 # same on every platform. exp and log (Quaternion.exp/log/pow only) are libm's.
 # Twist3d.exp and Transform3d.log are drivekin's cancellation-free forms (see there).
 
@@ -95,11 +95,6 @@ cdef inline double norm3(double x, double y, double z) noexcept nogil:
     y = y / m
     z = z / m
     return m * sqrt(x * x + y * y + z * z)
-
-cdef inline double asin_(double r) noexcept nogil:
-    # asin for |r| <= 1 through drivekin's atan2: (1 − r)(1 + r) keeps 1 − r² exact to an
-    # ulp next to ±1 (Sterbenz), so the result is within an ulp or two of libm's.
-    return atan2(r, sqrt((1.0 - r) * (1.0 + r)))
 
 # ---------------------------------------------------------------------------------------
 # Quaternion (WPILib's Quaternion.java, operation for operation)
@@ -348,11 +343,19 @@ cdef inline double rot3_x(quat_t q) noexcept nogil:
     return 0.0
 
 cdef inline double rot3_y(quat_t q) noexcept nogil:
-    # Pitch; ±π/2 once the sine reaches ±1.
+    # Pitch, ±π/2 once the sine 2(wy − zx) reaches ±1. WPILib takes asin of that sine,
+    # whose slope is infinite at ±1: a sine 1e-16 short of 1, one rounding, is 1.5e-8 rad
+    # short of π/2 (WPILib's own gimbal-lock test fails by that much on drivekin's bits).
+    # atan2 of the sine over |cos pitch|, read off the roll terms as
+    # sqrt((1 − 2(x² + y²))² + (2(wx + yz))²), is the same angle without that
+    # amplification: a few ulps everywhere.
     cdef double ratio = 2.0 * (q.w * q.y - q.z * q.x)
+    cdef double cxcy, sxcy
     if fabs(ratio) >= 1.0:
         return copysign(M_PI / 2.0, ratio)
-    return asin_(ratio)
+    cxcy = 1.0 - 2.0 * (q.x * q.x + q.y * q.y)
+    sxcy = 2.0 * (q.w * q.x + q.y * q.z)
+    return atan2(ratio, sqrt(cxcy * cxcy + sxcy * sxcy))
 
 cdef inline double rot3_z(quat_t q) noexcept nogil:
     # Yaw; at gimbal lock atan2(2wz, w² − z²).
@@ -456,7 +459,7 @@ cdef inline pose3_t twist3_exp(twist3_t tw) noexcept nogil:
     cdef vec3_t u = vec3(tw.dx, tw.dy, tw.dz)
     cdef vec3_t r = vec3(tw.rx, tw.ry, tw.rz)
     cdef double theta = norm3(r.x, r.y, r.z)
-    cdef double t2, sh, ch, k, b, c
+    cdef double t2, sh, ch, k, b, c, inv
     cdef vec3_t a, c1, c2
     sincos(0.5 * theta, &sh, &ch)
     if theta < 1e-3:
@@ -466,10 +469,11 @@ cdef inline pose3_t twist3_exp(twist3_t tw) noexcept nogil:
         c = 1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0      # C
         a = r
     else:
-        k = sh / theta
-        b = 2.0 * sh * sh / theta                          # Bθ = (1 − cos θ)/θ
-        c = 1.0 - 2.0 * sh * ch / theta                    # Cθ² = 1 − sin θ/θ
-        a = vec3(r.x / theta, r.y / theta, r.z / theta)    # n̂
+        inv = 1.0 / theta                                  # one division for the five
+        k = sh * inv
+        b = 2.0 * sh * sh * inv                            # Bθ = (1 − cos θ)/θ
+        c = 1.0 - 2.0 * sh * ch * inv                      # Cθ² = 1 − sin θ/θ
+        a = vec3(r.x * inv, r.y * inv, r.z * inv)          # n̂
     c1 = v3_cross(a, u)
     c2 = v3_cross(a, c1)
     return pose3(vec3(u.x + b * c1.x + c * c2.x,
@@ -485,14 +489,16 @@ cdef inline twist3_t pose3_log(pose3_t tr) noexcept nogil:
     cdef double w = fabs(q.w)
     cdef double half = atan2(vn, w)                # θ/2, in [0, π/2]
     cdef double theta = 2.0 * half
-    cdef double k, t2, d, sgn
+    cdef double k, t2, d, sgn, inv
     cdef vec3_t r, n, c1, c2
     # The rotation part is WPILib's toRotationVector, the short way round (atan2 is odd in
     # its first argument, so −2·atan2(n, |w|)/n is Java's 2·atan2(−n, −w)/n for w < 0).
     if vn < 1e-9:
         k = 2.0 / q.w - 2.0 / 3.0 * vn * vn / (q.w * q.w * q.w)
+        inv = 0.0
     else:
-        k = 2.0 * half / vn
+        inv = 1.0 / vn
+        k = 2.0 * half * inv
         if q.w < 0.0:
             k = -k
     r = vec3(k * q.x, k * q.y, k * q.z)
@@ -506,9 +512,9 @@ cdef inline twist3_t pose3_log(pose3_t tr) noexcept nogil:
         c2 = v3_cross(r, c1)
     else:
         # n̂ = ±v/‖v‖ (the sign that makes w >= 0, as for r).
-        sgn = -1.0 / vn if q.w < 0.0 else 1.0 / vn
+        sgn = -inv if q.w < 0.0 else inv
         n = vec3(q.x * sgn, q.y * sgn, q.z * sgn)
-        d = 1.0 - half * w / vn                            # Dθ²
+        d = 1.0 - half * w * inv                           # Dθ²
         c2 = v3_cross(n, v3_cross(n, u))
     out.dx = u.x - 0.5 * c1.x + d * c2.x
     out.dy = u.y - 0.5 * c1.y + d * c2.y

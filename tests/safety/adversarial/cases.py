@@ -170,8 +170,10 @@ def hostiles(k):
                 v[-1] = make()
                 return v
             return build
-        h = [("str", lambda: "abc", (), None),
-             ("float", lambda: 0.5, (), None), ("short", lambda: k.valid()[:-1], (), None),
+        h = [("str", lambda: "abc", (), None)]
+        if not k.float_ok:
+            h.append(("float", lambda: 0.5, (), None))
+        h += [("short", lambda: k.valid()[:-1], (), None),
              ("long", lambda: k.valid() + [1.0], (), None), ("empty", list, (), None),
              ("None-item", with_item(lambda: None), (), None),
              ("str-item", with_item(lambda: "1.0"), (), None),
@@ -806,6 +808,8 @@ def _leaves_replaced(x, value):
         return drivekin.Translation2d(value, value)
     if isinstance(x, drivekin.Pose2d):
         return drivekin.Pose2d(value, value, x.getRotation())
+    if isinstance(x, drivekin.Translation3d):
+        return drivekin.Translation3d(value, value, value)
     if isinstance(x, (tuple, list)):
         return type(x)(_leaves_replaced(i, value) for i in x)
     return x
@@ -816,6 +820,11 @@ def _invariants(cls, obj):
         c, s = obj.getCos(), obj.getSin()
         if c == c and s == s and not abs(c * c + s * s - 1.0) <= 1e-9:  # NaN propagates
             raise Fail(f"unpickled a non-unit rotation (cos={c!r}, sin={s!r})")
+    if cls is drivekin.Rotation3d:
+        q = obj.getQuaternion()
+        n = q.norm()
+        if n == n and not abs(n - 1.0) <= 1e-9:  # NaN propagates
+            raise Fail(f"unpickled a non-unit Rotation3d ({q!r})")
     if cls is drivekin.DifferentialDriveKinematics and not 0 < obj.trackwidth < float("inf"):
         raise Fail(f"unpickled a trackwidth of {obj.trackwidth!r}")
     if cls is drivekin.DifferentialSwerveModuleKinematics and not finite(obj):

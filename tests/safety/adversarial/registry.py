@@ -70,6 +70,8 @@ from drivekin import (
 )
 from drivekin import (DCMotor, DriveFeedforwards, ModuleConfig, PathConstraints, RobotConfig,
                       SwerveSetpoint, SwerveSetpointGenerator)
+from drivekin import (CoordinateAxis, CoordinateSystem, Pose3d, Quaternion, Rotation3d as R3,
+                      Transform3d, Translation3d as T3, Twist3d)
 from drivekin import (
     DeadWheelOdometry3d,
     DeadWheelPoseEstimator3d,
@@ -77,11 +79,8 @@ from drivekin import (
     DifferentialDrivePoseEstimator3d,
     MecanumDriveOdometry3d,
     MecanumDrivePoseEstimator3d,
-    Pose3d,
-    Rotation3d as R3,
     SwerveDriveOdometry3d,
     SwerveDrivePoseEstimator3d,
-    Translation3d as T3,
     TwoDeadWheelOdometry3d,
     TwoDeadWheelPoseEstimator3d,
 )
@@ -171,6 +170,15 @@ ALT = {  # a second valid instance, different from VALID's
     SwerveSetpoint: lambda: SwerveSetpoint(CV(-1.0, 0.5, -0.5),
                                            [SMV(-1.0, R(0.3 * i)) for i in range(N)],
                                            DriveFeedforwards.zeros(N)),
+    Quaternion: lambda: Quaternion(-0.25, 1.5, 0.5, -2.0),
+    R3: lambda: R3(-1.0, 0.5, 2.5),
+    T3: lambda: T3(-2.0, 0.5, 3.0),
+    Pose3d: lambda: Pose3d(-1.0, 0.5, 2.0, R3(2.5, -0.25, 1.0)),
+    Transform3d: lambda: Transform3d(2.0, 1.0, -0.5, R3(-1.0, 0.75, 0.25)),
+    Twist3d: lambda: Twist3d(-1.0, 2.0, -0.5, 0.25, -0.75, 1.5),
+    CoordinateAxis: lambda: CoordinateAxis(-0.5, 1.0, 2.0),
+    CoordinateSystem: lambda: CoordinateSystem(CoordinateAxis.N(), CoordinateAxis.E(),
+                                               CoordinateAxis.D()),
 }
 _ALT = threading.local()  # per thread: the thread cases build both kinds at once
 
@@ -199,7 +207,7 @@ def make(cls):
 # not run must refuse to compute): immutable values, kinematics, odometry, estimators and
 # the interpolation buffer. Immutability is a property of the class that the catalog does
 # not record, so IMMUTABLE is listed here; the rest follows from the catalog's kinds.
-IMMUTABLE = {T, R, Pose2d, Transform2d}
+IMMUTABLE = {T, R, Pose2d, Transform2d, Quaternion, R3, T3, Pose3d, Transform3d}
 KINEMATICS = {e.cls for e in catalog.entries("kinematics")}
 ODOMETRY = {e.cls for e in catalog.entries("odometry")}
 ESTIMATORS = {e.cls for e in catalog.entries("estimator")}
@@ -209,6 +217,8 @@ ESTIMATORS3D = {e.cls for e in catalog.entries("estimator3d")}
 # one refuses to compute, as the kinematics do.
 INIT_ONCE = (IMMUTABLE | KINEMATICS | ODOMETRY | ESTIMATORS | ODOMETRY3D | ESTIMATORS3D
              | {TIB, DCMotor})
+# The coordinate axes and systems are immutable without a default value, as DCMotor.
+INIT_ONCE |= {CoordinateAxis, CoordinateSystem}
 # The setpoint generator's values are immutable and refuse a second __init__ the same way.
 INIT_ONCE |= {ModuleConfig, RobotConfig, PathConstraints, DriveFeedforwards, SwerveSetpoint,
               SwerveSetpointGenerator}
@@ -296,12 +306,26 @@ class Floats(Kind):
     """A list of ``n`` plain floats (one value per dead wheel). Only lists, tuples and
     float64 arrays are accepted there, never other iterables."""
 
-    def __init__(self, n, none_ok=False):
-        self.n, self.none_ok = n, none_ok
+    def __init__(self, n, none_ok=False, float_ok=False):
+        # float_ok: an overload takes a float at this position (Rotation3d(axis, angle)
+        # beside Rotation3d(initial, final)), so a float is not hostile here.
+        self.n, self.none_ok, self.float_ok = n, none_ok, float_ok
 
     def valid(self):
         v = [0.25 * (i + 1) for i in range(self.n)]
         return [-x for x in v] if _alt() else v
+
+
+class Axis(Obj):
+    """A CoordinateAxis with the given direction (the three of a CoordinateSystem must
+    be perpendicular, so the catalog's example cannot stand for each)."""
+
+    def __init__(self, direction, alt):
+        super().__init__(CoordinateAxis)
+        self.direction, self.alt = direction, alt
+
+    def valid(self):
+        return CoordinateAxis(*(self.alt if _alt() else self.direction))
 
 
 class Int(Kind):
@@ -656,6 +680,105 @@ for _cls, _extras in {
     DWA: {"from_fps": S(NUM, NUM), "left_fpss": Prop(NUM), "right_fpss": Prop(NUM)},
 }.items():
     API[_cls].update(_extras)
+# 3-D geometry (drivekin.geometry3d). A vector is 3 floats (list, tuple or float64 array).
+_V3 = Floats(3)
+_ROTATION_MATRIX = Arr((3, 3), fill=[[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+_AFFINE = Arr((4, 4), fill=[[0.0, -1.0, 0.0, 1.0], [1.0, 0.0, 0.0, 2.0],
+                            [0.0, 0.0, 1.0, 3.0], [0.0, 0.0, 0.0, 1.0]])
+_Q = Quaternion
+_FRAME3D = {"x": Prop(), "y": Prop(), "z": Prop(), "getX": S(), "getY": S(), "getZ": S(),
+            "getTranslation": S(), "getRotation": S(), "times": S(NUM), "div": S(NUM),
+            "toMatrix": S(), "__reduce__": S(), "__mul__": S(NUM), "__rmul__": S(NUM),
+            "__truediv__": S(NUM)}
+_FRAME3D_INIT = [S(), S(Obj(T3), Obj(R3)), S(NUM, NUM, NUM, Obj(R3)), S(_AFFINE),
+                 S(kw={"translation": VALID[T3], "rotation": VALID[R3]}),
+                 S(kw={"x": lambda: 1.0, "y": lambda: 2.0, "z": lambda: 3.0,
+                       "rotation": VALID[R3]})]
+_SYSTEM = [Obj(CoordinateSystem), Obj(CoordinateSystem)]
+API.update({
+    _Q: {
+        "__init__": [S(), S(NUM, NUM, NUM, NUM),
+                     S(kw={"w": lambda: 0.5, "x": lambda: 0.5, "y": lambda: -0.5,
+                           "z": lambda: 0.5})],
+        "__reduce__": S(), "__eq__": S(Obj(_Q)),
+        **{f: Prop() for f in ("w", "x", "y", "z")},
+        **{f: S() for f in ("getW", "getX", "getY", "getZ", "conjugate", "inverse", "norm",
+                            "normalize", "exp", "log", "toRotationVector")},
+        "plus": S(Obj(_Q)), "minus": S(Obj(_Q)), "dot": S(Obj(_Q)),
+        "times": [S(Obj(_Q, float_ok=True)), S(NUM)], "divide": S(NUM), "pow": S(NUM),
+        "fromRotationVector": S(_V3),
+        "__add__": S(Obj(_Q)), "__sub__": S(Obj(_Q)),
+        "__mul__": [S(Obj(_Q, float_ok=True)), S(NUM)], "__rmul__": S(NUM),
+        "__truediv__": S(NUM),
+    },
+    R3: {
+        "__init__": [S(), S(NUM, NUM, NUM), S(Obj(_Q)), S(_V3, NUM), S(_V3),
+                     S(_ROTATION_MATRIX), S(_V3, Floats(3, float_ok=True)), S(Obj(R)),
+                     S(kw={"roll": lambda: 0.1, "pitch": lambda: 0.2, "yaw": lambda: 0.3})],
+        "__reduce__": S(), "__eq__": S(Obj(R3)), "kZero": Const(R3()),
+        **{f: Prop() for f in ("x", "y", "z", "angle")},
+        **{f: S() for f in ("getX", "getY", "getZ", "getAngle", "getAxis", "getQuaternion",
+                            "toMatrix", "toVector", "toRotation2d", "inverse")},
+        "fromRadians": S(NUM, NUM, NUM), "fromDegrees": S(NUM, NUM, NUM),
+        "fromRotations": S(NUM, NUM, NUM),
+        "rotateBy": S(Obj(R3)), "relativeTo": S(Obj(R3)), "times": S(NUM), "div": S(NUM),
+        "interpolate": S(Obj(R3), NUM), "integrate": S(NUM, NUM, NUM, NUM),
+        "__mul__": S(NUM), "__rmul__": S(NUM), "__truediv__": S(NUM),
+    },
+    T3: {
+        **_arith(T3, iterable=True),
+        # A float where the angle or the only argument goes is the (x, y[, z]) form.
+        "__init__": [S(NUM, NUM, NUM), S(NUM, Obj(R3, float_ok=True)),
+                     S(Floats(3, float_ok=True)), S(Obj(T, float_ok=True)),
+                     S(kw={"x": lambda: 1.0, "y": lambda: 2.0, "z": lambda: 3.0})],
+        "__reduce__": S(), "kZero": Const(T3()),
+        "x": Prop(), "y": Prop(), "z": Prop(), "getX": S(), "getY": S(), "getZ": S(),
+        "getNorm": S(), "getSquaredNorm": S(), "getDistance": S(Obj(T3)),
+        "getSquaredDistance": S(Obj(T3)), "toVector": S(), "toTranslation2d": S(),
+        "rotateBy": S(Obj(R3)), "rotateAround": S(Obj(T3), Obj(R3)), "dot": S(Obj(T3)),
+        "cross": S(Obj(T3)), "nearest": S(Seq(T3, n=None, least=1)),
+        "interpolate": S(Obj(T3), NUM), "fromFeet": S(NUM, NUM, NUM),
+    },
+    Pose3d: {
+        **_FRAME3D,
+        "__init__": [*_FRAME3D_INIT, S(Obj(Pose2d)), S(kw={"pose": VALID[Pose2d]})],
+        "__eq__": S(Obj(Pose3d)), "kZero": Const(Pose3d()),
+        "transformBy": S(Obj(Transform3d)), "plus": S(Obj(Transform3d)),
+        "__add__": S(Obj(Transform3d)), "minus": S(Obj(Pose3d)), "__sub__": S(Obj(Pose3d)),
+        "relativeTo": S(Obj(Pose3d)), "rotateBy": S(Obj(R3)),
+        "rotateAround": S(Obj(T3), Obj(R3)), "toPose2d": S(), "exp": S(Obj(Twist3d)),
+        "log": S(Obj(Pose3d)), "nearest": S(Seq(Pose3d, n=None, least=1)),
+        "interpolate": S(Obj(Pose3d), NUM), "fromFeet": S(NUM, NUM, NUM, Obj(R3)),
+    },
+    Transform3d: {
+        **_FRAME3D,
+        "__init__": [*_FRAME3D_INIT, S(Obj(Pose3d), Obj(Pose3d)), S(Obj(Transform2d)),
+                     S(kw={"initial": VALID[Pose3d], "final": VALID[Pose3d]}),
+                     S(kw={"transform": VALID[Transform2d]})],
+        "__eq__": S(Obj(Transform3d)), "kZero": Const(Transform3d()),
+        "inverse": S(), "plus": S(Obj(Transform3d)), "__add__": S(Obj(Transform3d)),
+        "log": S(),
+    },
+    Twist3d: {
+        "__init__": S(*[NUM] * 6), "__reduce__": S(), "__eq__": S(Obj(Twist3d)),
+        **{f: Prop(NUM) for f in ("dx", "dy", "dz", "rx", "ry", "rz")},
+        "exp": S(), "fromFeet": [S(), S(*[NUM] * 6)], "__mul__": S(NUM), "__rmul__": S(NUM),
+    },
+    CoordinateAxis: {
+        "__init__": S(NUM, NUM, NUM), "__reduce__": S(),
+        **{f: S() for f in ("N", "S", "E", "W", "U", "D")},
+    },
+    CoordinateSystem: {
+        # EDN, and NED in the alternate build.
+        "__init__": S(Axis((0.0, -1.0, 0.0), (1.0, 0.0, 0.0)),
+                      Axis((0.0, 0.0, -1.0), (0.0, -1.0, 0.0)),
+                      Axis((1.0, 0.0, 0.0), (0.0, 0.0, -1.0))),
+        "__reduce__": S(),
+        **{f: S() for f in ("NWU", "EDN", "NED")},
+        "convert": [S(Obj(T3), *_SYSTEM), S(Obj(R3), *_SYSTEM), S(Obj(Pose3d), *_SYSTEM),
+                    S(Obj(Transform3d), *_SYSTEM)],
+    },
+})
 # Differential swerve. The limit stays valid (>= 0) in the alternate build: 0.125 -> 0.0625.
 _LIMIT = Num(0.125)
 _PROP = {"proportional": lambda: True}

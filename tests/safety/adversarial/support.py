@@ -163,6 +163,22 @@ def _diffswerve(k):
 
 
 FIELDS[drivekin.DifferentialSwerveModuleKinematics] = _diffswerve
+
+
+def _quat(q):
+    return (q.w, q.x, q.y, q.z)
+
+
+FIELDS.update({
+    drivekin.Quaternion: _quat,
+    drivekin.Rotation3d: lambda r: _quat(r.getQuaternion()),
+    drivekin.Translation3d: tuple,
+    drivekin.Pose3d: lambda p: (p.x, p.y, p.z, *_quat(p.getRotation().getQuaternion())),
+    drivekin.Transform3d: lambda p: (p.x, p.y, p.z, *_quat(p.getRotation().getQuaternion())),
+    drivekin.Twist3d: lambda t: (t.dx, t.dy, t.dz, t.rx, t.ry, t.rz),
+    drivekin.CoordinateAxis: repr,
+    drivekin.CoordinateSystem: repr,
+})
 for _c in (drivekin.DifferentialSwerveMotorVelocities,
            drivekin.DifferentialSwerveModuleVelocities,
            drivekin.MecanumDriveWheelVelocities, drivekin.MecanumDriveWheelPositions,
