@@ -55,7 +55,7 @@ compile_args = (["-O3", "-fno-math-errno", "-fno-trapping-math", "-ffp-contract=
 
 modules = ["geometry", "geometry3d", "chassis", "swervemodule", "swerve", "_core.wheels", "_core.drivetrain",
            "differential", "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "odometry3d",
-           "estimator3d", "batch",
+           "estimator3d", "_core.stacks", "_core.batch3d", "batch",
            "_core.alloccount", "_core.wpilog", "motor", "robotconfig", "_core.setpointkernel",
            "setpoint"]
 

@@ -8,7 +8,7 @@ Each operation runs on N samples once to warm up, then K more times; instruction
 sample = (count with K runs − count with none) / (K·N), so start-up and set-up cancel.
 OpenBLAS threads and hash randomisation are turned off so that the counts repeat. Needs
 valgrind. Inputs: the 4-module swerve and mecanum at (±0.3, ±0.3) m, differential 0.6 m,
-three dead wheels; random commands and readings (seed 1).
+three dead wheels; random commands, readings, 3-D poses and gyro quaternions (seed 1).
 """
 from __future__ import annotations
 
@@ -35,6 +35,13 @@ OPERATIONS = {
                                     "0.0), gy, w2c)",
     "dead-wheel (3) odometry replay": "batch.replay(dk.DeadWheelOdometry(dw, [0.0] * 3, "
                                       "R(0)), gy, w3c)",
+    "Pose2d.transformBy": "batch.transformBy(ch, ch2)",
+    "Twist3d.exp": "batch.exp(tw6)",
+    "Transform3d.log": "batch.log(fr7)",
+    "Pose3d.transformBy": "batch.transformBy(fr7, fr7b)",
+    "Pose3d.relativeTo": "batch.relativeTo(fr7, fr7b)",
+    "swerve odometry3d replay": "batch.replay(dk.SwerveDriveOdometry3d(sw, dk.Rotation3d(), "
+                                "[dk.SwerveModulePosition()] * 4), gq, pos)",
 }
 SETUP = f"""
 import numpy as np
@@ -55,6 +62,11 @@ pos = np.stack([np.cumsum(rng.normal(size=(N, 4)), 0) * 0.01,
 w4 = rng.normal(size=(N, 4)); w3 = rng.normal(size=(N, 3))
 w4c = np.cumsum(w4, 0) * 0.01; w3c = np.cumsum(w3, 0) * 0.01
 w2c = np.cumsum(rng.normal(size=(N, 2)), 0) * 0.01
+ch2 = rng.normal(size=(N, 3))
+tw6 = rng.normal(size=(N, 6)) * 0.3
+fr7 = batch.exp(tw6); fr7b = batch.exp(rng.normal(size=(N, 6)))
+gq = batch.exp(np.concatenate([np.zeros((N, 3)), np.cumsum(rng.normal(size=(N, 3)), 0) * 0.01],
+                              axis=1))[:, 3:].copy()
 """
 
 

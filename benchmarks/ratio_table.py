@@ -38,6 +38,7 @@ from __future__ import annotations
 import argparse
 import gc
 import json
+import math
 import os
 import re
 import shutil
@@ -50,7 +51,7 @@ from pathlib import Path
 # _common and registry are found next to this script (its folder is sys.path[0]).
 from _common import (INNER, build_drivekin, build_drivekin_geometry, build_robotpy,
                      compile_timer, kinematics_available, machine_description)
-from registry import (CALIBRATION, OPERATIONS, VARIANTS, baseline_of, evaluate,
+from registry import (CALIBRATION, GROUPS, OPERATIONS, VARIANTS, baseline_of, evaluate,
                       reference_value, values_agree, with_baselines)
 
 
@@ -250,6 +251,9 @@ def build_table(ops, get, ranges, note, header, unit="ns"):
             if x is not None:
                 extras.append(f"| {op.title} | {label} | `{case.stmt}` | {fmt(x)} | "
                               f"{x / base:.3f}× |")
+    rows, group_missed = group_rows(ops, get, ranges is not None)
+    lines += rows
+    missed += group_missed
     if extras:
         lines += ["", "Extra variants (ratio to the robotpy column above):", "",
                   f"| operation | variant | statement | {unit}/call | × robotpy |",
@@ -262,6 +266,32 @@ def build_table(ops, get, ranges, note, header, unit="ns"):
               "a target is met when ratio <= target."]
     if ops and any(op.needs_kinematics for op in ops) and not kinematics_available():
         lines += ["", "n/a: drivekin.kinematics is not built."]
+    return lines, missed
+
+
+def group_rows(ops, get, with_ranges):
+    """A row per registry group whose operations all ran: the geometric mean of their
+    ratios to robotpy, per drivekin column, against the group's target. Returns
+    (lines, missed)."""
+    lines, missed = [], []
+    present = {op.key for op in ops}
+    for group in GROUPS:
+        if not set(group.keys) <= present:
+            continue
+        cells, met = [], []
+        for v in VARIANTS[1:]:
+            pairs = [(get(k, v), get(k, "robotpy")) for k in group.keys]
+            if any(x is None or not base for x, base in pairs):
+                cells.append("n/a")
+                continue
+            mean = math.exp(statistics.fmean(math.log(x / base) for x, base in pairs))
+            cells.append(f"{mean:.3f}×")
+            met.append("yes" if mean <= group.target else "**NO**")
+            if mean > group.target:
+                missed.append(f"{group.title} {v}: geometric mean {mean:.3f}× > {group.target}")
+        lines.append(f"| **{group.title}: geometric mean of {len(group.keys)} rows** | — | "
+                     f"{cells[0]} | {cells[1]} | {group.target:.2f} / {group.target:.2f} | "
+                     f"{' / '.join(met) if met else '—'} |" + (" — |" if with_ranges else ""))
     return lines, missed
 
 

@@ -43,6 +43,10 @@ example dead-wheel odometry against ``DifferentialDriveOdometry.update``::
         suite="deadwheel", robotpy=None, facade=Case(...), alloc_free=Case(...),
         baseline="odometry.differential", baseline_targets=(1.3, 1.3)))
 
+A :class:`Group` holds rows to a target together: ``ratio_table.py`` reports the geometric
+mean of their ratios to robotpy. The 3-D rows and their group live in ``registry3d.py``,
+imported at the end of this module.
+
 A :class:`Case` is a one-line statement plus a ``setup(rp, dk) -> dict`` that returns the
 local names the statement uses. ``setup`` is called once per case, so mutable inputs and
 output buffers are never shared between cases. ``value`` is an optional expression,
@@ -96,7 +100,17 @@ class Operation:
         return self.robotpy is None
 
 
+@dataclass(frozen=True)
+class Group:
+    """Rows held to a target together: the geometric mean of their ratios to robotpy (each
+    drivekin column on its own) must not exceed ``target``."""
+    title: str
+    keys: tuple                   # operation keys
+    target: float
+
+
 OPERATIONS: list[Operation] = []
+GROUPS: list[Group] = []
 
 
 def register(op: Operation) -> Operation:
@@ -863,3 +877,7 @@ _estimator_op(
     "est.sampleAt(ts)", lambda g: dict(ts=_EST_VISION_TS),
     "est.sampleAt(ts)", (0.15, 0.15),
     "between two samples, with vision records before it")
+
+
+# The 3-D rows (issue 29) register themselves, with their group.
+import registry3d  # noqa: E402,F401

@@ -48,8 +48,8 @@ from drivekin import (
     SwerveModulePosition, SwerveModuleVelocity, Transform2d, Translation2d, Twist2d,
     TwoDeadWheelOdometry, wpistruct,
 )
-from drivekin import (Pose3d, Rotation3d, SwerveDriveOdometry3d, SwerveDrivePoseEstimator3d,
-                      Translation3d)
+from drivekin import (DifferentialDriveOdometry3d, Pose3d, Rotation3d, SwerveDriveOdometry3d,
+                      SwerveDrivePoseEstimator3d, Translation3d)
 from drivekin._core import catalog
 from drivekin.geometry import _rotation_from_cos_sin as rotation_from_cos_sin
 
@@ -487,6 +487,25 @@ ERRORS += [
         (0.5, 0.5, 0.5)), ValueError),
     ("swerve estimator3d 2-D vision pose", lambda: swerve_est3.addVisionMeasurement(
         pose, 0.0), TypeError),
+]
+
+# --- drivekin.batch's compositions and 3-D forms --------------------------------------
+b3_frames = np.tile([1.0, 2.0, 0.5, 0.9, 0.1, -0.2, 0.3], (8, 1))
+b3_twists = np.tile([0.1, 0.2, 0.0, 0.01, 0.02, 0.3], (8, 1))
+b3_gyro = np.tile([1.0, 0.0, 0.0, 0.0], (8, 1))
+b3_odometry = catalog.BY_CLASS[DifferentialDriveOdometry3d].example()
+OPERATIONS += [
+    ("batch.transformBy 3-D", lambda: _batch.transformBy(b3_frames, b3_frames[0])),
+    ("batch.relativeTo 2-D", lambda: _batch.relativeTo(sp_rows, sp_rows)),
+    ("batch.exp 3-D", lambda: _batch.exp(b3_twists)),
+    ("batch.log 3-D", lambda: _batch.log(b3_frames)),
+    ("batch.replay 3-D", lambda: _batch.replay(b3_odometry, b3_gyro, np.zeros((8, 2))), 10),
+]
+ERRORS += [
+    ("batch.transformBy 3-D lengths", lambda: _batch.transformBy(b3_frames, b3_frames[:7]),
+     ValueError),
+    ("batch.replay 3-D gyro (N,)", lambda: _batch.replay(b3_odometry, np.zeros(8),
+                                                         np.zeros((8, 2))), ValueError),
 ]
 
 # --- every catalogued class, from its entry --------------------------------------------

@@ -34,7 +34,8 @@ cleanup() {
 }
 trap cleanup EXIT
 
-EMULATED_TESTS=(tests/reference tests/allocation tests/properties tests/behaviour/test_batch.py)
+EMULATED_TESTS=(tests/reference tests/allocation tests/properties tests/behaviour/test_batch.py
+                tests/behaviour/test_batch3d.py)
 NATIVE_TESTS=(tests/reference)
 parts=("$@")
 ((${#parts[@]})) || parts=(native emulated)

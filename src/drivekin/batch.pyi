@@ -10,10 +10,20 @@ value                           shape S     columns
 ==============================  ==========  =============================================
 chassis vector / pose           (3,)        ``[vx m/s, vy m/s, omega rad/s]``,
                                             ``[x m, y m, θ rad]``, ``[dx m, dy m, dθ rad]``
+3-D pose / transform            (7,)        ``[x m, y m, z m, qw, qx, qy, qz]``
+3-D twist                       (6,)        ``[dx m, dy m, dz m, rx rad, ry rad, rz rad]``
+3-D gyro reading                (4,)        ``[w, x, y, z]`` (a Rotation3d's quaternion)
 swerve modules (M modules)      (M, 2)      ``[velocity m/s or distance m, angle rad]``
 wheels (mecanum, diff, dead)    (W,)        one value per wheel, the per-call order
 angle / time step               ()          rad / s (a float, or an (N,) stack)
 ==============================  ==========  =============================================
+
+A 3-D row is read as the per-call constructors read it: ``[x, y, z, qw, qx, qy, qz]`` is
+``Pose3d(Translation3d(x, y, z), Rotation3d(Quaternion(qw, qx, qy, qz)))`` (the
+quaternion normalised as that constructor and WPILib's struct unpacking do; a zero one is
+the identity), a gyro row ``Rotation3d(Quaternion(w, x, y, z))``. Results hold the
+getters' values (``getX()``, ..., ``getRotation().getQuaternion()``), so a result read
+back as a row is normalised again, which may move a component by an ulp.
 
 Every array must be a float64, native-endian, C-contiguous numpy array (the rule of the
 per-call buffers; ``np.ascontiguousarray(x, dtype=np.float64)`` makes one). ``out=``, when
@@ -33,7 +43,8 @@ instruction set in use, the best the CPU has, chosen at import: ``"AVX-512"`` or
 ``"AVX2"`` (x86_64 CPUs that have them), ``"SSE2"`` (other x86_64), ``"NEON"``
 (aarch64). The vector and scalar forms perform the same operations in the same order, so
 results are the same bits whichever is in use, on every supported platform
-(docs/DESIGN.md, "One trig").
+(docs/DESIGN.md, "One trig"). The 3-D forms run the per-call kernels sample by sample,
+with the scalar forms (a 3-D replay's module angles excepted).
 """
 import numpy as np
 import numpy.typing as npt
@@ -49,6 +60,13 @@ from drivekin.odometry import (
     SwerveDriveOdometry,
     TwoDeadWheelOdometry,
 )
+from drivekin.odometry3d import (
+    DeadWheelOdometry3d,
+    DifferentialDriveOdometry3d,
+    MecanumDriveOdometry3d,
+    SwerveDriveOdometry3d,
+    TwoDeadWheelOdometry3d,
+)
 from drivekin.swerve import SwerveDriveKinematics
 from drivekin.setpoint import PathConstraints, SwerveSetpoint, SwerveSetpointGenerator
 
@@ -58,7 +76,7 @@ SIMD: str
 """The instruction set the array sin/cos/atan2 run on: ``"AVX-512"``, ``"AVX2"``,
 ``"SSE2"``, ``"NEON"`` or ``"scalar"``. Results are the same bits on each."""
 
-__all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize", "exp", "generateSetpoints", "log", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
+__all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize", "exp", "generateSetpoints", "log", "relativeTo", "replay", "toChassisAccelerations", "toChassisVelocities", "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities", "transformBy"]
 
 
 def toSwerveModuleVelocities(
@@ -207,32 +225,57 @@ def toFieldRelative(
     """:meth:`ChassisVelocities.toFieldRelative` for ``(3,)`` / ``(N, 3)`` robot-relative
     vectors and robot headings ``robotAngles`` (rad; a float or ``(N,)``)."""
 
+def transformBy(
+    poses: _Array,
+    transforms: _Array,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`Pose2d.transformBy` for ``(3,)`` / ``(N, 3)`` poses and transforms
+    ``[x m, y m, θ rad]``, or :meth:`Pose3d.transformBy` for ``(7,)`` / ``(N, 7)`` ones
+    ``[x m, y m, z m, qw, qx, qy, qz]``: each pose moved by its transform. Either argument
+    may be a single value, which goes with every sample of the other."""
+
+def relativeTo(
+    poses: _Array,
+    others: _Array,
+    out: _Array | None = None,
+) -> _Array:
+    """:meth:`Pose2d.relativeTo` for ``(3,)`` / ``(N, 3)`` poses ``[x m, y m, θ rad]``, or
+    :meth:`Pose3d.relativeTo` for ``(7,)`` / ``(N, 7)`` ones: each pose seen from the
+    frame of its ``others`` pose. Either argument may be a single value, which goes with
+    every sample of the other."""
+
 def exp(
     twists: _Array,
     out: _Array | None = None,
 ) -> _Array:
     """:meth:`Twist2d.exp` for ``(3,)`` / ``(N, 3)`` twists ``[dx m, dy m, dθ rad]``: the
-    transforms ``[x m, y m, θ rad]``."""
+    transforms ``[x m, y m, θ rad]``; :meth:`Twist3d.exp` for ``(6,)`` / ``(N, 6)`` twists
+    ``[dx m, dy m, dz m, rx rad, ry rad, rz rad]``: the transforms ``(7,)`` / ``(N, 7)``."""
 
 def log(
     transforms: _Array,
     out: _Array | None = None,
 ) -> _Array:
     """:meth:`Transform2d.log` for ``(3,)`` / ``(N, 3)`` transforms ``[x m, y m, θ rad]``:
-    the twists ``[dx m, dy m, dθ rad]``."""
+    the twists ``[dx m, dy m, dθ rad]``; :meth:`Transform3d.log` for ``(7,)`` / ``(N, 7)``
+    transforms: the twists ``(6,)`` / ``(N, 6)``."""
 
 def replay(
-    odometry: SwerveDriveOdometry | MecanumDriveOdometry | DifferentialDriveOdometry | TwoDeadWheelOdometry | DeadWheelOdometry,
+    odometry: SwerveDriveOdometry | MecanumDriveOdometry | DifferentialDriveOdometry | TwoDeadWheelOdometry | DeadWheelOdometry | SwerveDriveOdometry3d | MecanumDriveOdometry3d | DifferentialDriveOdometry3d | TwoDeadWheelOdometry3d | DeadWheelOdometry3d,
     gyroAngles: _Array | None,
     positions: _Array,
     out: _Array | None = None,
 ) -> _Array:
     """Run ``odometry.update`` for N samples; return the poses after each.
 
-    The poses are ``(N, 3)`` ``[x m, y m, θ rad]``; the odometry is left at the last one.
+    The poses are ``(N, 3)`` ``[x m, y m, θ rad]``, or for a 3-D odometry ``(N, 7)``
+    ``[x m, y m, z m, qw, qx, qy, qz]``; the odometry is left at the last one.
 
-    ``gyroAngles`` is ``(N,)`` (rad; None for a DeadWheelOdometry built without a gyro);
-    ``positions`` is what ``update`` reads, stacked: SwerveDriveOdometry ``(N, M, 2)``
-    ``[distance m, angle rad]``; MecanumDriveOdometry ``(N, 4)``; DifferentialDriveOdometry
-    ``(N, 2)`` ``[left, right]``; TwoDeadWheelOdometry ``(N, 2)`` ``[xWheelPos,
-    yWheelPos]``; DeadWheelOdometry ``(N, W)`` (m throughout)."""
+    ``gyroAngles`` is ``(N,)`` (rad; None for a DeadWheelOdometry built without a gyro),
+    or for a 3-D odometry ``(N, 4)`` quaternions ``[w, x, y, z]`` (each read as
+    ``Rotation3d(Quaternion(w, x, y, z))``); ``positions`` is what ``update`` reads,
+    stacked: Swerve ``(N, M, 2)`` ``[distance m, angle rad]``; Mecanum ``(N, 4)``;
+    Differential ``(N, 2)`` ``[left, right]``; TwoDeadWheel ``(N, 2)`` ``[xWheelPos,
+    yWheelPos]``; DeadWheel ``(N, W)`` (m throughout), for the 2-D and 3-D classes
+    alike."""

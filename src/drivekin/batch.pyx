@@ -10,10 +10,20 @@ value                           shape S     columns
 ==============================  ==========  =============================================
 chassis vector / pose           (3,)        ``[vx m/s, vy m/s, omega rad/s]``,
                                             ``[x m, y m, θ rad]``, ``[dx m, dy m, dθ rad]``
+3-D pose / transform            (7,)        ``[x m, y m, z m, qw, qx, qy, qz]``
+3-D twist                       (6,)        ``[dx m, dy m, dz m, rx rad, ry rad, rz rad]``
+3-D gyro reading                (4,)        ``[w, x, y, z]`` (a Rotation3d's quaternion)
 swerve modules (M modules)      (M, 2)      ``[velocity m/s or distance m, angle rad]``
 wheels (mecanum, diff, dead)    (W,)        one value per wheel, the per-call order
 angle / time step               ()          rad / s (a float, or an (N,) stack)
 ==============================  ==========  =============================================
+
+A 3-D row is read as the per-call constructors read it: ``[x, y, z, qw, qx, qy, qz]`` is
+``Pose3d(Translation3d(x, y, z), Rotation3d(Quaternion(qw, qx, qy, qz)))`` (the
+quaternion normalised as that constructor and WPILib's struct unpacking do; a zero one is
+the identity), a gyro row ``Rotation3d(Quaternion(w, x, y, z))``. Results hold the
+getters' values (``getX()``, ..., ``getRotation().getQuaternion()``), so a result read
+back as a row is normalised again, which may move a component by an ulp.
 
 Every array must be a float64, native-endian, C-contiguous numpy array (the rule of the
 per-call buffers; ``np.ascontiguousarray(x, dtype=np.float64)`` makes one). ``out=``, when
@@ -33,9 +43,10 @@ instruction set in use, the best the CPU has, chosen at import: ``"AVX-512"`` or
 ``"AVX2"`` (x86_64 CPUs that have them), ``"SSE2"`` (other x86_64), ``"NEON"``
 (aarch64). The vector and scalar forms perform the same operations in the same order, so
 results are the same bits whichever is in use, on every supported platform
-(docs/DESIGN.md, "One trig").
+(docs/DESIGN.md, "One trig"). The 3-D forms run the per-call kernels sample by sample,
+with the scalar forms (a 3-D replay's module angles excepted).
 """
-from cpython.mem cimport PyMem_Free, PyMem_Malloc
+from cpython.mem cimport PyMem_Free
 from drivekin._core.dkmath cimport atan2, atan2_n, sincos, sincos_n, trig_isa, trig_use
 from libc.string cimport memcpy, memset
 cimport numpy as cnp
@@ -43,16 +54,21 @@ cimport numpy as cnp
 import numpy as np
 
 from drivekin._core.types cimport desat_t, pose2_t, rot2_t, twist2_t, vec2_t, vec3_t
-from drivekin._core.args cimport check_float64, check_memory
+from drivekin._core.stacks cimport (CHUNK, _Stack, _pair, _per_sample, _result, _rows,
+                                    _scratch, _stack, chunk_len, sample_shape,
+                                    wheel_major)
 from drivekin._core.kernels cimport (chassis_discretize, chassis_discretize_cs,
                                      desaturate_factors, desaturated_discretize_scale,
                                      gyro_turn,
-                                     max_abs, odometry_motion, pose, pose_transform_by,
+                                     max_abs, odometry_motion, pose, pose_relative_to,
+                                     pose_transform_by,
                                      rot_cs, rot_neg, transform_log_angle, twist_exp_cs,
                                      vec, vec_rotate, wheels_desaturate)
 from drivekin.geometry cimport Translation2d
 from drivekin._core.drivetrain cimport Drivetrain
 from drivekin.odometry cimport _Odometry
+from drivekin.odometry3d cimport _Odometry3d
+from drivekin._core.batch3d cimport compose3, exp3, log3, replay3
 from drivekin.swerve cimport SwerveDriveKinematics, check_desaturated_discretize
 from drivekin.chassis cimport check_discretize_fits, discretize_is_large
 from drivekin._core.setpointkernel cimport (SetpointKernel, check_output, check_step,
@@ -113,125 +129,15 @@ def _trig(str fn, a, b=None, bint scalar=False):
     raise ValueError("_trig takes ('sincos', x) or ('atan2', y, x) with arrays of one length")
 
 
-# Samples per pass: the loops below first compute every sample's sines, cosines and
-# angles of a chunk (independent of each other, so a vector at a time), then
-# run the per-sample arithmetic, and write angles out in a last pass. 32 samples keep a
-# swerve replay's scratch well inside L1 (with vectorised trig, measured about 9 % faster
-# than 256 for replay and swerve IK).
-cdef enum:
-    CHUNK = 32
-
 __all__ = ["desaturate", "desaturateWheelVelocities", "desaturatedDiscretize", "discretize",
-           "exp", "generateSetpoints", "log", "replay", "toChassisAccelerations", "toChassisVelocities",
-           "toFieldRelative", "toRobotRelative", "toSwerveModuleAccelerations",
-           "toSwerveModuleVelocities", "toWheelAccelerations", "toWheelVelocities"]
+           "exp", "generateSetpoints", "log", "relativeTo", "replay", "toChassisAccelerations",
+           "toChassisVelocities", "toFieldRelative", "toRobotRelative",
+           "toSwerveModuleAccelerations", "toSwerveModuleVelocities", "toWheelAccelerations",
+           "toWheelVelocities", "transformBy"]
 
 
 # ---------------------------------------------------------------------------------------
-# Argument handling. Each helper returns the validated array (the caller keeps it, so its
-# data stays alive) and the data pointer; nothing is converted or copied.
-
-cdef class _Stack:
-    """One validated float64 argument: ``n`` samples of ``width`` doubles at ``data``."""
-    cdef object array
-    cdef double* data
-    cdef Py_ssize_t n, width
-    cdef bint single
-
-
-cdef str _shape_text(tuple inner):
-    return "(" + ", ".join([str(d) for d in inner]) + ("," if len(inner) == 1 else "") + ")"
-
-
-cdef _Stack _stack(object x, tuple inner, str name, bint single_ok=True):
-    """Validate ``x`` as one value of shape ``inner`` or an (N,) + inner stack."""
-    cdef _Stack s = _Stack.__new__(_Stack)
-    cdef cnp.ndarray a
-    cdef tuple shape
-    cdef Py_ssize_t d
-    if not cnp.PyArray_Check(x):
-        raise TypeError(f"{name} must be a float64 numpy array, got {type_name(x)}")
-    a = <cnp.ndarray>x
-    check_float64(a, name)
-    shape = (<object>a).shape
-    if single_ok and shape == inner:
-        s.single, s.n = True, 1
-    elif len(shape) == len(inner) + 1 and shape[1:] == inner:
-        s.single, s.n = False, shape[0]
-    else:
-        want = _shape_text(("N",) + inner)
-        if single_ok:
-            want = f"{_shape_text(inner)} or {want}"
-        raise ValueError(f"{name} must have shape {want}, got {shape}")
-    check_memory(a, name, True, False, " (np.ascontiguousarray makes a copy that is)")
-    s.width = 1
-    for d in inner:
-        s.width *= d
-    s.array = a
-    s.data = <double*>cnp.PyArray_DATA(a)
-    return s
-
-
-cdef Py_ssize_t _rows(object x, Py_ssize_t cols, str name, str shapes) except -1:
-    """The wheel or module count of a value whose count is free: the last axis (cols = 0)
-    or the one before a last axis of ``cols``."""
-    if not cnp.PyArray_Check(x):
-        raise TypeError(f"{name} must be a float64 numpy array, got {type_name(x)}")
-    cdef tuple shape = (<object>x).shape
-    cdef Py_ssize_t nd = len(shape), base = 2 if cols else 1
-    if nd != base and nd != base + 1:
-        raise ValueError(f"{name} must have shape {shapes}, got {shape}")
-    return shape[nd - 2] if cols else shape[nd - 1]
-
-
-cdef _Stack _per_sample(object x, Py_ssize_t n, bint single, str name):
-    """One number per sample: a float (the same for every sample) or, beside a stack of
-    n values, an (n,) float64 array. Always returned as n values."""
-    cdef _Stack s
-    if cnp.PyArray_Check(x):
-        s = _stack(x, (), name)
-        if s.single or single or s.n != n:
-            raise ValueError(f"{name} must be a float" + ("" if single else
-                             f" or have shape ({n},) to match the other argument") +
-                             f", got an array of shape {x.shape}")
-        return s
-    if not isinstance(x, (float, int)) or isinstance(x, bool):
-        raise TypeError(f"{name} must be a float or a float64 array, got {type_name(x)}")
-    return _stack(np.full(n, float(x)), (), name, False)
-
-
-cdef _Stack _result(object out, Py_ssize_t n, bint single, tuple inner, tuple inputs,
-                    str name):
-    """``out`` validated for the result's shape, or a new array."""
-    cdef tuple shape = inner if single else (n,) + inner
-    cdef _Stack s
-    cdef _Stack i
-    if out is None:
-        out = np.empty(shape)
-    else:
-        if not cnp.PyArray_Check(out):
-            raise TypeError(f"out must be a float64 numpy array, got {type_name(out)}")
-        if out.shape != shape:
-            raise ValueError(f"out must have shape {shape} for this {name}, got {out.shape}")
-        if not cnp.PyArray_ISWRITEABLE(<cnp.ndarray>out):
-            raise ValueError("out must be writeable")
-        for i in inputs:
-            if np.may_share_memory(out, i.array):
-                raise ValueError("out must not overlap an input array")
-    s = _stack(out, inner, "out")
-    return s
-
-
-cdef double* _scratch(Py_ssize_t count) except NULL:
-    cdef double* p = <double*>PyMem_Malloc(sizeof(double) * (count if count > 0 else 1))
-    if p == NULL:
-        raise MemoryError()
-    return p
-
-
-cdef inline Py_ssize_t chunk_len(Py_ssize_t i0, Py_ssize_t count) noexcept nogil:
-    return CHUNK if count - i0 > CHUNK else count - i0
-
+# Chunk helpers
 
 cdef inline void keep_pose(Py_ssize_t i, double* px, double* py, double* pc, double* ps,
                            pose2_t p) noexcept nogil:
@@ -265,12 +171,6 @@ cdef Drivetrain _drivetrain(object k, str call, bint steered_only=False):
     return <Drivetrain>k
 
 
-cdef inline tuple _sample_shape(Py_ssize_t w, bint steered):
-    if steered:
-        return (w, 2)
-    return (w,)
-
-
 # ---------------------------------------------------------------------------------------
 # Inverse kinematics
 
@@ -284,7 +184,7 @@ cdef object _inverse(Drivetrain k, object chassis, object omega, object centerOf
         raise TypeError("centerOfRotation must be a drivekin Translation2d, got "
                         f"{type_name(centerOfRotation)}")
     cdef _Stack w = _per_sample(omega, v.n, v.single, "angularVelocity") if k.steered else None
-    cdef _Stack o = _result(out, v.n, v.single, _sample_shape(k.nwheels, k.steered),
+    cdef _Stack o = _result(out, v.n, v.single, sample_shape(k.nwheels, k.steered),
                             (v, w) if k.steered else (v,), name)
     cdef Py_ssize_t n = k.nwheels, i, i0, ch, j, kk, count = v.n, m = CHUNK * n
     k._center(centerOfRotation)
@@ -366,7 +266,7 @@ cdef object _forward(Drivetrain k, object wheels, object gyro_arg, object out,
     if gyro and not k.gyro_forward:
         raise TypeError(f"{gyro_name} is not taken by a {type(k).__name__}: only dead "
                         "wheels fit the heading change to a gyro")
-    cdef _Stack w = _stack(wheels, _sample_shape(n, k.steered), name)
+    cdef _Stack w = _stack(wheels, sample_shape(n, k.steered), name)
     count = w.n
     if k.gyro_forward:
         k._forward_check(gyro, accel)
@@ -685,9 +585,90 @@ def toFieldRelative(chassisVectors, robotAngles, out=None):
     return _rotate(chassisVectors, robotAngles, out, False)
 
 
+cdef bint _rows3d(object x, Py_ssize_t w2, Py_ssize_t w3, str name) except -1:
+    """Whether ``x`` holds 3-D rows (a last axis of w3) rather than 2-D ones (w2); an array
+    of one or two axes whose last fits neither is refused here, anything else is left to
+    the 2-D form's checks."""
+    if not cnp.PyArray_Check(x):
+        return False
+    cdef tuple shape = x.shape
+    cdef Py_ssize_t nd = len(shape)
+    if nd == 1 or nd == 2:
+        if shape[nd - 1] == w3:
+            return True
+        if shape[nd - 1] != w2:
+            raise ValueError(f"{name} must have shape ({w2},) or (N, {w2}) (2-D), or "
+                             f"({w3},) or (N, {w3}) (3-D), got {shape}")
+    return False
+
+
+cdef object _compose(object a, object b, object out, bint relative, str name_a, str name_b):
+    # Pose2d.transformBy / relativeTo of [x, y, θ] rows, either of them single.
+    cdef _Stack sa, sb
+    sa, sb = _pair(a, b, (3,), name_a, name_b)
+    cdef Py_ssize_t i, i0, ch, kk, count = sb.n if sa.single else sa.n
+    cdef Py_ssize_t da = 0 if sa.single else 3, db = 0 if sb.single else 3
+    cdef _Stack o = _result(out, count, sa.single and sb.single, (3,), (sa, sb), name_a)
+    cdef const double* x
+    cdef const double* y
+    cdef pose2_t p, q
+    cdef double buf[10 * CHUNK]     # each side's θ, sin, cos; then the poses (x, y, cos, sin)
+    cdef double* ta = buf
+    cdef double* tb = buf + CHUNK
+    cdef double* sa_ = buf + 2 * CHUNK
+    cdef double* ca = buf + 3 * CHUNK
+    cdef double* sb_ = buf + 4 * CHUNK
+    cdef double* cb = buf + 5 * CHUNK
+    cdef double* px = buf + 6 * CHUNK
+    cdef double* py = buf + 7 * CHUNK
+    cdef double* pc = buf + 8 * CHUNK
+    cdef double* ps = buf + 9 * CHUNK
+    with nogil:
+        for ch in range((count + CHUNK - 1) // CHUNK):
+            i0 = ch * CHUNK
+            kk = chunk_len(i0, count)
+            for i in range(kk):
+                ta[i] = sa.data[da * (i0 + i) + 2]
+                tb[i] = sb.data[db * (i0 + i) + 2]
+            sincos_n(kk, ta, sa_, ca)
+            sincos_n(kk, tb, sb_, cb)
+            for i in range(kk):
+                x = sa.data + da * (i0 + i)
+                y = sb.data + db * (i0 + i)
+                p = pose(vec(x[0], x[1]), rot_cs(ca[i], sa_[i]))
+                q = pose(vec(y[0], y[1]), rot_cs(cb[i], sb_[i]))
+                keep_pose(i, px, py, pc, ps,
+                          pose_relative_to(p, q) if relative else pose_transform_by(p, q))
+            store_poses(kk, o.data + 3 * i0, px, py, pc, ps, ta)
+    return o.array
+
+
+def transformBy(poses, transforms, out=None):
+    """:meth:`Pose2d.transformBy` for ``(3,)`` / ``(N, 3)`` poses and transforms
+    ``[x m, y m, θ rad]``, or :meth:`Pose3d.transformBy` for ``(7,)`` / ``(N, 7)`` ones
+    ``[x m, y m, z m, qw, qx, qy, qz]``: each pose moved by its transform. Either argument
+    may be a single value, which goes with every sample of the other."""
+    if _rows3d(poses, 3, 7, "poses"):
+        return compose3(poses, transforms, out, False, "poses", "transforms")
+    return _compose(poses, transforms, out, False, "poses", "transforms")
+
+
+def relativeTo(poses, others, out=None):
+    """:meth:`Pose2d.relativeTo` for ``(3,)`` / ``(N, 3)`` poses ``[x m, y m, θ rad]``, or
+    :meth:`Pose3d.relativeTo` for ``(7,)`` / ``(N, 7)`` ones: each pose seen from the
+    frame of its ``others`` pose. Either argument may be a single value, which goes with
+    every sample of the other."""
+    if _rows3d(poses, 3, 7, "poses"):
+        return compose3(poses, others, out, True, "poses", "others")
+    return _compose(poses, others, out, True, "poses", "others")
+
+
 def exp(twists, out=None):
     """:meth:`Twist2d.exp` for ``(3,)`` / ``(N, 3)`` twists ``[dx m, dy m, dθ rad]``: the
-    transforms ``[x m, y m, θ rad]``."""
+    transforms ``[x m, y m, θ rad]``; :meth:`Twist3d.exp` for ``(6,)`` / ``(N, 6)`` twists
+    ``[dx m, dy m, dz m, rx rad, ry rad, rz rad]``: the transforms ``(7,)`` / ``(N, 7)``."""
+    if _rows3d(twists, 3, 6, "twists"):
+        return exp3(twists, out)
     cdef _Stack v = _stack(twists, (3,), "twists")
     cdef _Stack o = _result(out, v.n, v.single, (3,), (v,), "twists")
     cdef Py_ssize_t i, i0, ch, kk, count = v.n
@@ -716,7 +697,10 @@ def exp(twists, out=None):
 
 def log(transforms, out=None):
     """:meth:`Transform2d.log` for ``(3,)`` / ``(N, 3)`` transforms ``[x m, y m, θ rad]``:
-    the twists ``[dx m, dy m, dθ rad]``."""
+    the twists ``[dx m, dy m, dθ rad]``; :meth:`Transform3d.log` for ``(7,)`` / ``(N, 7)``
+    transforms: the twists ``(6,)`` / ``(N, 6)``."""
+    if _rows3d(transforms, 3, 7, "transforms"):
+        return log3(transforms, out)
     cdef _Stack v = _stack(transforms, (3,), "transforms")
     cdef _Stack o = _result(out, v.n, v.single, (3,), (v,), "transforms")
     cdef Py_ssize_t i, i0, ch, kk, count = v.n
@@ -749,21 +733,27 @@ def log(transforms, out=None):
 def replay(odometry, gyroAngles, positions, out=None):
     """Run ``odometry.update`` for N samples; return the poses after each.
 
-    The poses are ``(N, 3)`` ``[x m, y m, θ rad]``; the odometry is left at the last one.
+    The poses are ``(N, 3)`` ``[x m, y m, θ rad]``, or for a 3-D odometry ``(N, 7)``
+    ``[x m, y m, z m, qw, qx, qy, qz]``; the odometry is left at the last one.
 
-    ``gyroAngles`` is ``(N,)`` (rad; None for a DeadWheelOdometry built without a gyro);
-    ``positions`` is what ``update`` reads, stacked: SwerveDriveOdometry ``(N, M, 2)``
-    ``[distance m, angle rad]``; MecanumDriveOdometry ``(N, 4)``; DifferentialDriveOdometry
-    ``(N, 2)`` ``[left, right]``; TwoDeadWheelOdometry ``(N, 2)`` ``[xWheelPos,
-    yWheelPos]``; DeadWheelOdometry ``(N, W)`` (m throughout)."""
+    ``gyroAngles`` is ``(N,)`` (rad; None for a DeadWheelOdometry built without a gyro),
+    or for a 3-D odometry ``(N, 4)`` quaternions ``[w, x, y, z]`` (each read as
+    ``Rotation3d(Quaternion(w, x, y, z))``); ``positions`` is what ``update`` reads,
+    stacked: Swerve ``(N, M, 2)`` ``[distance m, angle rad]``; Mecanum ``(N, 4)``;
+    Differential ``(N, 2)`` ``[left, right]``; TwoDeadWheel ``(N, 2)`` ``[xWheelPos,
+    yWheelPos]``; DeadWheel ``(N, W)`` (m throughout), for the 2-D and 3-D classes
+    alike."""
+    if isinstance(odometry, _Odometry3d):
+        return replay3(<_Odometry3d>odometry, gyroAngles, positions, out)
     if not isinstance(odometry, _Odometry):
         from drivekin._core.catalog import names
-        raise TypeError(f"replay takes a drivekin {names('odometry')} as its first argument, "
+        raise TypeError(f"replay takes a drivekin {names('odometry')}, "
+                        f"{names('odometry3d')} as its first argument, "
                         f"got {type_name(odometry)}")
     cdef _Odometry odo = <_Odometry>odometry
     if not odo.ready:
         raise RuntimeError(f"{type(odo).__name__}.__init__ has not completed")
-    cdef tuple inner = _sample_shape(odo.width, odo.steered)
+    cdef tuple inner = sample_shape(odo.width, odo.steered)
     cdef bint needs_gyro = odo.gyro
     cdef _Stack p = _stack(positions, inner, "positions", False)
     cdef _Stack g
@@ -814,8 +804,7 @@ cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
     # dead wheels without a gyro, the cos/sin of the solved dθ; the pose changes; then,
     # the only sequential pass, the compositions; then the headings. Each sample sees
     # exactly the operations of update (tests/behaviour/test_batch.py compares the bits).
-    cdef Py_ssize_t i, i0, ch, j, kk, count = p.n, n = odo.width
-    cdef const double* x
+    cdef Py_ssize_t i, i0, ch, kk, count = p.n, n = odo.width
     cdef bint gyro = odo.gyro
     cdef double* buf = _scratch(13 * CHUNK + 2 + 4 * CHUNK * n)
     cdef double* gc = buf                   # the gyro's cos and sin (CHUNK + 1 each)
@@ -842,19 +831,11 @@ cdef int _replay(_Odometry odo, _Stack p, _Stack g, _Stack o) except -1:
             my = mx + kk
             if gyro:
                 gyro_turns(kk, g.data + i0, &odo.prev_gyro, gc, gs, tc, ts, dth)
+            wheel_major(kk, n, p.data + p.width * i0, odo.steered, md, ang)
             if odo.steered:
-                x = p.data + 2 * n * i0
-                for j in range(n):
-                    for i in range(kk):
-                        md[kk * j + i] = x[2 * (n * i + j)]
-                        ang[kk * j + i] = x[2 * (n * i + j) + 1]
                 sincos_n(kk * n, ang, ms, mc)
                 odo._motions(kk, md, mc, ms, dth, mx)
             else:
-                x = p.data + n * i0
-                for j in range(n):
-                    for i in range(kk):
-                        md[kk * j + i] = x[n * i + j]
                 odo._motions(kk, md, NULL, NULL, dth, mx)
             if not gyro:
                 sincos_n(kk, dth, ts, tc)

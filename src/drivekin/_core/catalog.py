@@ -783,10 +783,10 @@ def entries(kind: str | None = None, *, drivetrain: str | None = None) -> tuple[
 def names(what: str) -> str:
     """The class names a call accepts, for its TypeError: ``"drivetrain"`` (kinematics
     classes implementing the drivetrain contract), ``"steered"`` (those whose wheels are
-    swerve modules) or ``"odometry"``."""
+    swerve modules), ``"odometry"`` or ``"odometry3d"``."""
     from drivekin._core.drivetrain import Drivetrain
-    if what == "odometry":
-        classes = [e.cls for e in entries("odometry")]
+    if what in ("odometry", "odometry3d"):
+        classes = [e.cls for e in entries(what)]
     else:
         classes = [e.cls for e in entries("kinematics") if issubclass(e.cls, Drivetrain)]
         if what == "steered":

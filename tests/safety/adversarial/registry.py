@@ -42,6 +42,7 @@ from drivekin import (
     TwoDeadWheelPoseEstimator,
     DifferentialDriveKinematics,
     DifferentialDriveOdometry,
+    DifferentialDriveOdometry3d,
     DifferentialDriveWheelAccelerations as DWA,
     DifferentialDriveWheelPositions as DWP,
     DifferentialDriveWheelVelocities as DWV,
@@ -1152,6 +1153,7 @@ API[SwerveSetpointGenerator] = {
 }
 
 _CHASSIS_STACK = Arr((6, 3), rows_free=True)
+_FRAME_STACK = Arr((6, 7), rows_free=True)          # 3-D poses [x, y, z, qw, qx, qy, qz]
 BATCH = {  # drivekin.batch: stacks of 6 samples
     "toSwerveModuleVelocities": S(Obj(SwerveDriveKinematics), _CHASSIS_STACK),
     "toWheelVelocities": [S(Obj(MecanumDriveKinematics), _CHASSIS_STACK),
@@ -1170,8 +1172,13 @@ BATCH = {  # drivekin.batch: stacks of 6 samples
     "desaturatedDiscretize": S(Obj(SwerveDriveKinematics), _CHASSIS_STACK, Num(0.02),
                                Num(0.125)),
     "toRobotRelative": S(_CHASSIS_STACK, NUM), "toFieldRelative": S(_CHASSIS_STACK, NUM),
-    "exp": S(_CHASSIS_STACK), "log": S(_CHASSIS_STACK),
-    "replay": S(Obj(DifferentialDriveOdometry), Arr((6,)), Arr((6, 2))),
+    "exp": [S(_CHASSIS_STACK), S(Arr((6, 6), rows_free=True))],
+    "log": [S(_CHASSIS_STACK), S(_FRAME_STACK)],
+    # Two stacks must have one length, so neither's rows are free.
+    **{f: [S(Arr((6, 3)), Arr((6, 3))), S(Arr((6, 7)), Arr((6, 7)))]
+       for f in ("transformBy", "relativeTo")},
+    "replay": [S(Obj(DifferentialDriveOdometry), Arr((6,)), Arr((6, 2))),
+               S(Obj(DifferentialDriveOdometry3d), Arr((6, 4)), Arr((6, 2)))],
     "generateSetpoints": [
         S(Obj(SwerveSetpointGenerator), Obj(SwerveSetpoint), _CHASSIS_STACK, Num(0.02),
           Num(12.0)),
