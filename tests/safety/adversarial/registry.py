@@ -779,6 +779,19 @@ API.update({
                     S(Obj(Transform3d), *_SYSTEM)],
     },
 })
+# robotpy 2027's 3-D names without a Java counterpart: degrees of Rotation3d (read-only),
+# feet of the translations, from_matrix, the twist's assignable units.
+_FRAME3D_FT = {"from_matrix": S(_AFFINE), "x_feet": Prop(), "y_feet": Prop(), "z_feet": Prop()}
+for _cls, _extras in {
+    R3: {f"{a}_degrees": Prop() for a in ("x", "y", "z", "angle")},
+    T3: {"x_feet": Prop(), "y_feet": Prop(), "z_feet": Prop(), "distance_feet": S(Obj(T3)),
+         "norm_feet": S()},
+    Pose3d: _FRAME3D_FT,
+    Transform3d: _FRAME3D_FT,
+    Twist3d: {**{f"{a}_feet": Prop(NUM) for a in ("dx", "dy", "dz")},
+              **{f"{a}_degrees": Prop(NUM) for a in ("rx", "ry", "rz")}},
+}.items():
+    API[_cls].update(_extras)
 # Differential swerve. The limit stays valid (>= 0) in the alternate build: 0.125 -> 0.0625.
 _LIMIT = Num(0.125)
 _PROP = {"proportional": lambda: True}
