@@ -9,7 +9,7 @@ WPILib's tolerances, so the values are deliberately unhashable (q and −q are t
 Rotation3d, and rotations within about 8.9e-5 rad of each other compare equal).
 """
 cimport cython
-from libc.math cimport INFINITY, M_PI, fabs
+from libc.math cimport INFINITY, M_PI, fabs, isfinite
 cimport numpy as cnp
 
 import numpy as np
@@ -232,8 +232,11 @@ cdef class Quaternion:
         return q_dot(self.q, (<Quaternion>other).q)
 
     def inverse(self):
-        """Return the conjugate divided by the squared norm."""
-        return new_quaternion(q_inverse(self.q))
+        """Return the conjugate divided by the squared norm. ValueError for the zero
+        quaternion (WPILib's 0/0 NaNs), or if the result overflows."""
+        if self.q.w == 0.0 and self.q.x == 0.0 and self.q.y == 0.0 and self.q.z == 0.0:
+            raise ValueError("Quaternion.inverse(): the zero quaternion has no inverse")
+        return finite_quaternion(q_inverse(self.q), self.q, "inverse", 1.0)
 
     def norm(self):
         """Return the Euclidean norm sqrt(w² + x² + y² + z²)."""
@@ -245,12 +248,14 @@ cdef class Quaternion:
         return new_quaternion(q_normalize(self.q))
 
     def pow(self, double t):
-        """Return this quaternion raised to the power ``t``: ``(log() · t).exp()``."""
-        return new_quaternion(q_pow(self.q, t))
+        """Return this quaternion raised to the power ``t``: ``(log() · t).exp()``.
+        ValueError if the result overflows (a norm beyond the largest double)."""
+        return finite_quaternion(q_pow(self.q, t), self.q, "pow", t)
 
     def exp(self):
-        """Return the quaternion exponential e^w (cos‖v‖, v sin‖v‖/‖v‖), v = (x, y, z)."""
-        return new_quaternion(q_exp(self.q))
+        """Return the quaternion exponential e^w (cos‖v‖, v sin‖v‖/‖v‖), v = (x, y, z).
+        ValueError if e^w overflows (w > 709.78...)."""
+        return finite_quaternion(q_exp(self.q), self.q, "exp", 1.0)
 
     def log(self):
         """Return the quaternion logarithm (ln‖q‖, v·atan2(‖v‖, w)/‖v‖); a zero
@@ -310,6 +315,26 @@ cdef class Quaternion:
     def __str__(self):
         return (f"Quaternion({jstr(self.q.w)}, {jstr(self.q.x)}, {jstr(self.q.y)}, "
                 f"{jstr(self.q.z)})")
+
+
+cdef inline bint q_finite(quat_t q):
+    return isfinite(q.w) and isfinite(q.x) and isfinite(q.y) and isfinite(q.z)
+
+
+cdef Quaternion finite_quaternion(quat_t r, quat_t q, str what, double t):
+    # Quaternion.exp, pow and inverse of finite input are finite or refused: a result too
+    # large for a double would otherwise come out as inf and NaN (0 · inf).
+    if q_finite(r) or not (q_finite(q) and isfinite(t)):
+        return new_quaternion(r)
+    raise ValueError(f"Quaternion.{what}() overflows: the result's norm is beyond the largest "
+                     f"double (for exp, e^w with w > 709.78); got {new_quaternion(q)!r}"
+                     + (f" and t = {t!r}" if what == "pow" else ""))
+
+
+cdef inline double whole_turns_away(double turns):
+    # Above 1e300 turns (where turns·2π could overflow) every double is a whole number of
+    # turns: no rotation.
+    return turns if fabs(turns) <= 1e300 else 0.0
 
 
 # ---------------------------------------------------------------------------------------
@@ -415,8 +440,9 @@ cdef class Rotation3d:
     @staticmethod
     def fromRotations(double roll, double pitch, double yaw):
         """Return the rotation of extrinsic ``roll``, ``pitch`` and ``yaw`` given in turns."""
-        return new_rotation3d(q_from_euler(roll * 2.0 * M_PI, pitch * 2.0 * M_PI,
-                                           yaw * 2.0 * M_PI))
+        return new_rotation3d(q_from_euler(whole_turns_away(roll) * 2.0 * M_PI,
+                                           whole_turns_away(pitch) * 2.0 * M_PI,
+                                           whole_turns_away(yaw) * 2.0 * M_PI))
 
     @property
     def x(self):
