@@ -21,8 +21,8 @@ from drivekin._core.kernels3d cimport (
     matrix_det, matrix_orthogonality, norm3, pose3, pose3_interpolate, pose3_log, pose3_plus,
     pose3_relative_to, pose3_rotate_by, pose3_times, q_conjugate, q_div, q_dot, q_eq, q_exp,
     q_from_axis_angle, q_from_euler, q_from_matrix, q_from_rvec, q_from_rvec_static,
-    q_from_vectors, q_identity, q_inverse, q_log, q_mul, q_norm, q_normalize, q_pow, q_scale,
-    q_to_rvec, quat, rot3_angle, rot3_apply, rot3_eq, rot3_integrate, rot3_interpolate,
+    q_from_vectors, q_identity, q_inverse, q_log, q_max_abs, q_mul, q_norm, q_normalize, q_pow,
+    q_scale, q_to_rvec, quat, rot3_angle, rot3_apply, rot3_eq, rot3_integrate, rot3_interpolate,
     rot3_inverse, rot3_matrix, rot3_relative_to, rot3_rotate_by, rot3_times, rot3_x, rot3_y,
     rot3_yaw, rot3_z, transform3_inverse, twist3, twist3_exp, v3_add, v3_cross, v3_dot, v3_eq,
     v3_scale, v3_sub, vec3,
@@ -331,6 +331,17 @@ cdef Quaternion finite_quaternion(quat_t r, quat_t q, str what, double t):
                      + (f" and t = {t!r}" if what == "pow" else ""))
 
 
+cdef quat_t rotation_in_range(quat_t r, quat_t q, double a, double b, str what) except *:
+    # Rotation3d.times, div, interpolate and integrate of a finite rotation and finite
+    # numbers are finite or refused: an angle beyond the largest double (a huge scalar or
+    # rate·dt, or div by a tiny or zero one) would come out as NaN.
+    if q_finite(r) or not (q_finite(q) and isfinite(a) and isfinite(b)):
+        return r
+    raise ValueError(f"Rotation3d.{what}: the resulting rotation angle is beyond the "
+                     "largest double (a scalar, t or rate·dt too large, or a division by "
+                     "zero or a tiny number)")
+
+
 cdef inline double whole_turns_away(double turns):
     # Above 1e300 turns (where turns·2π could overflow) every double is a whole number of
     # turns: no rotation.
@@ -531,23 +542,29 @@ cdef class Rotation3d:
     def times(self, double scalar):
         """Return the rotation scaled by ``scalar`` along the shortest path from the
         identity (``Rotation3d.kZero.interpolate(self, scalar)``, 2027)."""
-        return new_rotation3d(rot3_times(self.q, scalar))
+        return new_rotation3d(rotation_in_range(rot3_times(self.q, scalar), self.q, scalar,
+                                                0.0, "times()"))
 
     def div(self, double scalar):
         """Return ``times(1 / scalar)``."""
-        return new_rotation3d(rot3_times(self.q, 1.0 / scalar))
+        return new_rotation3d(rotation_in_range(rot3_times(self.q, 1.0 / scalar), self.q,
+                                                scalar, 0.0, "div()"))
 
     def interpolate(self, end_value: Rotation3d, double t):
         """Return the spherical linear interpolation towards ``end_value``, the short way:
         ``(q1·q0⁻¹)^t·q0``; ``t`` is not clamped (2027)."""
         check_type(end_value, Rotation3d, "end_value")
-        return new_rotation3d(rot3_interpolate(self.q, (<Rotation3d>end_value).q, t))
+        cdef quat_t e = (<Rotation3d>end_value).q
+        return new_rotation3d(rotation_in_range(rot3_interpolate(self.q, e, t), e, t,
+                                                q_max_abs(self.q), "interpolate()"))
 
     def integrate(self, double roll_rate, double pitch_rate, double yaw_rate, double dt):
         """Return this rotation after turning at the body-frame rates ``roll_rate``,
         ``pitch_rate`` and ``yaw_rate`` (rad/s, about the rotated axes) for ``dt`` s:
         ``q·exp(½ (0, roll_rate, pitch_rate, yaw_rate) dt)``."""
-        return new_rotation3d(rot3_integrate(self.q, roll_rate, pitch_rate, yaw_rate, dt))
+        return new_rotation3d(rotation_in_range(
+            rot3_integrate(self.q, roll_rate, pitch_rate, yaw_rate, dt), self.q, dt,
+            roll_rate * 0.0 + pitch_rate * 0.0 + yaw_rate * 0.0, "integrate()"))
 
     def __mul__(self, other):
         if is_number(other):
@@ -953,11 +970,15 @@ cdef class _Frame3d:
     def times(self, double scalar):
         """Return (translation · scalar, rotation.times(scalar)): the rotation is scaled
         along the shortest path from the identity."""
-        return self._new(pose3_times(self.p, scalar))
+        cdef pose3_t r = pose3_times(self.p, scalar)
+        r.q = rotation_in_range(r.q, self.p.q, scalar, 0.0, "times()")
+        return self._new(r)
 
     def div(self, double scalar):
         """Return ``times(1 / scalar)``."""
-        return self._new(pose3_times(self.p, 1.0 / scalar))
+        cdef pose3_t r = pose3_times(self.p, 1.0 / scalar)
+        r.q = rotation_in_range(r.q, self.p.q, scalar, 0.0, "div()")
+        return self._new(r)
 
     def toMatrix(self):
         """Return the 4×4 homogeneous matrix ``[[R, t], [0, 0, 0, 1]]`` (float64 array)."""

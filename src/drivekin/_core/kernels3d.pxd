@@ -265,16 +265,25 @@ cdef inline vec3_t q_to_rvec(quat_t q) noexcept nogil:
         k = 2.0 * atan2(n, q.w) / n
     return vec3(k * q.x, k * q.y, k * q.z)
 
+cdef inline double half_norm(vec3_t r, double theta) noexcept nogil:
+    # θ/2 for θ = ‖r‖; for a finite r whose norm is beyond the largest double (up to √3
+    # times it), ‖r/2‖, which is not.
+    if theta < INFINITY or theta != theta:
+        return theta / 2.0
+    return norm3(r.x * 0.5, r.y * 0.5, r.z * 0.5)
+
 cdef inline quat_t q_from_rvec_static(vec3_t r) noexcept nogil:
     # Quaternion.fromRotationVector (static): (cos θ/2, r·sin(θ/2)/θ), not normalised.
     cdef double theta = norm3(r.x, r.y, r.z)
+    cdef double half = half_norm(r, theta)
     cdef double s, c, k
-    sincos(theta / 2.0, &s, &c)
+    sincos(half, &s, &c)
     if theta < 1e-9:
         k = 1.0 / 2.0 - theta * theta / 48.0
     elif theta > 1e300:
-        # sin(θ/2)/θ would be subnormal (or 0) and lose the bits k·r keeps.
-        return quat(c, r.x / theta * s, r.y / theta * s, r.z / theta * s)
+        # sin(θ/2)/θ would be subnormal (or 0) and lose the bits k·r keeps; (r/2)/(θ/2)
+        # is r/θ exactly, and finite where θ overflows.
+        return quat(c, r.x * 0.5 / half * s, r.y * 0.5 / half * s, r.z * 0.5 / half * s)
     else:
         k = s / theta
     return quat(c, k * r.x, k * r.y, k * r.z)
@@ -293,28 +302,32 @@ cdef inline quat_t q_from_euler(double roll, double pitch, double yaw) noexcept 
                 cr * sp * cy + sr * cp * sy,
                 cr * cp * sy - sr * sp * cy)
 
-cdef inline quat_t q_from_axis_angle(vec3_t axis, double angle) noexcept nogil:
-    # Rotation3d(axis, angle): Java's axis·(1/‖axis‖)·sin(angle/2); a zero axis gives the
-    # identity (silently, as WPILib). An axis whose norm is outside [1e-300, 1e300] is
-    # first scaled by an exact power of two: a subnormal norm's 1/‖axis‖ is inf (0·inf is
-    # NaN) and a huge one's is subnormal (imprecise).
+cdef inline quat_t q_from_axis_half(vec3_t axis, double half) noexcept nogil:
+    # Rotation3d(axis, angle) with half = angle/2: Java's axis·(1/‖axis‖)·sin(angle/2); a
+    # zero axis gives the identity (silently, as WPILib). An axis whose norm is outside
+    # [1e-300, 1e300] is first scaled by an exact power of two: a subnormal norm's
+    # 1/‖axis‖ is inf (0·inf is NaN), a huge one's subnormal (imprecise) or 0.
     cdef double n = norm3(axis.x, axis.y, axis.z)
     cdef double s, c, inv
     cdef quat_t q
     if n == 0.0:
         return q_identity()
-    if not 1e-300 <= n <= 1e300 and n < INFINITY:
+    if not 1e-300 <= n <= 1e300:
         q = q_ldexp(quat(0.0, axis.x, axis.y, axis.z), -q_exponent(
             quat(0.0, axis.x, axis.y, axis.z)))
         axis = vec3(q.x, q.y, q.z)
         n = norm3(axis.x, axis.y, axis.z)
-    sincos(angle / 2.0, &s, &c)
+    sincos(half, &s, &c)
     inv = 1.0 / n
     return quat(c, axis.x * inv * s, axis.y * inv * s, axis.z * inv * s)
 
+cdef inline quat_t q_from_axis_angle(vec3_t axis, double angle) noexcept nogil:
+    return q_from_axis_half(axis, angle / 2.0)
+
 cdef inline quat_t q_from_rvec(vec3_t r) noexcept nogil:
-    # Rotation3d(rvec) = Rotation3d(rvec, ‖rvec‖).
-    return q_from_axis_angle(r, norm3(r.x, r.y, r.z))
+    # Rotation3d(rvec) = Rotation3d(rvec, ‖rvec‖) (the half angle finite where the norm
+    # overflows).
+    return q_from_axis_half(r, half_norm(r, norm3(r.x, r.y, r.z)))
 
 cdef inline quat_t q_from_matrix(const double* R) noexcept nogil:
     # Rotation3d(Matrix3): the trace / largest-diagonal branches (R row-major, already
@@ -589,13 +602,23 @@ cdef inline pose3_t twist3_exp(twist3_t tw) noexcept nogil:
     cdef double theta = norm3(r.x, r.y, r.z)
     cdef double t2, sh, ch, k, b, c, inv
     cdef vec3_t a, c1, c2
-    sincos(0.5 * theta, &sh, &ch)
+    cdef double half = half_norm(r, theta)
+    sincos(half, &sh, &ch)
     if theta < 1e-3:
         t2 = theta * theta
         k = 0.5 - t2 / 48.0 + t2 * t2 / 3840.0             # sin(θ/2)/θ
         b = 0.5 - t2 / 24.0 + t2 * t2 / 720.0              # B
         c = 1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0      # C
         a = r
+    elif theta > 1e300:
+        # θ may overflow (a finite r up to √3 times the largest double): 2/θ = 1/(θ/2)
+        # and n̂ = (r/2)/(θ/2), which do not.
+        inv = 1.0 / half
+        a = vec3(r.x * 0.5 * inv, r.y * 0.5 * inv, r.z * 0.5 * inv)
+        b = sh * sh * inv
+        c = 1.0 - sh * ch * inv
+        r = a
+        k = sh
     else:
         inv = 1.0 / theta                                  # one division for the five
         k = sh * inv
