@@ -581,6 +581,21 @@ cdef class Rotation3d:
             return self.div(other)
         return NotImplemented
 
+    # WPILib 2027 has no Rotation3d + - or unary − (robotpy 2026 had them): the TypeError
+    # says what to use.
+    def __add__(self, other):
+        raise TypeError("Rotation3d has no + (WPILib 2027 removed it: 3-D rotations do not "
+                        "commute): use a.rotateBy(b) for b applied after a about the fixed "
+                        "axes (the quaternion b·a), or compose Pose3d/Transform3d")
+
+    def __sub__(self, other):
+        raise TypeError("Rotation3d has no - (WPILib 2027 removed it): use a.relativeTo(b), "
+                        "the quaternion b⁻¹·a")
+
+    def __neg__(self):
+        raise TypeError("Rotation3d has no unary - (WPILib 2027 removed unaryMinus): use "
+                        "inverse()")
+
     def __eq__(self, other):
         if type(other) is Rotation3d:
             return rot3_eq(self.q, (<Rotation3d>other).q)
@@ -1292,7 +1307,12 @@ cdef class Twist3d:
         """Return the Transform3d reached by following this screw motion from the origin.
 
         Exact to a few ulps at every rotation angle (WPILib's closed form cancels below
-        about 1e-3 rad); the rotation is built from its quaternion directly."""
+        about 1e-3 rad); the rotation is built from its quaternion directly:
+        (cos θ/2, n̂ sin θ/2) for the rotation vector θ·n̂ = (rx, ry, rz), so w >= 0 for
+        θ <= π. WPILib goes through the rotation matrix and its matrix-to-quaternion
+        conversion, which above θ = 2π/3 (a matrix trace <= 0) may give the negated
+        quaternion: the same rotation (``==`` holds), but ``getQuaternion()`` and the
+        struct/protobuf bytes differ in sign."""
         return new_transform3d(twist3_exp(self.t))
 
     def __eq__(self, other):
