@@ -79,7 +79,9 @@ class Quaternion:
         """Return the Euclidean norm sqrt(w² + x² + y² + z²)."""
     def normalize(self) -> Quaternion:
         """Return this quaternion divided by its norm; a zero quaternion gives the
-        identity (1, 0, 0, 0)."""
+        identity (1, 0, 0, 0). WPILib C++'s bits wherever the squared norm is a normal
+        double; outside, the quaternion is first scaled by an exact power of two (so
+        subnormal and huge quaternions come out unit, not off-unit or zero)."""
     def pow(self, t: float) -> Quaternion:
         """Return this quaternion raised to the power ``t``: ``(log() · t).exp()``.
         ValueError if the result overflows (a norm beyond the largest double)."""
@@ -91,7 +93,10 @@ class Quaternion:
         quaternion gives (0, 0, 0, 0) and w/‖q‖ = −1 gives (ln‖q‖, −π, 0, 0)."""
     def toRotationVector(self) -> npt.NDArray[np.float64]:
         """Return the rotation vector (rad) of the rotation this quaternion represents,
-        the short way round (angle at most π), as a float64 array of shape (3,)."""
+        the short way round (angle at most π), as a float64 array of shape (3,). It does
+        not depend on the norm (WPILib's small-angle series, taken for ‖v‖ < 1e-9 alone,
+        does for a non-unit quaternion); the zero quaternion gives (0, 0, 0), the identity,
+        as :meth:`normalize` and ``Rotation3d(q)`` make it."""
     @staticmethod
     def fromRotationVector(rvec: _Vector3) -> Quaternion:
         """Return the quaternion (cos θ/2, rvec·sin(θ/2)/θ) of the rotation vector

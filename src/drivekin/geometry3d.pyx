@@ -244,7 +244,9 @@ cdef class Quaternion:
 
     def normalize(self):
         """Return this quaternion divided by its norm; a zero quaternion gives the
-        identity (1, 0, 0, 0)."""
+        identity (1, 0, 0, 0). WPILib C++'s bits wherever the squared norm is a normal
+        double; outside, the quaternion is first scaled by an exact power of two (so
+        subnormal and huge quaternions come out unit, not off-unit or zero)."""
         return new_quaternion(q_normalize(self.q))
 
     def pow(self, double t):
@@ -264,7 +266,10 @@ cdef class Quaternion:
 
     def toRotationVector(self):
         """Return the rotation vector (rad) of the rotation this quaternion represents,
-        the short way round (angle at most π), as a float64 array of shape (3,)."""
+        the short way round (angle at most π), as a float64 array of shape (3,). It does
+        not depend on the norm (WPILib's small-angle series, taken for ‖v‖ < 1e-9 alone,
+        does for a non-unit quaternion); the zero quaternion gives (0, 0, 0), the identity,
+        as :meth:`normalize` and ``Rotation3d(q)`` make it."""
         cdef vec3_t r = q_to_rvec(self.q)
         return np.array([r.x, r.y, r.z])
 
