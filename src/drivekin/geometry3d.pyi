@@ -18,7 +18,7 @@ Rotation3d, and rotations within about 8.9e-5 rad of each other compare equal)."
 # declares the members they share (typed with Self).
 
 from collections.abc import Iterable, Iterator, Sequence
-from typing import ClassVar, final, overload
+from typing import ClassVar, NoReturn, final, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -73,22 +73,30 @@ class Quaternion:
     def dot(self, other: Quaternion) -> float:
         """Return the sum of the component-wise products."""
     def inverse(self) -> Quaternion:
-        """Return the conjugate divided by the squared norm."""
+        """Return the conjugate divided by the squared norm. ValueError for the zero
+        quaternion (WPILib's 0/0 NaNs), or if the result overflows."""
     def norm(self) -> float:
         """Return the Euclidean norm sqrt(w² + x² + y² + z²)."""
     def normalize(self) -> Quaternion:
         """Return this quaternion divided by its norm; a zero quaternion gives the
-        identity (1, 0, 0, 0)."""
+        identity (1, 0, 0, 0). WPILib C++'s bits wherever the squared norm is a normal
+        double; outside, the quaternion is first scaled by an exact power of two (so
+        subnormal and huge quaternions come out unit, not off-unit or zero)."""
     def pow(self, t: float) -> Quaternion:
-        """Return this quaternion raised to the power ``t``: ``(log() · t).exp()``."""
+        """Return this quaternion raised to the power ``t``: ``(log() · t).exp()``.
+        ValueError if the result overflows (a norm beyond the largest double)."""
     def exp(self) -> Quaternion:
-        """Return the quaternion exponential e^w (cos‖v‖, v sin‖v‖/‖v‖), v = (x, y, z)."""
+        """Return the quaternion exponential e^w (cos‖v‖, v sin‖v‖/‖v‖), v = (x, y, z).
+        ValueError if e^w overflows (w > 709.78...)."""
     def log(self) -> Quaternion:
         """Return the quaternion logarithm (ln‖q‖, v·atan2(‖v‖, w)/‖v‖); a zero
         quaternion gives (0, 0, 0, 0) and w/‖q‖ = −1 gives (ln‖q‖, −π, 0, 0)."""
     def toRotationVector(self) -> npt.NDArray[np.float64]:
         """Return the rotation vector (rad) of the rotation this quaternion represents,
-        the short way round (angle at most π), as a float64 array of shape (3,)."""
+        the short way round (angle at most π), as a float64 array of shape (3,). It does
+        not depend on the norm (WPILib's small-angle series, taken for ‖v‖ < 1e-9 alone,
+        does for a non-unit quaternion); the zero quaternion gives (0, 0, 0), the identity,
+        as :meth:`normalize` and ``Rotation3d(q)`` make it."""
     @staticmethod
     def fromRotationVector(rvec: _Vector3) -> Quaternion:
         """Return the quaternion (cos θ/2, rvec·sin(θ/2)/θ) of the rotation vector
@@ -217,6 +225,11 @@ class Rotation3d:
     def __mul__(self, other: float, /) -> Rotation3d: ...
     def __rmul__(self, other: float, /) -> Rotation3d: ...
     def __truediv__(self, other: float, /) -> Rotation3d: ...
+    # WPILib 2027 has no Rotation3d + - or unary −: each raises TypeError naming
+    # rotateBy / relativeTo / inverse.
+    def __add__(self, other: object, /) -> NoReturn: ...
+    def __sub__(self, other: object, /) -> NoReturn: ...
+    def __neg__(self) -> NoReturn: ...
     def __eq__(self, other: object, /) -> bool: ...
     __hash__: ClassVar[None]  # type: ignore[assignment]
 
@@ -584,7 +597,12 @@ class Twist3d:
         """Return the Transform3d reached by following this screw motion from the origin.
 
         Exact to a few ulps at every rotation angle (WPILib's closed form cancels below
-        about 1e-3 rad); the rotation is built from its quaternion directly."""
+        about 1e-3 rad); the rotation is built from its quaternion directly:
+        (cos θ/2, n̂ sin θ/2) for the rotation vector θ·n̂ = (rx, ry, rz), so w >= 0 for
+        θ <= π. WPILib goes through the rotation matrix and its matrix-to-quaternion
+        conversion, which above θ = 2π/3 (a matrix trace <= 0) may give the negated
+        quaternion: the same rotation (``==`` holds), but ``getQuaternion()`` and the
+        struct/protobuf bytes differ in sign."""
     def __mul__(self, factor: float, /) -> Twist3d: ...
     def __rmul__(self, factor: float, /) -> Twist3d: ...
     @staticmethod

@@ -9,7 +9,7 @@ WPILib's tolerances, so the values are deliberately unhashable (q and −q are t
 Rotation3d, and rotations within about 8.9e-5 rad of each other compare equal).
 """
 cimport cython
-from libc.math cimport INFINITY, M_PI, fabs
+from libc.math cimport INFINITY, M_PI, fabs, isfinite
 cimport numpy as cnp
 
 import numpy as np
@@ -21,8 +21,8 @@ from drivekin._core.kernels3d cimport (
     matrix_det, matrix_orthogonality, norm3, pose3, pose3_interpolate, pose3_log, pose3_plus,
     pose3_relative_to, pose3_rotate_by, pose3_times, q_conjugate, q_div, q_dot, q_eq, q_exp,
     q_from_axis_angle, q_from_euler, q_from_matrix, q_from_rvec, q_from_rvec_static,
-    q_from_vectors, q_identity, q_inverse, q_log, q_mul, q_norm, q_normalize, q_pow, q_scale,
-    q_to_rvec, quat, rot3_angle, rot3_apply, rot3_eq, rot3_integrate, rot3_interpolate,
+    q_from_vectors, q_identity, q_inverse, q_log, q_max_abs, q_mul, q_norm, q_normalize, q_pow,
+    q_scale, q_to_rvec, quat, rot3_angle, rot3_apply, rot3_eq, rot3_integrate, rot3_interpolate,
     rot3_inverse, rot3_matrix, rot3_relative_to, rot3_rotate_by, rot3_times, rot3_x, rot3_y,
     rot3_yaw, rot3_z, transform3_inverse, twist3, twist3_exp, v3_add, v3_cross, v3_dot, v3_eq,
     v3_scale, v3_sub, vec3,
@@ -232,8 +232,11 @@ cdef class Quaternion:
         return q_dot(self.q, (<Quaternion>other).q)
 
     def inverse(self):
-        """Return the conjugate divided by the squared norm."""
-        return new_quaternion(q_inverse(self.q))
+        """Return the conjugate divided by the squared norm. ValueError for the zero
+        quaternion (WPILib's 0/0 NaNs), or if the result overflows."""
+        if self.q.w == 0.0 and self.q.x == 0.0 and self.q.y == 0.0 and self.q.z == 0.0:
+            raise ValueError("Quaternion.inverse(): the zero quaternion has no inverse")
+        return finite_quaternion(q_inverse(self.q), self.q, "inverse", 1.0)
 
     def norm(self):
         """Return the Euclidean norm sqrt(w² + x² + y² + z²)."""
@@ -241,16 +244,20 @@ cdef class Quaternion:
 
     def normalize(self):
         """Return this quaternion divided by its norm; a zero quaternion gives the
-        identity (1, 0, 0, 0)."""
+        identity (1, 0, 0, 0). WPILib C++'s bits wherever the squared norm is a normal
+        double; outside, the quaternion is first scaled by an exact power of two (so
+        subnormal and huge quaternions come out unit, not off-unit or zero)."""
         return new_quaternion(q_normalize(self.q))
 
     def pow(self, double t):
-        """Return this quaternion raised to the power ``t``: ``(log() · t).exp()``."""
-        return new_quaternion(q_pow(self.q, t))
+        """Return this quaternion raised to the power ``t``: ``(log() · t).exp()``.
+        ValueError if the result overflows (a norm beyond the largest double)."""
+        return finite_quaternion(q_pow(self.q, t), self.q, "pow", t)
 
     def exp(self):
-        """Return the quaternion exponential e^w (cos‖v‖, v sin‖v‖/‖v‖), v = (x, y, z)."""
-        return new_quaternion(q_exp(self.q))
+        """Return the quaternion exponential e^w (cos‖v‖, v sin‖v‖/‖v‖), v = (x, y, z).
+        ValueError if e^w overflows (w > 709.78...)."""
+        return finite_quaternion(q_exp(self.q), self.q, "exp", 1.0)
 
     def log(self):
         """Return the quaternion logarithm (ln‖q‖, v·atan2(‖v‖, w)/‖v‖); a zero
@@ -259,7 +266,10 @@ cdef class Quaternion:
 
     def toRotationVector(self):
         """Return the rotation vector (rad) of the rotation this quaternion represents,
-        the short way round (angle at most π), as a float64 array of shape (3,)."""
+        the short way round (angle at most π), as a float64 array of shape (3,). It does
+        not depend on the norm (WPILib's small-angle series, taken for ‖v‖ < 1e-9 alone,
+        does for a non-unit quaternion); the zero quaternion gives (0, 0, 0), the identity,
+        as :meth:`normalize` and ``Rotation3d(q)`` make it."""
         cdef vec3_t r = q_to_rvec(self.q)
         return np.array([r.x, r.y, r.z])
 
@@ -310,6 +320,37 @@ cdef class Quaternion:
     def __str__(self):
         return (f"Quaternion({jstr(self.q.w)}, {jstr(self.q.x)}, {jstr(self.q.y)}, "
                 f"{jstr(self.q.z)})")
+
+
+cdef inline bint q_finite(quat_t q):
+    return isfinite(q.w) and isfinite(q.x) and isfinite(q.y) and isfinite(q.z)
+
+
+cdef Quaternion finite_quaternion(quat_t r, quat_t q, str what, double t):
+    # Quaternion.exp, pow and inverse of finite input are finite or refused: a result too
+    # large for a double would otherwise come out as inf and NaN (0 · inf).
+    if q_finite(r) or not (q_finite(q) and isfinite(t)):
+        return new_quaternion(r)
+    raise ValueError(f"Quaternion.{what}() overflows: the result's norm is beyond the largest "
+                     f"double (for exp, e^w with w > 709.78); got {new_quaternion(q)!r}"
+                     + (f" and t = {t!r}" if what == "pow" else ""))
+
+
+cdef quat_t rotation_in_range(quat_t r, quat_t q, double a, double b, str what) except *:
+    # Rotation3d.times, div, interpolate and integrate of a finite rotation and finite
+    # numbers are finite or refused: an angle beyond the largest double (a huge scalar or
+    # rate·dt, or div by a tiny or zero one) would come out as NaN.
+    if q_finite(r) or not (q_finite(q) and isfinite(a) and isfinite(b)):
+        return r
+    raise ValueError(f"Rotation3d.{what}: the resulting rotation angle is beyond the "
+                     "largest double (a scalar, t or rate·dt too large, or a division by "
+                     "zero or a tiny number)")
+
+
+cdef inline double whole_turns_away(double turns):
+    # Above 1e300 turns (where turns·2π could overflow) every double is a whole number of
+    # turns: no rotation.
+    return turns if fabs(turns) <= 1e300 else 0.0
 
 
 # ---------------------------------------------------------------------------------------
@@ -415,8 +456,9 @@ cdef class Rotation3d:
     @staticmethod
     def fromRotations(double roll, double pitch, double yaw):
         """Return the rotation of extrinsic ``roll``, ``pitch`` and ``yaw`` given in turns."""
-        return new_rotation3d(q_from_euler(roll * 2.0 * M_PI, pitch * 2.0 * M_PI,
-                                           yaw * 2.0 * M_PI))
+        return new_rotation3d(q_from_euler(whole_turns_away(roll) * 2.0 * M_PI,
+                                           whole_turns_away(pitch) * 2.0 * M_PI,
+                                           whole_turns_away(yaw) * 2.0 * M_PI))
 
     @property
     def x(self):
@@ -505,23 +547,29 @@ cdef class Rotation3d:
     def times(self, double scalar):
         """Return the rotation scaled by ``scalar`` along the shortest path from the
         identity (``Rotation3d.kZero.interpolate(self, scalar)``, 2027)."""
-        return new_rotation3d(rot3_times(self.q, scalar))
+        return new_rotation3d(rotation_in_range(rot3_times(self.q, scalar), self.q, scalar,
+                                                0.0, "times()"))
 
     def div(self, double scalar):
         """Return ``times(1 / scalar)``."""
-        return new_rotation3d(rot3_times(self.q, 1.0 / scalar))
+        return new_rotation3d(rotation_in_range(rot3_times(self.q, 1.0 / scalar), self.q,
+                                                scalar, 0.0, "div()"))
 
     def interpolate(self, end_value: Rotation3d, double t):
         """Return the spherical linear interpolation towards ``end_value``, the short way:
         ``(q1·q0⁻¹)^t·q0``; ``t`` is not clamped (2027)."""
         check_type(end_value, Rotation3d, "end_value")
-        return new_rotation3d(rot3_interpolate(self.q, (<Rotation3d>end_value).q, t))
+        cdef quat_t e = (<Rotation3d>end_value).q
+        return new_rotation3d(rotation_in_range(rot3_interpolate(self.q, e, t), e, t,
+                                                q_max_abs(self.q), "interpolate()"))
 
     def integrate(self, double roll_rate, double pitch_rate, double yaw_rate, double dt):
         """Return this rotation after turning at the body-frame rates ``roll_rate``,
         ``pitch_rate`` and ``yaw_rate`` (rad/s, about the rotated axes) for ``dt`` s:
         ``q·exp(½ (0, roll_rate, pitch_rate, yaw_rate) dt)``."""
-        return new_rotation3d(rot3_integrate(self.q, roll_rate, pitch_rate, yaw_rate, dt))
+        return new_rotation3d(rotation_in_range(
+            rot3_integrate(self.q, roll_rate, pitch_rate, yaw_rate, dt), self.q, dt,
+            roll_rate * 0.0 + pitch_rate * 0.0 + yaw_rate * 0.0, "integrate()"))
 
     def __mul__(self, other):
         if is_number(other):
@@ -537,6 +585,21 @@ cdef class Rotation3d:
         if is_number(other):
             return self.div(other)
         return NotImplemented
+
+    # WPILib 2027 has no Rotation3d + - or unary − (robotpy 2026 had them): the TypeError
+    # says what to use.
+    def __add__(self, other):
+        raise TypeError("Rotation3d has no + (WPILib 2027 removed it: 3-D rotations do not "
+                        "commute): use a.rotateBy(b) for b applied after a about the fixed "
+                        "axes (the quaternion b·a), or compose Pose3d/Transform3d")
+
+    def __sub__(self, other):
+        raise TypeError("Rotation3d has no - (WPILib 2027 removed it): use a.relativeTo(b), "
+                        "the quaternion b⁻¹·a")
+
+    def __neg__(self):
+        raise TypeError("Rotation3d has no unary - (WPILib 2027 removed unaryMinus): use "
+                        "inverse()")
 
     def __eq__(self, other):
         if type(other) is Rotation3d:
@@ -927,11 +990,15 @@ cdef class _Frame3d:
     def times(self, double scalar):
         """Return (translation · scalar, rotation.times(scalar)): the rotation is scaled
         along the shortest path from the identity."""
-        return self._new(pose3_times(self.p, scalar))
+        cdef pose3_t r = pose3_times(self.p, scalar)
+        r.q = rotation_in_range(r.q, self.p.q, scalar, 0.0, "times()")
+        return self._new(r)
 
     def div(self, double scalar):
         """Return ``times(1 / scalar)``."""
-        return self._new(pose3_times(self.p, 1.0 / scalar))
+        cdef pose3_t r = pose3_times(self.p, 1.0 / scalar)
+        r.q = rotation_in_range(r.q, self.p.q, scalar, 0.0, "div()")
+        return self._new(r)
 
     def toMatrix(self):
         """Return the 4×4 homogeneous matrix ``[[R, t], [0, 0, 0, 1]]`` (float64 array)."""
@@ -1245,7 +1312,12 @@ cdef class Twist3d:
         """Return the Transform3d reached by following this screw motion from the origin.
 
         Exact to a few ulps at every rotation angle (WPILib's closed form cancels below
-        about 1e-3 rad); the rotation is built from its quaternion directly."""
+        about 1e-3 rad); the rotation is built from its quaternion directly:
+        (cos θ/2, n̂ sin θ/2) for the rotation vector θ·n̂ = (rx, ry, rz), so w >= 0 for
+        θ <= π. WPILib goes through the rotation matrix and its matrix-to-quaternion
+        conversion, which above θ = 2π/3 (a matrix trace <= 0) may give the negated
+        quaternion: the same rotation (``==`` holds), but ``getQuaternion()`` and the
+        struct/protobuf bytes differ in sign."""
         return new_transform3d(twist3_exp(self.t))
 
     def __eq__(self, other):

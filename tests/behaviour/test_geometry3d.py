@@ -12,6 +12,7 @@ from __future__ import annotations
 import copy
 import math
 import pickle
+import re
 import struct
 
 import numpy as np
@@ -485,3 +486,25 @@ def test_finite_input_gives_finite_results():
     assert Translation3d(3e-200, 4e-200, 0.0).getNorm() == pytest.approx(5e-200, rel=1e-15)
     big = Twist3d(1.0, 2.0, 3.0, 1e200, 0.0, 0.0).exp()
     assert all(math.isfinite(v) for v in fields(big))
+
+
+@pytest.mark.parametrize("op, names", [
+    (lambda r: -r, "inverse()"), (lambda r: r + r, "rotateBy"), (lambda r: r - r, "relativeTo"),
+])
+def test_rotation3d_has_no_2026_operators(op, names):
+    # WPILib 2027 removed Rotation3d's unaryMinus, plus and minus (3-D rotations do not
+    # commute); the TypeError names the replacement.
+    with pytest.raises(TypeError, match=re.escape(names)):
+        op(Rotation3d(0.1, 0.2, 0.3))
+
+
+@pytest.mark.parametrize("angle", [2.2, 3.0, 3.14])
+def test_twist3d_exp_quaternion_has_w_nonnegative_where_wpilib_may_negate(angle):
+    # Twist3d.exp builds (cos θ/2, n̂ sin θ/2); WPILib's matrix → quaternion gives the
+    # negation above 2π/3 for this axis: the same rotation, the opposite sign.
+    wg = pytest.importorskip("wpimath.geometry")
+    rvec = [0.0, -angle, 0.0]
+    q = Twist3d(0.0, 0.0, 0.0, *rvec).exp().getRotation().getQuaternion()
+    w = wg.Pose3d().exp(wg.Twist3d(0.0, 0.0, 0.0, *rvec)).rotation().getQuaternion()
+    assert q.w == pytest.approx(math.cos(angle / 2), abs=1e-15) and q.w > 0.0
+    assert (w.W(), w.X(), w.Y(), w.Z()) == pytest.approx((-q.w, -q.x, -q.y, -q.z), abs=1e-15)

@@ -15,7 +15,8 @@
 # quaternions only, are libm's; no rotation goes through them.
 # Twist3d.exp and Transform3d.log are drivekin's cancellation-free forms (see there).
 
-from libc.math cimport INFINITY, M_PI, copysign, exp, fabs, log, sqrt
+from libc.float cimport DBL_MAX, DBL_MIN
+from libc.math cimport INFINITY, M_LN2, M_PI, copysign, exp, fabs, frexp, ldexp, log, sqrt
 from drivekin._core.dkmath cimport atan2, sincos
 from drivekin._core.types cimport pose3_t, quat_t, rot2_t, twist3_t, vec3_t
 
@@ -103,9 +104,43 @@ cdef inline double norm3(double x, double y, double z) noexcept nogil:
 cdef inline double q_dot(quat_t a, quat_t b) noexcept nogil:
     return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z
 
+cdef inline double q_max_abs(quat_t q) noexcept nogil:
+    cdef double m = fabs(q.w)
+    if fabs(q.x) > m:
+        m = fabs(q.x)
+    if fabs(q.y) > m:
+        m = fabs(q.y)
+    if fabs(q.z) > m:
+        m = fabs(q.z)
+    return m
+
+cdef inline int q_exponent(quat_t q) noexcept nogil:
+    # e with q's largest component in [2^(e-1), 2^e) (0 for a zero, infinite or NaN one):
+    # q_ldexp(q, -e) brings it into [0.5, 1), where the squared norm, in [0.25, 4],
+    # neither overflows nor underflows. Scaling by a power of two changes no bit that
+    # matters (ldexp is exact; it can drop only bits far below the largest component's).
+    cdef double m = q_max_abs(q)
+    cdef int e = 0
+    if m == 0.0 or not m < INFINITY:
+        return 0
+    frexp(m, &e)
+    return e
+
+cdef inline quat_t q_ldexp(quat_t q, int e) noexcept nogil:
+    return quat(ldexp(q.w, e), ldexp(q.x, e), ldexp(q.y, e), ldexp(q.z, e))
+
 cdef inline double q_norm(quat_t q) noexcept nogil:
-    # sqrt(((w² + x²) + y²) + z²)
-    return sqrt(q_dot(q, q))
+    # sqrt(((w² + x²) + y²) + z²), WPILib's bits wherever the squared norm is a normal
+    # double; outside (a subnormal or zero sum of nonzero squares, or an overflowing one)
+    # the norm of q scaled by an exact power of two, scaled back: never 0 or inf for a
+    # finite nonzero q whose norm is representable.
+    cdef double s = q_dot(q, q)
+    cdef int e
+    if DBL_MIN <= s <= DBL_MAX:
+        return sqrt(s)
+    e = q_exponent(q)
+    q = q_ldexp(q, -e)
+    return ldexp(sqrt(q_dot(q, q)), e)
 
 cdef inline quat_t q_mul(quat_t a, quat_t b) noexcept nogil:
     # Hamilton product a·b: r = r₁r₂ − v₁·v₂, v = r₁v₂ + r₂v₁ + v₁×v₂.
@@ -129,15 +164,31 @@ cdef inline quat_t q_conjugate(quat_t q) noexcept nogil:
 
 cdef inline quat_t q_inverse(quat_t q) noexcept nogil:
     # conjugate / norm² (norm squared, as WPILib computes it: not the dot product).
-    cdef double n = q_norm(q)
-    return q_div(q_conjugate(q), n * n)
+    cdef double s = q_dot(q, q)
+    cdef double n
+    cdef int e
+    if DBL_MIN <= s <= DBL_MAX:
+        n = sqrt(s)
+        return q_div(q_conjugate(q), n * n)
+    # q⁻¹ = p⁻¹·2^-e for p = q·2^-e, whose norm² is normal.
+    e = q_exponent(q)
+    q = q_ldexp(q, -e)
+    n = sqrt(q_dot(q, q))
+    return q_ldexp(q_div(q_conjugate(q), n * n), -e)
 
 cdef inline quat_t q_normalize(quat_t q) noexcept nogil:
-    # n = sqrt(((w² + x²) + y²) + z²), each component / n; a zero norm gives the identity.
-    cdef double n = q_norm(q)
-    if n == 0.0:
+    # n = sqrt(((w² + x²) + y²) + z²), each component / n (WPILib C++'s bits) wherever the
+    # squared norm is a normal double. Outside, q is first scaled by the exact power of
+    # two that brings its largest component into [0.5, 1): a subnormal squared norm loses
+    # the low bits of the sum (0, 0, 0, 4.2e-160) would become z = 1.0000018) and an
+    # overflowing one gives (0, 0, 0, 0). A zero quaternion gives the identity.
+    cdef double s = q_dot(q, q)
+    if DBL_MIN <= s <= DBL_MAX:
+        return q_div(q, sqrt(s))
+    if q_max_abs(q) == 0.0:
         return q_identity()
-    return q_div(q, n)
+    q = q_ldexp(q, -q_exponent(q))
+    return q_div(q, sqrt(q_dot(q, q)))
 
 cdef inline bint q_eq(quat_t a, quat_t b) noexcept nogil:
     # Quaternion.equals: the same direction and the same norm (q and −q differ).
@@ -145,8 +196,10 @@ cdef inline bint q_eq(quat_t a, quat_t b) noexcept nogil:
     return fabs(q_dot(a, b) - na * nb) < 1e-9 and fabs(na - nb) < 1e-9
 
 cdef inline quat_t q_exp(quat_t q) noexcept nogil:
+    # (The vector norm is norm3's: sqrt of the sum of squares, WPILib's bits, wherever
+    # that sum is representable.)
     cdef double scalar = exp(q.w)
-    cdef double m = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
+    cdef double m = norm3(q.x, q.y, q.z)
     cdef double s, c, k, m2
     sincos(m, &s, &c)
     if m < 1e-9:
@@ -157,31 +210,54 @@ cdef inline quat_t q_exp(quat_t q) noexcept nogil:
     return quat(c * scalar, q.x * k * scalar, q.y * k * scalar, q.z * k * scalar)
 
 cdef inline quat_t q_log(quat_t q) noexcept nogil:
+    # The factor atan2(‖v‖, w)/‖v‖ does not depend on q's norm, so it is computed on q
+    # scaled by an exact power of two where the largest component is outside
+    # [1e-90, 1e90], and its series taken for ‖v‖ < 1e-9·|w| (see q_to_rvec).
     cdef double n = q_norm(q)
-    cdef double scalar, vn, w, k
+    cdef double scalar, vn, w, k, m
+    cdef quat_t p = q
+    cdef int e
     if n == 0.0:
         return quat(0.0, 0.0, 0.0, 0.0)
     scalar = log(n)
-    vn = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
-    w = q.w
-    if fabs(w / n + 1.0) < 1e-9:
+    m = q_max_abs(q)
+    if not 1e-90 <= m <= 1e90:
+        e = q_exponent(q)
+        p = q_ldexp(q, -e)
+        if not n < INFINITY:    # ln‖q‖ = ln‖p‖ + e ln 2 (‖q‖ itself overflows)
+            scalar = log(sqrt(q_dot(p, p))) + e * M_LN2
+    vn = sqrt(p.x * p.x + p.y * p.y + p.z * p.z)
+    w = p.w
+    if fabs(q.w / n + 1.0) < 1e-9:
         return quat(scalar, -M_PI, 0.0, 0.0)
-    if vn < 1e-9 and w != 0.0:
+    if vn < 1e-9 * fabs(w):
         k = 1.0 / w - 1.0 / 3.0 * vn * vn / (w * w * w)
     elif vn == 0.0:
         k = 0.0
     else:
         k = atan2(vn, w) / vn
-    return quat(scalar, k * q.x, k * q.y, k * q.z)
+    return quat(scalar, k * p.x, k * p.y, k * p.z)
 
 cdef inline quat_t q_pow(quat_t q, double t) noexcept nogil:
     return q_exp(q_scale(q_log(q), t))
 
 cdef inline vec3_t q_to_rvec(quat_t q) noexcept nogil:
-    # Quaternion.toRotationVector: the short way round, |θ| <= π.
-    cdef double n = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
-    cdef double k
-    if n < 1e-9:
+    # Quaternion.toRotationVector: the short way round, |θ| <= π. The result does not
+    # depend on q's norm, so a q whose largest component is outside [1e-90, 1e90] is
+    # first scaled by an exact power of two (the series' n²/w³ and the 1/n cannot then
+    # underflow or overflow). WPILib's series is taken for n < 1e-9·|w| (for a unit q,
+    # |w| rounds to 1 there, so that is its n < 1e-9; for another q, n < 1e-9 alone would
+    # take the series where n is not small against w: (1e-12, 1e-12, 0, 0) would give 2
+    # rad, not π/2). A zero quaternion (no rotation; normalize() makes it the identity)
+    # gives (0, 0, 0).
+    cdef double m = q_max_abs(q)
+    cdef double n, k
+    if not 1e-90 <= m <= 1e90:
+        if m == 0.0:
+            return vec3(0.0, 0.0, 0.0)
+        q = q_ldexp(q, -q_exponent(q))
+    n = sqrt(q.x * q.x + q.y * q.y + q.z * q.z)
+    if n < 1e-9 * fabs(q.w):
         k = 2.0 / q.w - 2.0 / 3.0 * n * n / (q.w * q.w * q.w)
     elif q.w < 0.0:
         k = 2.0 * atan2(-n, -q.w) / n
@@ -189,13 +265,25 @@ cdef inline vec3_t q_to_rvec(quat_t q) noexcept nogil:
         k = 2.0 * atan2(n, q.w) / n
     return vec3(k * q.x, k * q.y, k * q.z)
 
+cdef inline double half_norm(vec3_t r, double theta) noexcept nogil:
+    # θ/2 for θ = ‖r‖; for a finite r whose norm is beyond the largest double (up to √3
+    # times it), ‖r/2‖, which is not.
+    if theta < INFINITY or theta != theta:
+        return theta / 2.0
+    return norm3(r.x * 0.5, r.y * 0.5, r.z * 0.5)
+
 cdef inline quat_t q_from_rvec_static(vec3_t r) noexcept nogil:
     # Quaternion.fromRotationVector (static): (cos θ/2, r·sin(θ/2)/θ), not normalised.
     cdef double theta = norm3(r.x, r.y, r.z)
+    cdef double half = half_norm(r, theta)
     cdef double s, c, k
-    sincos(theta / 2.0, &s, &c)
+    sincos(half, &s, &c)
     if theta < 1e-9:
         k = 1.0 / 2.0 - theta * theta / 48.0
+    elif theta > 1e300:
+        # sin(θ/2)/θ would be subnormal (or 0) and lose the bits k·r keeps; (r/2)/(θ/2)
+        # is r/θ exactly, and finite where θ overflows.
+        return quat(c, r.x * 0.5 / half * s, r.y * 0.5 / half * s, r.z * 0.5 / half * s)
     else:
         k = s / theta
     return quat(c, k * r.x, k * r.y, k * r.z)
@@ -214,20 +302,32 @@ cdef inline quat_t q_from_euler(double roll, double pitch, double yaw) noexcept 
                 cr * sp * cy + sr * cp * sy,
                 cr * cp * sy - sr * sp * cy)
 
-cdef inline quat_t q_from_axis_angle(vec3_t axis, double angle) noexcept nogil:
-    # Rotation3d(axis, angle): Java's axis·(1/‖axis‖)·sin(angle/2); a zero axis gives the
-    # identity (silently, as WPILib).
+cdef inline quat_t q_from_axis_half(vec3_t axis, double half) noexcept nogil:
+    # Rotation3d(axis, angle) with half = angle/2: Java's axis·(1/‖axis‖)·sin(angle/2); a
+    # zero axis gives the identity (silently, as WPILib). An axis whose norm is outside
+    # [1e-300, 1e300] is first scaled by an exact power of two: a subnormal norm's
+    # 1/‖axis‖ is inf (0·inf is NaN), a huge one's subnormal (imprecise) or 0.
     cdef double n = norm3(axis.x, axis.y, axis.z)
     cdef double s, c, inv
+    cdef quat_t q
     if n == 0.0:
         return q_identity()
-    sincos(angle / 2.0, &s, &c)
+    if not 1e-300 <= n <= 1e300:
+        q = q_ldexp(quat(0.0, axis.x, axis.y, axis.z), -q_exponent(
+            quat(0.0, axis.x, axis.y, axis.z)))
+        axis = vec3(q.x, q.y, q.z)
+        n = norm3(axis.x, axis.y, axis.z)
+    sincos(half, &s, &c)
     inv = 1.0 / n
     return quat(c, axis.x * inv * s, axis.y * inv * s, axis.z * inv * s)
 
+cdef inline quat_t q_from_axis_angle(vec3_t axis, double angle) noexcept nogil:
+    return q_from_axis_half(axis, angle / 2.0)
+
 cdef inline quat_t q_from_rvec(vec3_t r) noexcept nogil:
-    # Rotation3d(rvec) = Rotation3d(rvec, ‖rvec‖).
-    return q_from_axis_angle(r, norm3(r.x, r.y, r.z))
+    # Rotation3d(rvec) = Rotation3d(rvec, ‖rvec‖) (the half angle finite where the norm
+    # overflows).
+    return q_from_axis_half(r, half_norm(r, norm3(r.x, r.y, r.z)))
 
 cdef inline quat_t q_from_matrix(const double* R) noexcept nogil:
     # Rotation3d(Matrix3): the trace / largest-diagonal branches (R row-major, already
@@ -268,13 +368,27 @@ cdef inline double matrix_det(const double* R) noexcept nogil:
             - R[1] * (R[3] * R[8] - R[5] * R[6])
             + R[2] * (R[3] * R[7] - R[4] * R[6]))
 
+cdef inline vec3_t v3_tame(vec3_t v) noexcept nogil:
+    cdef quat_t q = quat(0.0, v.x, v.y, v.z)
+    cdef double m = q_max_abs(q)
+    if 1e-75 <= m <= 1e75:
+        return v
+    q = q_ldexp(q, -q_exponent(q))
+    return vec3(q.x, q.y, q.z)
+
 cdef inline quat_t q_from_vectors(vec3_t a, vec3_t b) noexcept nogil:
     # Rotation3d(initial, last): the shortest rotation taking a's direction onto b's.
-    cdef double dot = v3_dot(a, b)
-    cdef double np_ = norm3(a.x, a.y, a.z) * norm3(b.x, b.y, b.z)
-    cdef double c = dot / np_
+    # Only the directions matter, so a vector whose largest component is outside
+    # [1e-75, 1e75] is first scaled by an exact power of two (its dot and cross products
+    # would underflow or overflow: a NaN c, then the identity, for a right angle).
+    cdef double dot, np_, c
     cdef double ax, ay, az, n
     cdef vec3_t e, axis
+    a = v3_tame(a)
+    b = v3_tame(b)
+    dot = v3_dot(a, b)
+    np_ = norm3(a.x, a.y, a.z) * norm3(b.x, b.y, b.z)
+    c = dot / np_
     if c > 1.0 - 1e-9:
         return q_identity()
     if c < -1.0 + 1e-9:
@@ -318,7 +432,7 @@ cdef inline quat_t rot3_relative_to(quat_t q, quat_t o) noexcept nogil:
 cdef inline quat_t q_exp_pure(double x, double y, double z) noexcept nogil:
     # Quaternion.exp of (0, x, y, z) without its scalar factor e^0: (cos m, v·sin m/m),
     # m = ‖v‖, the series below 1e-9 as in Quaternion.exp.
-    cdef double m = sqrt(x * x + y * y + z * z)
+    cdef double m = norm3(x, y, z)
     cdef double s, c, k, m2
     sincos(m, &s, &c)
     if m < 1e-9:
@@ -488,13 +602,23 @@ cdef inline pose3_t twist3_exp(twist3_t tw) noexcept nogil:
     cdef double theta = norm3(r.x, r.y, r.z)
     cdef double t2, sh, ch, k, b, c, inv
     cdef vec3_t a, c1, c2
-    sincos(0.5 * theta, &sh, &ch)
+    cdef double half = half_norm(r, theta)
+    sincos(half, &sh, &ch)
     if theta < 1e-3:
         t2 = theta * theta
         k = 0.5 - t2 / 48.0 + t2 * t2 / 3840.0             # sin(θ/2)/θ
         b = 0.5 - t2 / 24.0 + t2 * t2 / 720.0              # B
         c = 1.0 / 6.0 - t2 / 120.0 + t2 * t2 / 5040.0      # C
         a = r
+    elif theta > 1e300:
+        # θ may overflow (a finite r up to √3 times the largest double): 2/θ = 1/(θ/2)
+        # and n̂ = (r/2)/(θ/2), which do not.
+        inv = 1.0 / half
+        a = vec3(r.x * 0.5 * inv, r.y * 0.5 * inv, r.z * 0.5 * inv)
+        b = sh * sh * inv
+        c = 1.0 - sh * ch * inv
+        r = a
+        k = sh
     else:
         inv = 1.0 / theta                                  # one division for the five
         k = sh * inv

@@ -32,7 +32,7 @@ def _public_members(cls):
     # Protocol dunders count when drivekin defines them (on the class or a private base).
     names |= {n for n in reg.DUNDERS
               if any(n in k.__dict__ and k.__dict__[n] is not None for k in cls.__mro__[:-1])}
-    return names
+    return names - set(reg.REFUSED_OPERATORS.get(cls, ()))
 
 
 @pytest.mark.parametrize("entry", ATTACKED, ids=lambda e: e.cls.__name__)
