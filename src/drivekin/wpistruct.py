@@ -13,7 +13,8 @@ DataLog (type string ``struct:<Name>``, arrays ``struct:<Name>[]``):
 * a Rotation3d is packed as its stored quaternion (w, x, y, z) and unpacked with
   ``Rotation3d(Quaternion(w, x, y, z))``, which normalises it exactly as WPILib does
   (WPILib's C++ ``Quaternion::Normalize``: the same bits as robotpy-wpimath's unpack; a
-  zero quaternion gives the identity). A Quaternion is packed and unpacked as it is.
+  zero quaternion gives the identity), except where the squared norm leaves the normal
+  doubles: there it scales by an exact power of two first, so the result is still unit. A Quaternion is packed and unpacked as it is.
 
 Types, sizes and schemas (units: m, m/s, m/s², rad, rad/s, rad/s²)::
 
