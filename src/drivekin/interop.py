@@ -377,8 +377,8 @@ def toWpimath(obj: object) -> Any:
 
     Every float is copied exactly (rotations as their (cos, sin) pair), except that
     robotpy's Rotation3d constructor renormalises the quaternion (each component may move
-    by up to 4 ulps; see the module's docs; the zero quaternion, which is no rotation, is a
-    ValueError); units are the same on both sides (m, m/s, rad, rad/s). A list or tuple gives a list or tuple of converted items. A
+    by up to 4 ulps; see the module's docs); units are the same on both sides (m, m/s,
+    rad, rad/s). A list or tuple gives a list or tuple of converted items. A
     SwerveDriveKinematics becomes ``SwerveDrive{N}Kinematics`` and needs N in (2, 3, 4,
     6) (ValueError otherwise). TypeError for anything else, naming
     its type; ImportError (saying what to install) when robotpy-wpimath is missing."""

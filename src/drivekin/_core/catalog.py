@@ -243,11 +243,6 @@ def _flat_quaternion(q: Quaternion) -> tuple[float, float, float, float]:
 
 def _rotation3d_to(r: Rotation3d, w: Any) -> Any:
     q = _flat_quaternion(r.getQuaternion())
-    # The zero quaternion that Rotation3d(Quaternion) leaves when the norm overflows (as
-    # WPILib's does) is no rotation: robotpy would take it for the identity.
-    if q == (0.0, 0.0, 0.0, 0.0):
-        raise ValueError(f"toWpimath(): this {qualified(r)} stores the quaternion {q!r}, "
-                         "which is no rotation")
     return w.cls("Rotation3d")(w.cls("Quaternion")(*q))
 
 
