@@ -111,6 +111,19 @@ def test_zero_quaternion_is_the_identity_and_has_no_inverse():
         zero.inverse()
 
 
+@pytest.mark.parametrize("i", range(4))
+@pytest.mark.parametrize("other", [0.0, 1.0, 4.2e-160, 1e300])
+def test_a_nan_component_gives_a_nan_rotation_as_wpilib(i, other):
+    # WPILib divides every component by the NaN norm; the scaled paths must not skip the
+    # NaN (a maximum that ignores it once turned (0, 0, 0, NaN) into the identity).
+    q = [other] * 4
+    q[i] = math.nan
+    r = Rotation3d(Quaternion(*q)).getQuaternion()
+    assert all(math.isnan(c) for c in (r.getW(), r.getX(), r.getY(), r.getZ()))
+    assert all(math.isnan(c) for c in Quaternion(*q).toRotationVector())
+    assert all(math.isnan(c) for c in Rotation3d(Quaternion(*q)).toVector())
+
+
 def test_subnormal_rotation_vector_is_the_tiny_rotation():
     # Java: axis·(1/‖axis‖) = 0·inf, a NaN quaternion; C++ and robotpy: the identity.
     q = comps(Rotation3d([0.0, 0.0, 2.2e-313]).getQuaternion())

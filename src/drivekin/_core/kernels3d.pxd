@@ -105,6 +105,8 @@ cdef inline double q_dot(quat_t a, quat_t b) noexcept nogil:
     return a.w * b.w + a.x * b.x + a.y * b.y + a.z * b.z
 
 cdef inline double q_max_abs(quat_t q) noexcept nogil:
+    # NaN if any component is: the scaled paths below then keep the NaN, as WPILib's do
+    # (a bare maximum would skip it, and (0, 0, 0, NaN) would normalise to the identity).
     cdef double m = fabs(q.w)
     if fabs(q.x) > m:
         m = fabs(q.x)
@@ -112,6 +114,8 @@ cdef inline double q_max_abs(quat_t q) noexcept nogil:
         m = fabs(q.y)
     if fabs(q.z) > m:
         m = fabs(q.z)
+    if q.x != q.x or q.y != q.y or q.z != q.z:
+        return q.x + q.y + q.z
     return m
 
 cdef inline int q_exponent(quat_t q) noexcept nogil:
