@@ -231,7 +231,7 @@ def _translation_from(t: Any) -> Translation2d:
 
 def _quaternion_parts(q: Any) -> tuple[float, float, float, float]:
     # robotpy 2027's Quaternion has the properties w, x, y, z; 2026's the methods W() ...
-    w = getattr(q, "w", _MISSING)
+    w: Any = getattr(q, "w", _MISSING)
     if w is _MISSING:
         return (q.W(), q.X(), q.Y(), q.Z())
     return (w, q.x, q.y, q.z)
