@@ -210,8 +210,8 @@ def test_rotation3d_from_quaternion_has_robotpys_bits():
     # Issue 29: Rotation3d(Quaternion) normalises exactly as WPILib C++ does: n =
     # sqrt(((w² + x²) + y²) + z²), each component / n, every operation rounded (Python's
     # floats never fuse). robotpy's wheels hold the same bits where their compiler does not
-    # contract the sum into fused multiply-adds (x86_64); its aarch64 build does, and
-    # differs from WPILib's formula there by up to an ulp per component.
+    # contract the sum into fused multiply-adds (x86_64); its aarch64 build does: its n
+    # then differs by up to about 1.5 ulp, so a component by up to about 2.5 ulp.
     rng = _rng(4)
     fused = 0
     for _ in range(N):
@@ -223,7 +223,7 @@ def test_rotation3d_from_quaternion_has_robotpys_bits():
         theirs = _rp_quat(rg.Rotation3d(rg.Quaternion(*c)))
         if theirs != formula:
             fused += 1
-            assert all(abs(a - b) <= math.ulp(b) for a, b in zip(theirs, formula))
+            assert all(abs(a - b) <= 4 * math.ulp(b) for a, b in zip(theirs, formula))
     if platform.machine() in ("x86_64", "AMD64"):
         assert fused == 0
 
