@@ -88,6 +88,8 @@ class ReplayConfig:
 
     drivetrain: str = "auto"                      # or one of DRIVETRAINS
     positions: str | None = None                  # entry names; None: found by type
+    moduleEntries: list[str] | None = None        # "NAME=DRIVE,ANGLE" per module, or one
+                                                  # "DRIVE,ANGLE" with {module}
     gyro: str | None = None
     pose: str | None = None
     truth: str | None = None                      # a second pose to compare with
@@ -270,7 +272,8 @@ def _odometry_entry(kind: str) -> catalog.Entry:
     return catalog.entries("odometry", drivetrain=kind)[0]
 
 
-def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig) -> tuple[Any, str]:
+def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig,
+              pos: Signal) -> tuple[Any, str]:
     """The kinematics object (or None) and a description of the geometry used."""
     kin: Any
     if kind in ("swerve", "mecanum"):
@@ -285,6 +288,9 @@ def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig) -> tuple[A
             mods = [(hl, hw), (hl, -hw), (-hl, hw), (-hl, -hw)]
             src = (f"--wheelbase {cfg.wheelbase:g} --trackwidth {cfg.trackwidth:g}: FL, FR, "
                    f"{'BL, BR' if kind == 'swerve' else 'RL, RR'}")
+        if mods is None and pos.offsets is not None:
+            mods = list(pos.offsets)
+            src = f"from {pos.offsetsFrom}"
         if mods is None:
             names = [e.name for e in log.entries.values() if e.type == struct and e.records
                      and not e.name.startswith(REPLAY_PREFIX)]
@@ -402,12 +408,18 @@ def replayLog(log: LogData | str | os.PathLike[str],
         entries["pose"] = pose_sig.source
 
     # 4. replay
-    kin, geometry = _geometry(log, kind, width, cfg)
+    kin, geometry = _geometry(log, kind, width, cfg, pos)
     geometry += corrections_text(cfg)
     start = Pose2d()
     if cfg.start == "logged" and logged is not None:
-        x, y, th = _interp_poses(logged[0], logged[1], tw[:1])[0]
-        start = Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th)))
+        tw, P, gyro, start, before = _start_at_logged(tw, P, gyro, logged)
+        if before:
+            notes.append(f"started at the first logged pose ({logged[0][0] / 1e6:.3f} s), "
+                         f"from the wheel sample at or before it; {before} earlier wheel "
+                         f"samples not replayed")
+    if pos.integrated:
+        notes.append("wheel distances integrated from logged velocity states (trapezoidal "
+                     "between records, held across gaps): the error grows with time")
     poses = _run(kind, kin, gyro, P, start)
 
     rates = {"positions": layouts.rate(tw)}
@@ -492,6 +504,23 @@ def _align(tw: np.ndarray, P: np.ndarray, tg: np.ndarray, G: np.ndarray, cfg: Re
     alignment += ("; compared at the reference times: latest replayed pose" if
                   cfg.compare == "hold" else "; compared with the replay interpolated")
     return tw, P, gyro, skipped, max_age, alignment
+
+
+def _start_at_logged(tw: np.ndarray, P: np.ndarray, gyro: np.ndarray,
+                     logged: tuple[np.ndarray, np.ndarray]
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray, Pose2d, int]:
+    """Start where the robot's own odometry was when it logged its first pose: at the
+    latest wheel sample at or before that pose's timestamp, from that pose (a robot
+    already moving then would otherwise start from the right pose at the wrong
+    instant). Without a wheel sample before it, the first sample starts from the logged
+    pose interpolated at its time. Also returns how many samples were dropped."""
+    k = int(np.searchsorted(tw, logged[0][0], side="right")) - 1
+    if k < 0:
+        x, y, th = _interp_poses(logged[0], logged[1], tw[:1])[0]
+        return tw, P, gyro, Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th))), 0
+    x, y, th = logged[1][0]
+    return (tw[k:], P[k:], gyro[k:],
+            Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th))), k)
 
 
 def _run(kind: str, kin: Any, gyro: np.ndarray, P: np.ndarray, start: Pose2d) -> np.ndarray:

@@ -24,7 +24,7 @@ import difflib
 import json
 import math
 from dataclasses import dataclass, field
-from typing import Callable
+from typing import Any, Callable
 
 import numpy as np
 
@@ -62,6 +62,10 @@ def resolve(log: LogData, name: str, option: str) -> EntryInfo:
         return entries[name]
     want = fold(bare(name))
     hits = [e for n, e in entries.items() if fold(bare(n)) == want]
+    if not hits:
+        # a unique tail of whole path components: Field/Robot for NT:/SmartDashboard/Field/Robot
+        tail = "/" + want.lstrip("/")
+        hits = [e for n, e in entries.items() if fold(bare(n)).endswith(tail)]
     if len(hits) == 1:
         return hits[0]
     if len(hits) > 1:
@@ -78,7 +82,9 @@ def resolve(log: LogData, name: str, option: str) -> EntryInfo:
 # --------------------------------------------------------------------------------------
 # Units
 
-DRIVE_UNITS = ("m", "rad", "rot")
+DRIVE_UNITS = ("m", "ft", "rad", "rot")
+# Drive units of a wheel *velocity* (a module state): integrated into distances.
+SPEED_UNITS = ("m/s", "ft/s", "rad/s", "rot/s")
 TURN_UNITS = ("rad", "deg", "rot")
 GYRO_UNITS = ("rad", "deg", "rot")
 _UNIT_WORDS = {
@@ -86,25 +92,63 @@ _UNIT_WORDS = {
     "rad": "rad", "rads": "rad", "radians": "rad",
     "rot": "rot", "rots": "rot", "rotations": "rot", "revs": "rot", "revolutions": "rot",
     "deg": "deg", "degrees": "deg",
+    "ft": "ft", "feet": "ft", "foot": "ft",
+}
+# Speed suffixes and metadata units ("per second" spelled the ways names spell it).
+_SPEED_WORDS = {
+    "m/s": "m", "meterspersecond": "m", "meterspersec": "m", "mps": "m", "meterpersecond": "m",
+    "ft/s": "ft", "feetpersecond": "ft", "feetpersec": "ft", "fps": "ft",
+    "rad/s": "rad", "radpersec": "rad", "radianspersecond": "rad", "radpersecond": "rad",
+    "rot/s": "rot", "rotationspersecond": "rot", "rps": "rot", "rotpersec": "rot",
 }
 _TO_RAD = {"rad": 1.0, "deg": math.pi / 180.0, "rot": 2.0 * math.pi}
+_FOOT = 0.3048
 
 
-def unit_of(suffix: str, metadata: str) -> str | None:
-    """The unit a name's suffix (after the quantity's own word) or the entry's
-    ``{"unit": ...}`` metadata names, or None."""
-    u = _UNIT_WORDS.get(suffix)
-    if u is not None:
-        return u
-    if metadata and len(metadata) < 4096 and metadata.lstrip().startswith("{"):
+def _metadata_unit(metadata: str) -> str | None:
+    """The folded unit an entry's metadata names: ``{"unit": ...}`` JSON, or the bare unit
+    word WPILib's SysId log writes (``Meter``, ``Meter per Second``)."""
+    if not metadata or len(metadata) >= 4096:
+        return None
+    if metadata.lstrip().startswith("{"):
         try:
             meta = json.loads(metadata)
         except ValueError:
             return None
         unit = meta.get("unit") if isinstance(meta, dict) else None
-        if isinstance(unit, str):
-            return _UNIT_WORDS.get(fold(unit))
-    return None
+        return fold(unit) if isinstance(unit, str) else None
+    word = fold(metadata)
+    return word if len(word) < 40 else None
+
+
+def unit_of(suffix: str, metadata: str) -> str | None:
+    """The unit a name's suffix (after the quantity's own word) or the entry's metadata
+    names (singular or plural), or None."""
+    u = _UNIT_WORDS.get(suffix)
+    if u is not None:
+        return u
+    unit = _metadata_unit(metadata)
+    if unit is None:
+        return None
+    return _UNIT_WORDS.get(unit) or _UNIT_WORDS.get(unit + "s")
+
+
+def speed_unit_of(suffix: str, metadata: str) -> str | None:
+    """The distance unit of a speed named by a name's suffix or the metadata (``m`` for
+    ``Meter per Second``), or None. A suffix that names a distance (``...Feet``) is read
+    as that distance per second: the entry is known to be a velocity."""
+    u = _SPEED_WORDS.get(suffix) or _UNIT_WORDS.get(suffix)
+    if u is not None:
+        return u
+    unit = _metadata_unit(metadata)
+    if unit is None:
+        return None
+    return _SPEED_WORDS.get(unit) or _SPEED_WORDS.get(unit.replace("meter", "meters"))
+
+
+def is_speed_metadata(metadata: str) -> bool:
+    unit = _metadata_unit(metadata)
+    return unit is not None and ("persec" in unit or unit in _SPEED_WORDS)
 
 
 def angle_scale(unit: str) -> float:
@@ -128,6 +172,10 @@ class Signal:
     units: str = ""                     # the units assumed, and from where
     why: str = ""                       # why this one was chosen
     highRate: bool = False              # AdvantageKit odometry-thread samples
+    integrated: bool = False            # distances integrated from velocity states
+    # Module offsets (m) the log itself gives with these positions, and where from.
+    offsets: tuple[tuple[float, float], ...] | None = None
+    offsetsFrom: str = ""
 
     @property
     def source(self) -> str:
@@ -160,7 +208,7 @@ class Options:
 def _drive_scale(unit: str | None, where: str, units: Options) -> tuple[float, str]:
     """Metres per logged drive unit, and how that was decided."""
     if units.drive is not None:
-        unit, said = units.drive, "--drive-units"
+        unit, said = units.drive.removesuffix("/s"), "--drive-units"
     elif unit is not None:
         said = "the entry's name or metadata"
     else:
@@ -169,6 +217,8 @@ def _drive_scale(unit: str | None, where: str, units: Options) -> tuple[float, s
                            f"--wheel-radius)")
     if unit == "m":
         return 1.0, f"drive m ({said})"
+    if unit == "ft":
+        return _FOOT, f"drive ft ({said})"
     if units.wheelRadius is None:
         raise DataLogError(f"{where}: drive positions are wheel {unit} ({said}); give "
                            f"--wheel-radius M to turn them into metres")
@@ -193,7 +243,10 @@ def _turn_scale(unit: str | None, where: str, units: Options, is_rotation: bool)
 _CORNERS = {  # folded corner names -> module order FL, FR, BL, BR (RL, RR are BL, BR)
     "fl": 0, "frontleft": 0, "fr": 1, "frontright": 1, "bl": 2, "backleft": 2,
     "rl": 2, "rearleft": 2, "br": 3, "backright": 3, "rr": 3, "rearright": 3,
+    "lf": 0, "leftfront": 0, "rf": 1, "rightfront": 1, "lb": 2, "leftback": 2,
+    "leftrear": 2, "rb": 3, "rightback": 3, "rightrear": 3,
 }
+CORNER_NAMES = ("front-left", "front-right", "back-left", "back-right")
 _MODULE_WORDS = ("swervemodule", "module", "mod")
 
 
@@ -214,18 +267,25 @@ _HIGH_TURN = "odometryturnpositions"
 _HIGH_TIME = "odometrytimestamps"
 _DRIVE_WORDS = ("driveposition", "drivedistance", "distance")
 _TURN_WORDS = ("turnposition", "turnangle", "steerposition", "steerangle", "angle",
-               "azimuth")
+               "azimuth", "steer")
+_VELOCITY_WORDS = ("drivevelocity", "drivespeed", "velocity", "speed")
 
 
-def _split_word(leaf: str, words: tuple[str, ...]) -> str | None:
+def _split_word(leaf: str, words: tuple[str, ...], units: Any = _UNIT_WORDS) -> str | None:
     """The unit suffix after the first of ``words`` that ``leaf`` starts with (``""``
     for none), or None if it starts with none of them or the rest is not a unit."""
     for w in words:
         if leaf.startswith(w):
             rest = leaf[len(w):]
-            if rest == "" or rest in _UNIT_WORDS:
+            if rest == "" or rest in units:
                 return rest
     return None
+
+
+def split_velocity(leaf: str) -> str | None:
+    """A folded leaf naming a drive velocity (``DriveVelocityFeet``,
+    ``DriveVelocityMetersPerSec``): its unit suffix, else None."""
+    return _split_word(leaf, _VELOCITY_WORDS, {**_UNIT_WORDS, **_SPEED_WORDS})
 
 
 @dataclass
@@ -256,6 +316,8 @@ def _module_groups(log: LogData) -> dict[tuple[str, int], dict[int, _Module]]:
                 role, suffix = "drive", _split_word(leaf, _DRIVE_WORDS)
             elif _split_word(leaf, _TURN_WORDS) is not None:
                 role, suffix = "turn", _split_word(leaf, _TURN_WORDS)
+            elif split_velocity(leaf) is not None:
+                role, suffix = "velocity", split_velocity(leaf)
             if role is not None:
                 key = ("/".join(parts[:j]), mi[0])
                 mod = groups.setdefault(key, {}).setdefault(mi[1], _Module())
@@ -693,6 +755,14 @@ def _find_field2d_pose(log: LogData, units: Options) -> list[Signal]:
     return out
 
 
+def _deferred(name: str) -> Callable[[LogData, Options], list[Signal]]:
+    """A finder of _core/modulelayouts, which builds on this module's primitives."""
+    def find(log: LogData, units: Options) -> list[Signal]:
+        from drivekin._core import modulelayouts
+        return getattr(modulelayouts, name)(log, units)  # type: ignore[no-any-return]
+    return find
+
+
 LAYOUTS: tuple[Layout, ...] = (
     Layout("WPILib struct", "positions",
            "robotpy / Java struct entries (DataLogManager NT mirroring, CTRE DriveState "
@@ -710,6 +780,23 @@ LAYOUTS: tuple[Layout, ...] = (
            "per-module doubles (Module0..N or FL/FR/BL/BR)",
            "from the suffix, the metadata or --drive-units / --turn-units",
            _find_module_positions(False)),
+    Layout("YAGSL telemetry", "positions",
+           "YAGSL's SmartDashboard telemetry (DataLogManager's NT mirror): "
+           "swerve/modules/<name>/Raw Drive Encoder, Adjusted Absolute Encoder, module "
+           "offsets from swerve/wheelLocation", "drive m; turn deg; offsets in",
+           _deferred("find_yagsl_positions")),
+    Layout("SysId routine", "positions",
+           "WPILib SysIdRoutineLog: position-<motor> per module corner, paired with the "
+           "robot's module angles", "from the entry's unit metadata (Meter, Rotation)",
+           _deferred("find_sysid_positions")),
+    Layout("module velocity states", "positions",
+           "module speeds without distances: per-module Drive Velocity with Steer/Angle "
+           "entries, struct:SwerveModuleState[] measured states; integrated",
+           "from the suffix (Feet: ft/s), the metadata or --drive-units m/s|ft/s",
+           _deferred("find_state_velocities")),
+    Layout("module velocity states", "positions",
+           "one struct:SwerveModuleState per corner (ActualFrontLeftModuleState, ...); "
+           "integrated", "m/s; rad", _deferred("find_corner_states")),
     Layout("left/right doubles", "positions", "differential drives: LeftPosition, "
            "RightPosition", "m unless the suffix or --drive-units says otherwise",
            _find_side_positions),
@@ -720,6 +807,8 @@ LAYOUTS: tuple[Layout, ...] = (
     Layout("AdvantageKit high-rate odometry", "gyro",
            "AdvantageKit / robotpy-pykit OdometryYawPositions + OdometryYawTimestamps",
            "Rotation2d; timestamps s", _find_high_gyro),
+    Layout("YAGSL telemetry", "gyro", "YAGSL's swerve/imu/raw", "deg",
+           _deferred("find_yagsl_gyro")),
     Layout("Rotation2d", "gyro", "struct:Rotation2d entries (AdvantageKit YawPosition)",
            "rad", _find_struct_gyro),
     Layout("double", "gyro", "double entries named gyro, yaw, heading, ...",

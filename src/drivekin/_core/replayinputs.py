@@ -7,6 +7,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from drivekin._core import loglayouts as layouts
+from drivekin._core import modulelayouts
 from drivekin._core.loglayouts import Signal
 from drivekin.datalog import DataLogError, LogData
 
@@ -59,9 +60,12 @@ def _named_signal(log: LogData, cands: list[Signal], name: str, option: str) -> 
     return (high or hits or [None])[0]
 
 
+# Distances over velocities (integrating adds error), a library's own layout over a
+# guess from names, YAGSL's whole-log encoders over a SysId session's.
 _POSITION_RANK = {"CTRE DriveState": 5, "AdvantageKit high-rate odometry": 4,
-                  "WPILib struct": 3,
-                  "per-module entries": 2, "left/right doubles": 1, "double[] wheels": 0}
+                  "WPILib struct": 3, "YAGSL telemetry": 3,
+                  "per-module entries": 2, "SysId routine": 1.5, "left/right doubles": 1,
+                  "double[] wheels": 0, "module velocity states": -1}
 
 
 def _positions(log: LogData, cfg: ReplayConfig, units: layouts.Options
@@ -73,7 +77,12 @@ def _positions(log: LogData, cfg: ReplayConfig, units: layouts.Options
              if want in ("auto", s.drivetrain)]
     if cfg.odometryRate == "cycle":
         cands = [s for s in cands if not s.highRate] or cands
-    if cfg.positions is not None:
+    if cfg.moduleEntries:
+        if cfg.positions is not None:
+            raise DataLogError("give --positions or --module-entries, not both")
+        chosen = modulelayouts.named_modules(log, cfg.moduleEntries, units)
+        why = chosen.why
+    elif cfg.positions is not None:
         chosen = _named_signal(log, cands, cfg.positions, "--positions")
         if chosen is None:
             chosen = _named_array(log, cfg.positions, want, cfg.ragged)
@@ -82,14 +91,14 @@ def _positions(log: LogData, cfg: ReplayConfig, units: layouts.Options
         if want == "deadwheel":
             raise DataLogError("dead-wheel positions are a double[] entry: name it with "
                                "--positions")
-        if not cands and problems:
-            raise problems[0]
         if not cands:
             found = ", ".join(dict.fromkeys(lay.name for lay in layouts.LAYOUTS
                                             if lay.role == "positions"))
+            lacks = "".join(f"; {p}" for p in problems)
             raise DataLogError(f"no wheel or module positions found (layouts tried: "
-                               f"{found}); name an entry with --positions (--list shows "
-                               f"them)")
+                               f"{found}){lacks}; name an entry with --positions, or map "
+                               f"per-module entries with --module-entries (--list shows "
+                               f"the entries)")
         chosen, why = _choose(cands, "positions", "--positions",
                               lambda s: _POSITION_RANK.get(s.layout, 0))
     cycle = None

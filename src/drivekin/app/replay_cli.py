@@ -55,7 +55,7 @@ def _numbers(option: str, low: float, high: float):
 def add_log_options(p: argparse.ArgumentParser, verb: str) -> None:
     """The options of replay that say what a log holds (entries, units, geometry), shared
     with ``python -m drivekin calibrate``."""
-    from drivekin._core.loglayouts import DRIVE_UNITS, GYRO_UNITS, TURN_UNITS
+    from drivekin._core.loglayouts import DRIVE_UNITS, GYRO_UNITS, SPEED_UNITS, TURN_UNITS
     from drivekin.replay import DRIVETRAINS
 
     p.add_argument("logs", nargs="+", metavar="LOG.wpilog", help=f"DataLog files to {verb}")
@@ -63,15 +63,21 @@ def add_log_options(p: argparse.ArgumentParser, verb: str) -> None:
                    help="drivetrain (default: from the type of the positions entry)")
     p.add_argument("--positions", metavar="NAME",
                    help="entry of wheel or module positions, or the folder of per-module "
-                        "entries (e.g. /Drive); a double[] entry for dead wheels or [left, "
-                        "right]")
+                        "entries that drivekin recognises (e.g. /Drive); a double[] entry "
+                        "for dead wheels or [left, right]")
+    p.add_argument("--module-entries", action="append", metavar="NAME=DRIVE,ANGLE",
+                   help="a swerve module's drive (distance or velocity) and angle entries, "
+                        "once per module in module order; or once as DRIVE,ANGLE with "
+                        "{module} where the module's name goes (corner or numbered names: "
+                        "ordered FL, FR, BL, BR)")
     p.add_argument("--gyro", metavar="NAME",
                    help="gyro entry: struct:Rotation2d, or double with --gyro-units")
     p.add_argument("--gyro-units", choices=GYRO_UNITS,
                    help="units of a double gyro entry (default: from its name or metadata)")
-    p.add_argument("--drive-units", choices=DRIVE_UNITS,
-                   help="units of drive positions that the log does not name: metres, or "
-                        "radians or rotations of the wheel (with --wheel-radius)")
+    p.add_argument("--drive-units", choices=DRIVE_UNITS + SPEED_UNITS,
+                   help="units of drive positions that the log does not name: metres, feet, "
+                        "or radians or rotations of the wheel (with --wheel-radius); a "
+                        "speed unit (m/s, ...) says the drive entries are velocities")
     p.add_argument("--turn-units", choices=TURN_UNITS,
                    help="units of module angles logged as plain numbers")
     p.add_argument("--wheel-radius", type=number_option(0.0, 1.0, "m", False), metavar="M",
@@ -114,7 +120,8 @@ def log_config(args: argparse.Namespace, **more):
     """The ReplayConfig of :func:`add_log_options`' options (plus ``more``)."""
     from drivekin import replay
     return replay.ReplayConfig(
-        drivetrain=args.drivetrain, positions=args.positions, gyro=args.gyro,
+        drivetrain=args.drivetrain, positions=args.positions,
+        moduleEntries=args.module_entries, gyro=args.gyro,
         pose=args.pose, truth=args.truth, gyroUnits=args.gyro_units,
         driveUnits=args.drive_units, turnUnits=args.turn_units, wheelRadius=args.wheel_radius,
         modules=args.module, wheelbase=args.wheelbase, odometryRate=args.odometry_rate,
