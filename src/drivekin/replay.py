@@ -61,7 +61,9 @@ from drivekin import batch, datalog
 from drivekin._core import catalog
 from drivekin._core import loglayouts as layouts
 from drivekin._core.loglayouts import REPLAY_PREFIX, Signal
+from drivekin._core.modulelayouts import BATCH_US, batch_ends
 from drivekin._core.plotting import pyplot
+from drivekin._core.replayspec import ReplaySpec
 from drivekin._core.replayinputs import _gyro, _named_pose, _pose, _positions
 from drivekin.datalog import DataLogError, LogData
 from drivekin.deadwheel import DeadWheelKinematics
@@ -72,14 +74,10 @@ __all__ = ["DriftStats", "ReplayConfig", "ReplayResult", "listing", "plotReplay"
 
 #: The drivetrains a log can be replayed for: the catalog's odometry classes that can be
 #: started from a positions stack (in catalog order).
-DRIVETRAINS = tuple(e.drivetrain for e in catalog.entries("odometry") if e.start is not None)
+DRIVETRAINS = tuple(s.name for s in catalog.replay_specs())
 GAP_PERIODS = 3.0       # a wheel-sample interval this many median periods long is a gap
 POSE_ENTRY = "/drivekin/ReplayPose"
 ERROR_ENTRY = "/drivekin/ReplayError"
-
-# Each drivetrain's odometry: the catalog's.
-_ODOMETRY = {e.drivetrain: e.cls.__name__ for e in catalog.entries("odometry")
-             if e.drivetrain in DRIVETRAINS}
 
 
 @dataclass
@@ -264,70 +262,6 @@ def _drift(t_rep: np.ndarray, rep: np.ndarray, t_ref: np.ndarray, ref: np.ndarra
 # ---------------------------------------------------------------------------------------
 # Replay
 
-def _kinematics_entry(kind: str) -> catalog.Entry:
-    return catalog.entries("kinematics", drivetrain=kind)[0]
-
-
-def _odometry_entry(kind: str) -> catalog.Entry:
-    return catalog.entries("odometry", drivetrain=kind)[0]
-
-
-def _geometry(log: LogData, kind: str, width: int, cfg: ReplayConfig,
-              pos: Signal) -> tuple[Any, str]:
-    """The kinematics object (or None) and a description of the geometry used."""
-    kin: Any
-    if kind in ("swerve", "mecanum"):
-        count = width if kind == "swerve" else 4
-        what = ("module" if kind == "swerve" else "wheel")
-        struct = (f"struct:SwerveDriveKinematics__{width}" if kind == "swerve"
-                  else "struct:MecanumDriveKinematics")
-        mods = cfg.modules
-        src = "from the options"
-        if mods is None and cfg.wheelbase is not None and cfg.trackwidth is not None:
-            hl, hw = cfg.wheelbase / 2.0, cfg.trackwidth / 2.0
-            mods = [(hl, hw), (hl, -hw), (-hl, hw), (-hl, -hw)]
-            src = (f"--wheelbase {cfg.wheelbase:g} --trackwidth {cfg.trackwidth:g}: FL, FR, "
-                   f"{'BL, BR' if kind == 'swerve' else 'RL, RR'}")
-        if mods is None and pos.offsets is not None:
-            mods = list(pos.offsets)
-            src = f"from {pos.offsetsFrom}"
-        if mods is None:
-            names = [e.name for e in log.entries.values() if e.type == struct and e.records
-                     and not e.name.startswith(REPLAY_PREFIX)]
-            if len(names) > 1:
-                raise DataLogError(f"several {struct} entries: {', '.join(names)}; give "
-                                   f"the offsets with --module or --trackwidth/--wheelbase")
-            if not names:
-                raise DataLogError(
-                    f"no {what} offsets in the log: give --trackwidth W --wheelbase L for a "
-                    f"rectangle, or --module X,Y for each of the {count} {what}s (in the "
-                    f"log's order{', FL, FR, RL, RR' if kind == 'mecanum' else ''})")
-            v = log.values(names[0])[1][-1]
-            mods = [(float(v[2 * j]), float(v[2 * j + 1])) for j in range(count)]
-            src = f"from {names[0]}"
-        if len(mods) != count:
-            raise DataLogError(f"{len(mods)} {what} offsets given, the log's positions have "
-                               f"{count} {what}s")
-        kin = _kinematics_entry(kind).build(*[c for xy in mods for c in xy])  # type: ignore[misc]
-        text = ", ".join(f"({x:g}, {y:g})" for x, y in mods)
-        return kin, f"{count} {what}s at {text} m ({src})"
-    if kind == "deadwheel":
-        wheels = cfg.deadWheels
-        if not wheels:
-            raise DataLogError("dead wheels need their poses: --dead-wheel X,Y,DEG for "
-                               "each wheel, in the order of the positions array")
-        if len(wheels) != width:
-            raise DataLogError(f"{len(wheels)} dead wheels given, the positions entry has "
-                               f"{width} values per sample")
-        kin = DeadWheelKinematics([Pose2d(x, y, Rotation2d.fromDegrees(d))
-                                   for x, y, d in wheels])
-        text = ", ".join(f"({x:g}, {y:g}, {d:g}°)" for x, y, d in wheels)
-        return kin, f"{width} dead wheels at {text}"
-    if cfg.heading == "wheels":
-        return None, f"trackwidth {cfg.trackwidth:g} m (heading from the wheels)"
-    return None, "no geometry needed (heading from the gyro)"
-
-
 def replayLog(log: LogData | str | os.PathLike[str],
               config: ReplayConfig | None = None) -> ReplayResult:
     """Replay the odometry of one log (a path or a :class:`~drivekin.datalog.LogData`);
@@ -343,21 +277,15 @@ def replayLog(log: LogData | str | os.PathLike[str],
 
     # 1. positions and drivetrain
     pos, cycle, why["positions"] = _positions(log, cfg, opts)
-    kind = pos.drivetrain
-    assert kind is not None
+    assert pos.drivetrain is not None
+    spec = catalog.replay_spec(pos.drivetrain)
     entries["positions"] = pos.source
     tw, P = pos.t, pos.values
     if len(tw) == 0:
         raise DataLogError(f"entry {pos.source!r} has no samples")
-    if kind == "differential" and P.ndim == 2 and P.shape[1] != 2:
-        raise DataLogError(f"differential positions must be [left, right], {pos.source!r} "
-                           f"has {P.shape[1]} values per sample")
-    width = P.shape[1] if P.ndim >= 2 else 1
-    if kind == "swerve" and width < 2:
-        raise DataLogError(f"{pos.source!r} has {width} module(s) per sample; a swerve "
-                           f"drive has at least 2")
-    _check_positions(pos, kind)
-    P = _corrected(P.copy(), kind, cfg)
+    width = spec.width(P, pos.source)
+    _check_positions(pos, spec)
+    P = spec.correct(P.copy(), cfg)
     if cycle is not None:
         notes.append(f"replaying the odometry thread's {layouts.rate(tw):.0f} Hz samples, "
                      f"not the {layouts.rate(cycle.t):.0f} Hz cycle values")
@@ -366,18 +294,25 @@ def replayLog(log: LogData | str | os.PathLike[str],
         notes.append("the log holds high-rate odometry samples; replaying the cycle values "
                      "(--odometry-rate cycle)")
 
-    # 2. gyro
+    # 2. the logged pose (and truth), which the gyro may stand in for
+    logged = truth = None
+    if cfg.truth is not None:
+        tsig = _named_pose(log, cfg.truth, "--truth", opts)
+        truth = (tsig.t, tsig.values)
+        entries["truth"] = tsig.source
+    pose_sig, why["pose"] = _pose(log, cfg, opts,
+                                  {entries["truth"]} if "truth" in entries else set())
+    if pose_sig is not None and len(pose_sig.t):
+        logged = (pose_sig.t, pose_sig.values)
+        entries["pose"] = pose_sig.source
+
+    # 3. gyro
     if cfg.heading == "wheels":
-        if kind != "differential":
-            raise DataLogError("heading from the wheels is supported for differential "
-                               "drives only")
-        if not cfg.trackwidth:
-            raise DataLogError("heading from the wheels needs --trackwidth")
         tg = tw
-        G = (P[:, 1] - P[:, 0]) / cfg.trackwidth
+        G = spec.wheel_heading(P, cfg)
         entries["gyro"] = "(wheels)"
     else:
-        gyro_sig, why["gyro"] = _gyro(log, cfg, opts, pos, _pose(log, cfg, opts, set())[0])
+        gyro_sig, why["gyro"] = _gyro(log, cfg, opts, pos, pose_sig)
         entries["gyro"] = gyro_sig.source
         tg, G = gyro_sig.t, gyro_sig.values
         if len(tg) == 0:
@@ -390,25 +325,22 @@ def replayLog(log: LogData | str | os.PathLike[str],
             tg, G = tg[order], G[order]
         _check_gyro(gyro_sig.source, tg, G, gyro_sig.units)
         G = _unwrap(G) * cfg.gyroScale
+    if pos.batched:
+        # NetworkTables' mirror: one robot cycle's values arrive as one batch of records
+        # a few µs to ms apart, in any order; each is taken at its batch's end
+        snap = batch_ends(np.concatenate([tw, tg] + [r[0] for r in (logged, truth) if r]))
+        tw, tg = snap(tw), snap(tg)
+        logged = (snap(logged[0]), logged[1]) if logged else None
+        truth = (snap(truth[0]), truth[1]) if truth else None
+        notes.append(f"records under {BATCH_US / 1e3:g} ms apart (one NetworkTables "
+                     f"update) are taken as one sample")
 
-    # 3. alignment
+    # alignment
     tw, P, gyro, skipped, max_age, alignment = _align(tw, P, tg, G, cfg, pos.source)
     max_gap = float(np.diff(tw).max()) / 1e6 if len(tw) > 1 else 0.0
 
-    # logged pose and truth
-    logged = truth = None
-    if cfg.truth is not None:
-        tsig = _named_pose(log, cfg.truth, "--truth", opts)
-        truth = (tsig.t, tsig.values)
-        entries["truth"] = tsig.source
-    pose_sig, why["pose"] = _pose(log, cfg, opts,
-                                  {entries["truth"]} if "truth" in entries else set())
-    if pose_sig is not None and len(pose_sig.t):
-        logged = (pose_sig.t, pose_sig.values)
-        entries["pose"] = pose_sig.source
-
     # 4. replay
-    kin, geometry = _geometry(log, kind, width, cfg, pos)
+    kin, geometry = spec.geometry(log, width, cfg, pos)
     geometry += corrections_text(cfg)
     start = Pose2d()
     if cfg.start == "logged" and logged is not None:
@@ -420,12 +352,12 @@ def replayLog(log: LogData | str | os.PathLike[str],
     if pos.integrated:
         notes.append("wheel distances integrated from logged velocity states (trapezoidal "
                      "between records, held across gaps): the error grows with time")
-    poses = _run(kind, kin, gyro, P, start)
+    poses = _run(spec, kin, gyro, P, start)
 
     rates = {"positions": layouts.rate(tw)}
     if entries["gyro"] != "(wheels)":
         rates["gyro"] = layouts.rate(tg)
-    result = ReplayResult(log.source, kind, _ODOMETRY[kind], entries, geometry, tw, poses,
+    result = ReplayResult(log.source, spec.name, spec.odometry, entries, geometry, tw, poses,
                           skipped, max_gap, max_age, rates, alignment, logged, truth,
                           truncated=log.truncated, log=log, why=why, notes=notes,
                           positions=P, gyroAngles=gyro, kinematics=kin, start=start)
@@ -438,30 +370,6 @@ def replayLog(log: LogData | str | os.PathLike[str],
     if cycle is not None and result.vsLogged is not None:
         result.warnings += _rate_check(log, cfg, result)
     return result
-
-
-def _corrected(P: np.ndarray, kind: str, cfg: ReplayConfig) -> np.ndarray:
-    """Apply wheelScale (one number, or one per module, wheel or side) and steerOffsets
-    (rad, swerve) to the positions, in place."""
-    width = P.shape[1] if P.ndim >= 2 else 1
-    scale = np.asarray(cfg.wheelScale, dtype=np.float64)
-    if scale.ndim == 1 and scale.shape[0] != width:
-        raise DataLogError(f"{scale.shape[0]} wheel scales given, the positions have {width} "
-                           f"{'modules' if kind == 'swerve' else 'wheels'} per sample")
-    if not (np.isfinite(scale).all() and (scale > 0).all()):
-        raise DataLogError("wheel scales must be positive and finite")
-    if kind == "swerve":
-        P[:, :, 0] *= scale
-        if cfg.steerOffsets is not None:
-            if len(cfg.steerOffsets) != width:
-                raise DataLogError(f"{len(cfg.steerOffsets)} steer offsets given, the "
-                                   f"positions have {width} modules per sample")
-            P[:, :, 1] += np.asarray(cfg.steerOffsets, dtype=np.float64)
-    else:
-        if cfg.steerOffsets is not None:
-            raise DataLogError("steer offsets apply to swerve modules only")
-        P *= scale
-    return P
 
 
 def corrections_text(cfg: ReplayConfig) -> str:
@@ -523,9 +431,9 @@ def _start_at_logged(tw: np.ndarray, P: np.ndarray, gyro: np.ndarray,
             Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th))), k)
 
 
-def _run(kind: str, kin: Any, gyro: np.ndarray, P: np.ndarray, start: Pose2d) -> np.ndarray:
-    g0 = Rotation2d.fromRadians(float(gyro[0]))
-    odo = _odometry_entry(kind).start(kin, g0, P[0], start)  # type: ignore[misc]
+def _run(spec: ReplaySpec, kin: Any, gyro: np.ndarray, P: np.ndarray, start: Pose2d
+         ) -> np.ndarray:
+    odo = spec.start(kin, Rotation2d.fromRadians(float(gyro[0])), P[0], start)
     return replayPoses(odo, gyro, P)
 
 
@@ -562,15 +470,14 @@ def _steps(t: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return d[near], dt[near]
 
 
-def _check_positions(pos: Signal, kind: str) -> None:
+def _check_positions(pos: Signal, spec: ReplaySpec) -> None:
     """Refuse wheel distances that move impossibly fast: wrong units."""
     P = pos.values
     if not np.isfinite(P).all():
         bad = int(np.argmax(~np.isfinite(P.reshape(len(P), -1)).all(axis=1)))
         raise DataLogError(f"{pos.source!r} holds a NaN or infinite value (sample {bad} at "
                            f"{pos.t[bad] / 1e6:.3f} s)")
-    dist = P[:, :, 0] if kind == "swerve" else P
-    d, dt = _steps(pos.t, dist.reshape(len(dist), -1))
+    d, dt = _steps(pos.t, spec.distances(P))
     if not len(dt):
         return
     speed = np.abs(d).max(axis=1) / dt

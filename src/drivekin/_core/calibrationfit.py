@@ -10,6 +10,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from drivekin import replay
+from drivekin._core import catalog
 from drivekin.geometry import Pose2d
 
 if TYPE_CHECKING:
@@ -167,7 +168,8 @@ class _Model:
         else:
             P *= scale
         g = lg.r.gyroAngles[0] + (lg.r.gyroAngles - lg.r.gyroAngles[0]) * c["gyroScale"]
-        return replay._run(self.kind, lg.r.kinematics, g, P, lg.r.start or Pose2d())
+        return replay._run(catalog.replay_spec(self.kind), lg.r.kinematics, g, P,
+                           lg.r.start or Pose2d())
 
 
 def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],

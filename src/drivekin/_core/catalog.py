@@ -29,6 +29,7 @@ from typing import Any, Optional, Union
 import numpy as np
 
 import drivekin as _dk
+from drivekin._core import replayspec
 from drivekin.chassis import ChassisAccelerations, ChassisVelocities
 from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.differential import (
@@ -148,6 +149,8 @@ class Entry:
     # positions stack as drivekin.batch.replay reads it, and the start pose (log replay)
     start: Callable[[Any, Rotation2d, Any, Pose2d], Any] | None = None
     steered: bool = False          # kinematics: its wheels are steered modules
+    # odometry: what log replay and calibration know of the drivetrain (_core/replayspec)
+    replay: Any = None
     # One typical valid instance (None: the class has no instances); the test registries
     # (adversarial suite, allocation tests, leak check, benchmarks) and tools use it.
     example: Callable[[], Any] | None = None
@@ -597,6 +600,7 @@ ENTRIES: tuple[Entry, ...] = (
                     _swerve_to, _swerve_from),
           example=_swerve),
     Entry(_dk.SwerveDriveOdometry, "odometry", "swerve",
+          replay=replayspec.SWERVE,
           positions="struct:SwerveModulePosition[]",
           start=lambda k, g, row, p: _dk.SwerveDriveOdometry(k, g, np.ascontiguousarray(row),
                                                              p),
@@ -647,6 +651,7 @@ ENTRIES: tuple[Entry, ...] = (
                         for new, old in _MECANUM_GETTERS))),
           example=_mecanum),
     Entry(_dk.MecanumDriveOdometry, "odometry", "mecanum",
+          replay=replayspec.MECANUM,
           positions="struct:MecanumDriveWheelPositions",
           start=lambda k, g, row, p: _dk.MecanumDriveOdometry(
               k, g, MecanumDriveWheelPositions(*row.tolist()), p),
@@ -689,6 +694,7 @@ ENTRIES: tuple[Entry, ...] = (
                         robotpy_attr(k, "trackwidth", "trackWidth"))),
           example=lambda: DifferentialDriveKinematics(0.6)),
     Entry(_dk.DifferentialDriveOdometry, "odometry", "differential",
+          replay=replayspec.DIFFERENTIAL,
           positions="struct:DifferentialDriveWheelPositions",
           start=lambda k, g, row, p: _dk.DifferentialDriveOdometry(g, float(row[0]),
                                                                    float(row[1]), p),
@@ -704,6 +710,7 @@ ENTRIES: tuple[Entry, ...] = (
     Entry(DeadWheelKinematics, "kinematics", "deadwheel", no_peer=_DRIVEKIN_ONLY,
           example=_dead_wheels),
     Entry(_dk.DeadWheelOdometry, "odometry", "deadwheel",
+          replay=replayspec.DEADWHEEL,
           start=lambda k, g, row, p: _dk.DeadWheelOdometry(k, np.ascontiguousarray(row), g, p),
           example=lambda: _dk.DeadWheelOdometry(_dead_wheels(), [0.0, 0.0, 0.0], _R(0.0),
                                                 _start())),
@@ -773,6 +780,16 @@ def entries(kind: str | None = None, *, drivetrain: str | None = None) -> tuple[
     """The entries of one kind (and drivetrain), in catalog order."""
     return tuple(e for e in ENTRIES if (kind is None or e.kind == kind)
                  and (drivetrain is None or e.drivetrain == drivetrain))
+
+
+def replay_specs() -> tuple[replayspec.ReplaySpec, ...]:
+    """The drivetrains a log can be replayed for, in catalog order."""
+    return tuple(e.replay for e in entries("odometry") if e.replay is not None)
+
+
+def replay_spec(drivetrain: str) -> replayspec.ReplaySpec:
+    """The replay spec of a drivetrain named by replay_specs()."""
+    return next(s for s in replay_specs() if s.name == drivetrain)
 
 
 def names(what: str) -> str:

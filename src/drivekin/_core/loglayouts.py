@@ -23,6 +23,7 @@ from __future__ import annotations
 import difflib
 import json
 import math
+import weakref
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -173,6 +174,7 @@ class Signal:
     why: str = ""                       # why this one was chosen
     highRate: bool = False              # AdvantageKit odometry-thread samples
     integrated: bool = False            # distances integrated from velocity states
+    batched: bool = False               # samples are batches of records (NetworkTables)
     # Module offsets (m) the log itself gives with these positions, and where from.
     offsets: tuple[tuple[float, float], ...] | None = None
     offsetsFrom: str = ""
@@ -841,13 +843,26 @@ def candidates(log: LogData, role: str, units: Options,
     recognises its entries but cannot read them as asked (units the log does not give)
     adds its DataLogError to ``problems`` (raised at once when that is None) and the
     other layouts still look."""
-    out: list[Signal] = []
-    for lay in LAYOUTS:
-        if lay.role == role:
-            try:
-                out += lay.find(log, units)
-            except DataLogError as e:
-                if problems is None:
-                    raise
-                problems.append(e)
-    return out
+    key = (role, units.drive, units.turn, units.gyro, units.wheelRadius, units.ragged)
+    cache = _FOUND.setdefault(log, {})
+    if key not in cache:
+        found: list[Signal] = []
+        failed: list[DataLogError] = []
+        for lay in LAYOUTS:
+            if lay.role == role:
+                try:
+                    found += lay.find(log, units)
+                except DataLogError as e:
+                    failed.append(e)
+        cache[key] = (found, failed)
+    found, failed = cache[key]
+    if failed and problems is None:
+        raise failed[0]
+    if problems is not None:
+        problems += failed
+    return list(found)
+
+
+# What the layouts found in each log, per role and options: a replay (and --list, and
+# calibrate's replays of the same LogData) plans from one reading of the log.
+_FOUND: weakref.WeakKeyDictionary[LogData, dict[tuple[object, ...], tuple[list[Signal], list[DataLogError]]]] = weakref.WeakKeyDictionary()

@@ -142,22 +142,34 @@ def module_signal(log: LogData, mods: list[ModuleInput], layout: str, why: str,
     names = tuple(n for m in mods for n in (m.drive.name, m.angle.name))
     integrated = any(m.velocity for m in mods)
     return Signal("positions", t, P, names, layout, "swerve", mods[0].units, why=why,
-                  integrated=integrated, offsets=offsets, offsetsFrom=offsets_from)
+                  integrated=integrated, offsets=offsets, offsetsFrom=offsets_from,
+                  batched=L._cycle_clock(log) is None)
 
 
-#: Records of different entries closer than this are one batch (µs).
-BATCH_US = 1000
+#: Records of different entries closer than this are one batch (µs): a robot cycle's
+#: values as NetworkTables' mirror (or a program writing SysId records, then publishing)
+#: stamps them, well under the shortest robot loop (10 ms).
+BATCH_US = 5000
 
 
 def batches(t: np.ndarray) -> np.ndarray:
-    """The sample times of records that come in batches: NetworkTables' mirror stamps
-    the values of one update a few µs apart. Each batch (records under ``BATCH_US``
-    apart) is one sample, at its last record, when every value of the batch is known."""
+    """The sample times of records that come in batches: each run of records under
+    ``BATCH_US`` apart is one sample, at its last record, when every value of the batch
+    is known."""
     u = np.unique(t)
     if len(u) < 2:
         return u
-    last = np.concatenate([np.diff(u) >= BATCH_US, [True]])
-    return u[last]
+    return u[np.concatenate([np.diff(u) >= BATCH_US, [True]])]
+
+
+def batch_ends(t: np.ndarray):  # type: ignore[no-untyped-def]
+    """A function taking record times to the end of their batch among the times ``t``."""
+    ends = batches(t)
+
+    def snap(x: np.ndarray) -> np.ndarray:
+        k = np.minimum(np.searchsorted(ends, x, side="left"), len(ends) - 1)
+        return ends[k]
+    return snap
 
 
 def corner_order(labels: list[str]) -> list[int] | None:
@@ -485,5 +497,6 @@ def find_corner_states(log: LogData, units: Options) -> list[Signal]:
         out.append(Signal("positions", t, P, tuple(corners[i].name for i in range(4)),
                           "module velocity states", "swerve",
                           "speed m/s, angle rad (SwerveModuleState)", integrated=True,
+                          batched=True,
                           why="integrated from measured module states, one per corner"))
     return out

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from drivekin._core import catalog
 from drivekin._core import loglayouts as layouts
 from drivekin._core import modulelayouts
 from drivekin._core.loglayouts import Signal
@@ -88,9 +89,9 @@ def _positions(log: LogData, cfg: ReplayConfig, units: layouts.Options
             chosen = _named_array(log, cfg.positions, want, cfg.ragged)
         why = "named with --positions"
     else:
-        if want == "deadwheel":
-            raise DataLogError("dead-wheel positions are a double[] entry: name it with "
-                               "--positions")
+        if want != "auto" and not catalog.replay_spec(want).found_by_type:
+            raise DataLogError(f"{want} positions are a double[] entry: name it with "
+                               f"--positions")
         if not cands:
             found = ", ".join(dict.fromkeys(lay.name for lay in layouts.LAYOUTS
                                             if lay.role == "positions"))
@@ -116,11 +117,13 @@ def _named_array(log: LogData, name: str, want: str, ragged: str) -> Signal:
         raise DataLogError(f"--positions {info.name!r} has type {info.type}; expected one "
                            f"of {', '.join(layouts.POSITION_STRUCTS)}, double[], or a folder of "
                            f"per-module entries")
-    kind = "deadwheel" if want == "auto" else want
-    if kind not in ("deadwheel", "differential", "mecanum"):
-        raise DataLogError(f"--positions {info.name!r} is double[]: that is read as dead "
-                           f"wheels, differential [left, right] or mecanum [fl, fr, rl, "
-                           f"rr], not {kind}")
+    arrays = [s for s in catalog.replay_specs() if s.double_array]
+    # a bare double[] is the drivetrain nothing else finds by type, unless one is named
+    kind = (next(s.name for s in arrays if not s.found_by_type) if want == "auto"
+            else want)
+    if not catalog.replay_spec(kind).double_array:
+        raise DataLogError(f"--positions {info.name!r} is double[]: that is read as "
+                           f"{', '.join(s.name for s in arrays)} positions, not {kind}")
     t, v = log.values(info.name, ragged=ragged)
     return Signal("positions", t, v, (info.name,), "double[]", kind, "m")
 
