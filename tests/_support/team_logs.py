@@ -422,6 +422,202 @@ def sysid_swerve(directory, *, stagger_us: int = 18, filename: str = "sysid_swer
                    "swerve", geometry, entries, cyc, np.array(odo.rows), notes)
 
 
+
+# ---------------------------------------------------------------------------------------
+# 3. A team's own per-module names (Team 302's layout)
+
+TEAM_NAMES = ("Left Front", "Right Front", "Left Back", "Right Back")     # FL FR BL BR
+TEAM_MODULES = ((0.3, 0.27), (0.3, -0.27), (-0.3, 0.27), (-0.3, -0.27))
+TEAM_STAGGER_US = 110                    # the real Team 302 log: ~100 µs between entries
+
+
+def team_named_swerve(directory, *, filename: str = "team_named_swerve.wpilog") -> RealLog:
+    """Per-module doubles under a team's own names, mirrored by ntcore:
+    ``NT:/<M> Swerve Encoders/<M> Drive`` (m) and ``<M> Turn`` (degrees in (-180, 180])
+    for M in Left Front, Right Front, Left Back, Right Back, the gyro
+    ``NT:/Chassis/Robot Angle`` (degrees, continuous), and the robot's odometry pose
+    ``/Chassis/Pose`` (struct:Pose2d, written straight into the DataLog as Team 302's
+    C++ robot does); decoys ``/Chassis/StoredHeadingDegrees`` (a heading setpoint) and
+    ``NT:/<M> Swerve Encoders/<M> Drive Speed``. 50 Hz; within a cycle each module's
+    Turn then Drive, the gyro, the pose, ``TEAM_STAGGER_US`` apart.
+
+    Truth: SwerveDrive4Odometry at every cycle from exactly the logged values."""
+    from wpiutil.log import DoubleLogEntry
+
+    path = pathlib.Path(directory) / filename
+    kin = SwerveDrive4Kinematics(*[Translation2d(x, y) for x, y in TEAM_MODULES])
+    motion = _Motion(_KNOTS_HOLONOMIC, _swerve_wheels(TEAM_MODULES))
+    cyc = _cycles(PERIOD_US)
+    idx = motion.at(cyc)
+    ntcore, log, inst, handle = _nt_logging(path)
+    tick = _flushing(log, 40)
+    drive, turn, speed = [], [], []
+    for n in TEAM_NAMES:
+        t = inst.getTable(f"{n} Swerve Encoders")
+        drive.append(t.getDoubleTopic(f"{n} Drive").publish())
+        turn.append(t.getDoubleTopic(f"{n} Turn").publish())
+        speed.append(t.getDoubleTopic(f"{n} Drive Speed").publish())
+    gyro = inst.getTable("Chassis").getDoubleTopic("Robot Angle").publish()
+    e_pose = _StructEntry(log, "/Chassis/Pose", Pose2d, int(cyc[0]))
+    e_stored = DoubleLogEntry(log, "/Chassis/StoredHeadingDegrees", int(cyc[0]))
+    odo = _Odometry(kin)
+    try:
+        for k, i in enumerate(idx):
+            stamp = _Stamps(int(cyc[k]), TEAM_STAGGER_US)
+            mods = []
+            for j in range(4):
+                dist, spd, ang = (float(a[i]) for a in motion.wheels[j])
+                deg = math.degrees(math.remainder(ang, 2 * math.pi))
+                turn[j].set(deg, stamp())
+                drive[j].set(dist, stamp())
+                speed[j].set(spd, stamp())
+                mods.append(SwerveModulePosition(dist, Rotation2d.fromDegrees(deg)))
+            yaw_deg = math.degrees(float(motion.yaw[i]))
+            gyro.set(yaw_deg, stamp())
+            pose = odo.update(Rotation2d.fromDegrees(yaw_deg), mods)
+            e_pose.append(pose, stamp())
+            if k % 50 == 0:              # the heading the driver last locked
+                e_stored.append(round(pose.rotation().degrees(), 1), stamp())
+            tick()
+    finally:
+        _nt_close(ntcore, log, inst, handle)
+    entries = {
+        "drive_positions": [f"NT:/{n} Swerve Encoders/{n} Drive" for n in TEAM_NAMES],
+        "turn_angles": [f"NT:/{n} Swerve Encoders/{n} Turn" for n in TEAM_NAMES],
+        "gyro_deg": "NT:/Chassis/Robot Angle", "pose": "/Chassis/Pose",
+        "decoys": ["/Chassis/StoredHeadingDegrees",
+                   *[f"NT:/{n} Swerve Encoders/{n} Drive Speed" for n in TEAM_NAMES]],
+    }
+    geometry = {"modules": TEAM_MODULES, "module_names": TEAM_NAMES, "drive_units": "m",
+                "turn_units": "deg", "gyro_units": "deg"}
+    notes = {"initial_pose": START, "rate_hz": 50, "cycle_us": cyc, "period_us": PERIOD_US}
+    return RealLog(path, NT_WRITER + " + robotpy-wpiutil DataLogWriter (struct pose)", "swerve",
+                   geometry, entries, cyc, np.array(odo.rows), notes)
+
+
+# ---------------------------------------------------------------------------------------
+# 4. Module velocity states only
+
+STATES_MODULES = ((0.23495, 0.23495), (0.23495, -0.23495), (-0.23495, 0.23495), (-0.23495, -0.23495))
+STATES_NOISE = 1e-6                      # m/s: velocity readings jitter, so every cycle logs
+FEET = 0.3048
+
+
+def module_states_only(directory, variant: str = "per_module", *, filename: str | None = None) -> RealLog:
+    """Module velocity states and no distances, mirrored by ntcore, 50 Hz, every value of
+    a cycle at the cycle's instant:
+
+    * ``"per_module"`` (the mcm001 robots): ``NT:/SmartDashboard/Module N/Drive Velocity Feet``
+      (ft/s) and ``Module N/Steer Degrees`` (degrees in (-180, 180]), N = 1..4 = FL, FR,
+      BL, BR; decoys ``Drive Velocity Target Feet``, ``Steer Target Degrees``; gyro
+      ``NT:/SmartDashboard/Drive/Heading`` (degrees, continuous); pose Field2d
+      ``NT:/SmartDashboard/Field/Robot``;
+    * ``"struct"``: ``NT:/Drive/MeasuredStates`` struct:SwerveModuleState[] (m/s, FL FR BL
+      BR), decoy ``NT:/Drive/DesiredStates``; gyro ``NT:/Drive/Gyro`` struct:Rotation2d;
+      pose ``NT:/Drive/Pose`` struct:Pose2d.
+
+    Each reading is the module's speed plus a uniform jitter of at most ``STATES_NOISE``
+    (seeded), so no value repeats and NetworkTables drops none.
+
+    ``truth``: the robot's own odometry, which integrated its (unlogged) wheel distances.
+    ``notes["truth_from_velocities"]``: SwerveDrive4Odometry fed distances integrated
+    trapezoidally between consecutive records of exactly the logged velocities (the
+    replay's rule). ``notes["bound_m"]``: the bound on their distance, Σ over cycles of
+    h³/12·max|v''| (the trapezoid rule's error, v'' from the 4 kHz motion) plus h·noise,
+    summed, not rooted: odometry's translation error per cycle is at most the largest
+    module's distance error (the least-squares translation is a mean of module vectors,
+    and the pose exponential does not lengthen it)."""
+    if variant not in ("per_module", "struct"):
+        raise ValueError("variant is 'per_module' or 'struct'")
+    path = pathlib.Path(directory) / (filename or f"module_states_{variant}.wpilog")
+    kin = SwerveDrive4Kinematics(*[Translation2d(x, y) for x, y in STATES_MODULES])
+    motion = _Motion(_KNOTS_HOLONOMIC, _swerve_wheels(STATES_MODULES))
+    cyc = _cycles(PERIOD_US)
+    idx = motion.at(cyc)
+    noise = np.random.default_rng(30).uniform(-STATES_NOISE, STATES_NOISE, (len(cyc), 4))
+    ntcore, log, inst, handle = _nt_logging(path)
+    tick = _flushing(log, 40)
+    if variant == "per_module":
+        sd = inst.getTable("SmartDashboard")
+        vel = [sd.getDoubleTopic(f"Module {j + 1}/Drive Velocity Feet").publish() for j in range(4)]
+        steer = [sd.getDoubleTopic(f"Module {j + 1}/Steer Degrees").publish() for j in range(4)]
+        vel_t = [sd.getDoubleTopic(f"Module {j + 1}/Drive Velocity Target Feet").publish() for j in range(4)]
+        steer_t = [sd.getDoubleTopic(f"Module {j + 1}/Steer Target Degrees").publish() for j in range(4)]
+        gyro = sd.getDoubleTopic("Drive/Heading").publish()
+        field = sd.getDoubleArrayTopic("Field/Robot").publish()
+        sd.getStringTopic("Field/.type").publish().set("Field2d", int(cyc[0]) - 5000)
+    else:
+        dt_ = inst.getTable("Drive")
+        measured = dt_.getStructArrayTopic("MeasuredStates", SwerveModuleState).publish()
+        desired = dt_.getStructArrayTopic("DesiredStates", SwerveModuleState).publish()
+        gyro = dt_.getStructTopic("Gyro", Rotation2d).publish()
+        pose_pub = dt_.getStructTopic("Pose", Pose2d).publish()
+    robot = _Odometry(kin)
+    logged_v, logged_a, logged_g = [], [], []
+    try:
+        for k, i in enumerate(idx):
+            ts = int(cyc[k])
+            v_mps = [float(motion.wheels[j][1][i]) + float(noise[k, j]) for j in range(4)]
+            ang = [math.remainder(float(motion.wheels[j][2][i]), 2 * math.pi) for j in range(4)]
+            yaw = float(motion.yaw[i])
+            if variant == "per_module":
+                v_log = [v / FEET for v in v_mps]
+                a_log = [math.degrees(a) for a in ang]
+                for j in range(4):
+                    vel[j].set(v_log[j], ts)
+                    steer[j].set(a_log[j], ts)
+                    vel_t[j].set(1.02 * v_log[j], ts)
+                    steer_t[j].set(a_log[j], ts)
+                g_log = math.degrees(yaw)
+                gyro.set(g_log, ts)
+                logged_v.append([v * FEET for v in v_log])
+                logged_a.append([Rotation2d.fromDegrees(a) for a in a_log])
+                logged_g.append(Rotation2d.fromDegrees(g_log))
+            else:
+                states = [SwerveModuleState(v_mps[j], Rotation2d(ang[j])) for j in range(4)]
+                measured.set(states, ts)
+                desired.set([SwerveModuleState(1.02 * s.speed, s.angle) for s in states], ts)
+                gyro.set(Rotation2d(yaw), ts)
+                logged_v.append(v_mps)
+                logged_a.append([s.angle for s in states])
+                logged_g.append(Rotation2d(yaw))
+            pose = robot.update(logged_g[-1], [SwerveModulePosition(float(motion.wheels[j][0][i]),
+                                                                    logged_a[-1][j]) for j in range(4)])
+            if variant == "per_module":
+                field.set([pose.X(), pose.Y(), pose.rotation().degrees()], ts)
+            else:
+                pose_pub.set(pose, ts)
+            tick()
+    finally:
+        _nt_close(ntcore, log, inst, handle)
+    h = PERIOD_US * 1e-6
+    v = np.array(logged_v)
+    dist = np.zeros_like(v)
+    dist[1:] = np.cumsum(0.5 * (v[1:] + v[:-1]) * (np.diff(cyc) * 1e-6)[:, None], axis=0)
+    oracle = _Odometry(kin)
+    for k in range(len(cyc)):
+        oracle.update(logged_g[k], [SwerveModulePosition(float(dist[k, j]), logged_a[k][j]) for j in range(4)])
+    dt = DT_US * 1e-6
+    acc2 = np.max([np.abs(np.diff(motion.wheels[j][1], 2)) / dt ** 2 for j in range(4)], axis=0)
+    per = PERIOD_US // DT_US
+    step_max = np.array([acc2[max(0, s - 1):s + per].max() for s in idx[:-1]])
+    bound = float(np.sum(h ** 3 / 12 * step_max) + (len(cyc) - 1) * h * STATES_NOISE)
+    if variant == "per_module":
+        entries = {"velocities_ftps": [f"NT:/SmartDashboard/Module {j + 1}/Drive Velocity Feet" for j in range(4)],
+                   "turn_angles": [f"NT:/SmartDashboard/Module {j + 1}/Steer Degrees" for j in range(4)],
+                   "gyro_deg": "NT:/SmartDashboard/Drive/Heading", "pose": "NT:/SmartDashboard/Field/Robot",
+                   "decoys": [f"NT:/SmartDashboard/Module {j + 1}/{n}" for j in range(4)
+                              for n in ("Drive Velocity Target Feet", "Steer Target Degrees")]}
+    else:
+        entries = {"module_states": "NT:/Drive/MeasuredStates", "gyro": "NT:/Drive/Gyro",
+                   "pose": "NT:/Drive/Pose", "decoys": ["NT:/Drive/DesiredStates"]}
+    geometry = {"modules": STATES_MODULES, "velocity_units": "ft/s" if variant == "per_module" else "m/s"}
+    notes = {"initial_pose": START, "rate_hz": 50, "cycle_us": cyc, "period_us": PERIOD_US,
+             "truth_from_velocities": np.array(oracle.rows), "bound_m": bound,
+             "rule": "distances integrated trapezoidally between consecutive velocity records"}
+    return RealLog(path, NT_WRITER, "swerve", geometry, entries, cyc, np.array(robot.rows), notes)
+
+
 # ---------------------------------------------------------------------------------------
 # Reading back, with robotpy-wpiutil's reader (the generators' own check)
 
