@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import shlex
 import subprocess
 import sys
@@ -25,6 +26,7 @@ from wpimath.kinematics import (                                      # noqa: E4
     SwerveModulePosition,
 )
 
+import drivekin                                                      # noqa: E402
 from drivekin.app.cli import main                                    # noqa: E402
 from tests._support import team_logs                                 # noqa: E402
 from tests._support.real_logs import _pose_row, _start_pose          # noqa: E402
@@ -214,10 +216,13 @@ def test_replay_integrates_module_velocity_states(logs, tmp_path, capsys, name):
 def test_the_yagsl_command_as_typed(logs, tmp_path):
     # `python -m drivekin replay LOG.wpilog`, no options, in a fresh interpreter.
     rl = logs["yagsl_swerve"]
+    env = dict(os.environ)                     # the imported (in-place built) package first
+    root = os.path.dirname(os.path.dirname(os.path.abspath(drivekin.__file__)))
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (root, env.get("PYTHONPATH", "")) if p)
     r = subprocess.run([sys.executable, "-m", "drivekin", "replay", str(rl.path), "--json",
-                        "--no-write"], capture_output=True, text=True, timeout=60)
+                        "--no-write"], capture_output=True, text=True, timeout=60, env=env)
     assert r.returncode == 0, r.stderr
     d = json.loads(r.stdout)[0]
     assert d["vs_logged"]["max_position_m"] < 1e-9
-    final = (d["final_pose"]["x"], d["final_pose"]["y"])
-    assert np.hypot(final[0] - rl.truth[-1, 0], final[1] - rl.truth[-1, 1]) < 1e-9
+    final = d["final_pose"]
+    assert np.hypot(final["x_m"] - rl.truth[-1, 0], final["y_m"] - rl.truth[-1, 1]) < 1e-9
