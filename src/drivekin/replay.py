@@ -350,7 +350,7 @@ def replayLog(log: LogData | str | os.PathLike[str],
                          f"from the wheel sample at or before it; {before} earlier wheel "
                          f"samples not replayed")
     if pos.integrated:
-        notes.append("wheel distances integrated from logged velocity states (trapezoidal "
+        notes.append("wheel distances integrated from velocity states (trapezoidal "
                      "between records, held across gaps): the error grows with time")
     poses = _run(spec, kin, gyro, P, start)
 
@@ -420,15 +420,16 @@ def _start_at_logged(tw: np.ndarray, P: np.ndarray, gyro: np.ndarray,
     """Start where the robot's own odometry was when it logged its first pose: at the
     latest wheel sample at or before that pose's timestamp, from that pose (a robot
     already moving then would otherwise start from the right pose at the wrong
-    instant). Without a wheel sample before it, the first sample starts from the logged
-    pose interpolated at its time. Also returns how many samples were dropped."""
+    instant). Without a wheel sample before it, the first sample starts from the latest
+    logged pose at or before it (held: a writer that logs changes only leaves a robot at
+    rest unlogged). Also returns how many samples were dropped."""
     k = int(np.searchsorted(tw, logged[0][0], side="right")) - 1
+    j = 0 if k >= 0 else int(np.searchsorted(logged[0], tw[0], side="right")) - 1
+    x, y, th = logged[1][j]
+    start = Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th)))
     if k < 0:
-        x, y, th = _interp_poses(logged[0], logged[1], tw[:1])[0]
-        return tw, P, gyro, Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th))), 0
-    x, y, th = logged[1][0]
-    return (tw[k:], P[k:], gyro[k:],
-            Pose2d(float(x), float(y), Rotation2d.fromRadians(float(th))), k)
+        return tw, P, gyro, start, 0
+    return tw[k:], P[k:], gyro[k:], start, k
 
 
 def _run(spec: ReplaySpec, kin: Any, gyro: np.ndarray, P: np.ndarray, start: Pose2d
