@@ -291,7 +291,7 @@ def _pykit_reset(Logger, LogTable) -> None:
 
 
 def pykit_swerve(directory, *, high_rate: bool = True, rate_hz: int = 250,
-                 filename: str | None = None) -> RealLog:
+                 filename: str | None = None, moving_from_s: float = 0.0) -> RealLog:
     """A swerve log written by robotpy-pykit 1.0.5 (``Logger`` + ``WPILOGWriter``).
 
     Inputs as the AdvantageKit swerve template logs them with ``@autolog`` dataclasses
@@ -303,6 +303,9 @@ def pykit_swerve(directory, *, high_rate: bool = True, rate_hz: int = 250,
     loop carries the ``rate_hz / 50`` samples taken since the previous cycle.
     Outputs: ``Odometry/Robot`` (the robot's pose after the cycle's samples), decoys
     ``Odometry/TrajectorySetpoint`` (Pose2d) and ``SwerveStates/Measured``.
+
+    ``moving_from_s`` starts the robot program (and its log) that far into the motion, so
+    the robot is already moving when its first pose is logged.
 
     Truth: SwerveDrive4Odometry at every odometry-thread sample (``high_rate``), else at
     every cycle from the cycle values. With ``high_rate``, ``notes["t_us_50hz"]`` /
@@ -319,10 +322,18 @@ def pykit_swerve(directory, *, high_rate: bool = True, rate_hz: int = 250,
     name = filename or (f"pykit_swerve_{rate_hz}hz.wpilog" if high_rate else "pykit_swerve_50hz.wpilog")
     path = directory / name
     kin = SwerveDrive4Kinematics(*[Translation2d(x, y) for x, y in PYKIT_MODULES])
-    motion = _Motion(_KNOTS_HOLONOMIC, _swerve_wheels(PYKIT_MODULES))
+    full = _Motion(_KNOTS_HOLONOMIC, _swerve_wheels(PYKIT_MODULES))
+    shift = round(moving_from_s * 1e6) // DT_US * DT_US
     r = PYKIT_WHEEL_RADIUS
 
-    n_cycles = round(DURATION_S * 1e6) // PYKIT_PERIOD_US
+    class motion:                        # the same motion, seen from moving_from_s on
+        wheels, yaw, omega = full.wheels, full.yaw, full.omega
+
+        @staticmethod
+        def at(t_us) -> np.ndarray:
+            return full.at(np.asarray(t_us, dtype=np.int64) + shift)
+
+    n_cycles = (round(DURATION_S * 1e6) - shift) // PYKIT_PERIOD_US
     # cycle k at T0 + 20 ms (k + 1); its odometry samples were taken since the previous one
     cycle_us = T0_US + PYKIT_PERIOD_US * np.arange(1, n_cycles + 1, dtype=np.int64)
     period = 1_000_000 // rate_hz

@@ -232,3 +232,21 @@ def test_positions_can_name_the_folder_of_per_module_entries(logs, capsys):
              "--odometry-rate", "cycle")
     assert d["entries"]["positions"] == "/Drive/... (8 entries)"        # the cycle values
     assert round(d["rates_hz"]["positions"]) == 50
+
+
+def test_a_log_that_begins_in_motion_agrees_as_one_that_begins_at_rest(tmp_path, capsys):
+    # The robot program (and its pykit log) starts 5 s into the motion, at 1.5 m/s on an
+    # arc: its first logged pose already follows five odometry samples. The replay starts
+    # from that pose at the last of them, not at the first sample (4.75 cm and 0.29° off).
+    rl = real_logs.pykit_swerve(tmp_path, moving_from_s=5.0)
+    capsys.readouterr()                 # pykit's own messages
+    d = _run(rl.path, COMMANDS["pykit_swerve"], capsys)
+    assert d["vs_logged"]["max_position_m"] < 1e-9
+    assert d["vs_logged"]["max_heading_deg"] < 1e-7
+    assert any("started at the first logged pose" in n for n in d["notes"])
+    r = _replayed(rl, COMMANDS["pykit_swerve"])
+    keep = rl.t_us >= r.t[0]
+    assert r.t[0] in rl.t_us and not keep.all()
+    k = np.searchsorted(r.t, rl.t_us[keep], side="right") - 1
+    err = np.hypot(*(r.poses[k, :2] - rl.truth[keep, :2]).T)
+    assert err.max() < 1e-9
