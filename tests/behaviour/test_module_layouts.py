@@ -45,12 +45,11 @@ def _write(path, names_values, rate_us=20_000, n=200):
     return path
 
 
-def _corner_log(tmp_path, labels, *, velocity=False):
-    """Modules named ``labels`` driving straight ahead at 1 m/s (distances, or velocities)."""
+def _corner_log(tmp_path, labels):
+    """Modules named ``labels`` driving straight ahead at 1 m/s, distances in m."""
     cols = {}
     for lb in labels:
-        cols[f"/Robot/{lb} Swerve/{lb} Drive"] = (
-            (lambda k: 1.0) if velocity else (lambda k: 0.02 * k))
+        cols[f"/Robot/{lb} Swerve/{lb} Drive"] = lambda k: 0.02 * k
         cols[f"/Robot/{lb} Swerve/{lb} Angle"] = lambda k: 0.0
     cols["/Robot/Gyro Degrees"] = lambda k: 0.0
     return _write(tmp_path / "corners.wpilog", cols)
@@ -113,3 +112,9 @@ def test_velocity_entries_named_feet_are_integrated_in_feet_per_second(tmp_path)
     assert any("integrated from velocity states" in n for n in r.notes)
     # 1 m/s for 199 record intervals of 20 ms
     assert r.poses[-1, 0] == pytest.approx(199 * 0.02, abs=1e-12)
+
+
+def test_positions_naming_a_folder_no_layout_reads_points_to_module_entries(tmp_path):
+    path = _corner_log(tmp_path, ("a", "b", "c", "d"))
+    with pytest.raises(datalog.DataLogError, match="folder of 9 entries.*--module-entries"):
+        replay.replayLog(path, replay.ReplayConfig(positions="/Robot"))

@@ -53,6 +53,13 @@ def _named_signal(log: LogData, cands: list[Signal], name: str, option: str) -> 
         under = layouts.fold(layouts.bare(name)).rstrip("/") + "/"
         if not any(all(layouts.fold(layouts.bare(n)).startswith(under) for n in s.entries)
                    for s in cands):
+            inside = [n for n in log.entries
+                      if layouts.fold(layouts.bare(n)).startswith(under)]
+            if inside:
+                raise DataLogError(
+                    f"{option} {name!r} is a folder of {len(inside)} entries, but none of "
+                    f"the layouts recognises modules in it (e.g. {inside[0]!r}); map each "
+                    f"module's drive and angle entries with --module-entries") from None
             raise
     hits = [s for s in cands if (want & set(s.entries)) or (
         under is not None and all(layouts.fold(layouts.bare(n)).startswith(under)
