@@ -21,7 +21,6 @@ replay stops and names the option.
 from __future__ import annotations
 
 import difflib
-import json
 import math
 from dataclasses import dataclass, field
 from typing import Callable
@@ -29,6 +28,7 @@ from typing import Callable
 import numpy as np
 
 from drivekin._core import catalog
+from drivekin._core.metadata import parse as parse_metadata
 from drivekin.datalog import DataLogError, EntryInfo, LogData
 from drivekin.geometry3d import Pose3d
 
@@ -96,15 +96,9 @@ def unit_of(suffix: str, metadata: str) -> str | None:
     u = _UNIT_WORDS.get(suffix)
     if u is not None:
         return u
-    if metadata and len(metadata) < 4096 and metadata.lstrip().startswith("{"):
-        try:
-            meta = json.loads(metadata)
-        except ValueError:
-            return None
-        unit = meta.get("unit") if isinstance(meta, dict) else None
-        if isinstance(unit, str):
-            return _UNIT_WORDS.get(fold(unit))
-    return None
+    meta = parse_metadata(metadata)
+    unit = meta.get("unit") if meta is not None else None
+    return _UNIT_WORDS.get(fold(unit)) if isinstance(unit, str) else None
 
 
 def angle_scale(unit: str) -> float:
