@@ -117,7 +117,10 @@ class ReplayConfig:
     def __setattr__(self, name: str, value: Any) -> None:
         # Every assignment is checked (the constructor's included): a bad value fails
         # where it is given, never as a silent default later.
-        _CONFIG_CHECKS[name](f"ReplayConfig.{name}", value)
+        check = _CONFIG_CHECKS.get(name)
+        if check is None:
+            raise AttributeError(f"ReplayConfig has no option {name!r}")
+        check(f"ReplayConfig.{name}", value)
         object.__setattr__(self, name, value)
 
 

@@ -16,8 +16,8 @@ import sys
 import time
 
 from drivekin._core.display import escape
-from drivekin.app.options import Parser, attach_negative_values, docs_url, emit, new_file
-from drivekin.app.replay_cli import add_log_options, check_log_options, log_config
+from drivekin.app.options import Parser, docs_url, emit, new_file
+from drivekin.app.replay_cli import add_log_options, check_log_options, log_config, parse
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -58,7 +58,7 @@ def _progress(text: str) -> None:
 
 def main(argv) -> int:
     parser = build_parser()
-    args = parser.parse_args(attach_negative_values(parser, list(argv)))
+    args = parse(parser, argv)
     check_log_options(parser, args)
     if importlib.util.find_spec("scipy") is None:
         parser.error('calibrate needs scipy: pip install "drivekin[calibrate]"')

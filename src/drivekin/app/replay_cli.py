@@ -193,9 +193,14 @@ def _progress(text: str) -> None:
     emit(text, sys.stderr)
 
 
+def parse(parser: argparse.ArgumentParser, argv) -> argparse.Namespace:
+    """``argv`` parsed, values that start like negative numbers included."""
+    return parser.parse_args(attach_negative_values(parser, list(argv)))
+
+
 def main(argv) -> int:
     parser = build_parser()
-    args = parser.parse_args(attach_negative_values(parser, list(argv)))
+    args = parse(parser, argv)
     if args.out_dir is not None and not os.path.isdir(args.out_dir):
         parser.error(f"argument --out-dir: {args.out_dir!r} is not a folder")
     if args.heading == "wheels" and args.trackwidth is None:
