@@ -7,7 +7,7 @@ import importlib.util
 import math
 import os
 import sys
-from typing import TextIO
+from typing import NoReturn, TextIO
 
 from drivekin._core.display import escape, escape_lines
 
@@ -15,7 +15,7 @@ from drivekin._core.display import escape, escape_lines
 class Parser(argparse.ArgumentParser):
     """argparse's parser, its error line escaped (it may quote what the user typed)."""
 
-    def error(self, message: str):  # type: ignore[override]
+    def error(self, message: str) -> NoReturn:
         super().error(escape(message))
 
 
