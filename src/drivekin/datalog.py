@@ -106,6 +106,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from drivekin import wpistruct
+from drivekin._core.display import escape
 from drivekin._core.errors import clip, cut, type_name
 from drivekin._core import catalog
 from drivekin._core import wpilog as _wpilog
@@ -128,7 +129,12 @@ def _wpiutil() -> Any:
 
 class DataLogError(ValueError):
     """A ``.wpilog`` file that cannot be read as asked: not a DataLog, truncated, an
-    entry missing or of a type that cannot be decoded."""
+    entry missing or of a type that cannot be decoded. The message is escaped
+    (:func:`drivekin._core.display.escape`): an entry name it quotes cannot carry terminal
+    control characters to wherever it is printed."""
+
+    def __init__(self, message: object = "", *args: object) -> None:
+        super().__init__(escape(str(message)), *args)
 
 
 class EntryInfo(NamedTuple):

@@ -50,6 +50,7 @@ logged pose, ``/drivekin/ReplayError`` (``double``, m) into a new ``.wpilog``;
 from __future__ import annotations
 
 import dataclasses
+import json
 import math
 import os
 from dataclasses import dataclass, field
@@ -59,7 +60,9 @@ import numpy as np
 
 from drivekin import batch, datalog
 from drivekin._core import catalog
+from drivekin._core import fieldchecks as check
 from drivekin._core import loglayouts as layouts
+from drivekin._core.display import escape
 from drivekin._core.loglayouts import REPLAY_PREFIX, Signal
 from drivekin._core.modulelayouts import BATCH_US, batch_ends
 from drivekin._core.plotting import pyplot
@@ -110,6 +113,44 @@ class ReplayConfig:
     compare: str = "hold"                         # or "interpolate"
     ragged: str = "error"                         # or "drop"
     allowTruncated: bool = False
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        # Every assignment is checked (the constructor's included): a bad value fails
+        # where it is given, never as a silent default later.
+        check = _CONFIG_CHECKS.get(name)
+        if check is None:
+            raise AttributeError(f"ReplayConfig has no option {name!r}")
+        check(f"ReplayConfig.{name}", value)
+        object.__setattr__(self, name, value)
+
+
+# One check per ReplayConfig field (a new field needs its line here).
+_CONFIG_CHECKS: dict[str, check.Check] = {
+    "drivetrain": check.choice("auto", *DRIVETRAINS),
+    "positions": check.entry_name,
+    "moduleEntries": check.texts,
+    "gyro": check.entry_name,
+    "pose": check.entry_name,
+    "truth": check.entry_name,
+    "gyroUnits": check.choice(None, *layouts.GYRO_UNITS),
+    "driveUnits": check.choice(None, *layouts.DRIVE_UNITS, *layouts.SPEED_UNITS),
+    "turnUnits": check.choice(None, *layouts.TURN_UNITS),
+    "wheelRadius": check.positive(optional=True),
+    "modules": check.points(2),
+    "wheelbase": check.positive(optional=True),
+    "deadWheels": check.points(3),
+    "trackwidth": check.positive(optional=True),
+    "odometryRate": check.choice("auto", "cycle"),
+    "heading": check.choice("gyro", "wheels"),
+    "wheelScale": check.scales,
+    "gyroScale": check.positive(optional=False),
+    "steerOffsets": check.finite_list,
+    "gyroAlign": check.choice("latest", "interpolate"),
+    "start": check.choice("logged", "origin"),
+    "compare": check.choice("hold", "interpolate"),
+    "ragged": check.choice("error", "drop"),
+    "allowTruncated": check.flag,
+}
 
 
 @dataclass
@@ -298,12 +339,12 @@ def replayLog(log: LogData | str | os.PathLike[str],
     logged = truth = None
     if cfg.truth is not None:
         tsig = _named_pose(log, cfg.truth, "--truth", opts)
-        truth = (tsig.t, tsig.values)
+        truth = _finite_poses(tsig, "--truth", notes)
         entries["truth"] = tsig.source
     pose_sig, why["pose"] = _pose(log, cfg, opts,
                                   {entries["truth"]} if "truth" in entries else set())
     if pose_sig is not None and len(pose_sig.t):
-        logged = (pose_sig.t, pose_sig.values)
+        logged = _finite_poses(pose_sig, "pose", notes)
         entries["pose"] = pose_sig.source
 
     # 3. gyro
@@ -370,6 +411,22 @@ def replayLog(log: LogData | str | os.PathLike[str],
     if cycle is not None and result.vsLogged is not None:
         result.warnings += _rate_check(log, cfg, result)
     return result
+
+
+def _finite_poses(sig: Signal, role: str, notes: list[str]) -> tuple[np.ndarray, np.ndarray]:
+    """A reference pose's samples without the non-finite ones (a robot may log NaN
+    before its estimator has a fix), counted in a note; DataLogError when none is
+    finite. The start pose and every comparison then use finite poses only."""
+    finite = np.isfinite(sig.values).all(axis=1)
+    bad = int((~finite).sum())
+    if not bad:
+        return sig.t, sig.values
+    if bad == len(finite):
+        raise DataLogError(f"{role} entry {sig.source!r} holds no finite pose: all {bad} "
+                           f"are NaN or infinite")
+    notes.append(f"{bad} of the {len(finite)} poses of {role} entry {sig.source!r} are "
+                 f"NaN or infinite: skipped")
+    return sig.t[finite], sig.values[finite]
 
 
 def corrections_text(cfg: ReplayConfig) -> str:
@@ -461,6 +518,8 @@ def _rate_check(log: LogData, cfg: ReplayConfig, result: ReplayResult) -> list[s
 # The fastest a wheel rolls or a robot turns that the sanity checks believe.
 MAX_WHEEL_SPEED = 30.0      # m/s
 MAX_TURN_RATE = 60.0        # rad/s (about 10 turns a second)
+# A gyro step (read as rad) beyond this is no robot's turn in degrees either.
+MAX_DEGREE_STEP = math.degrees(MAX_TURN_RATE * 0.1)
 
 
 def _steps(t: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -490,17 +549,22 @@ def _check_positions(pos: Signal, spec: ReplaySpec) -> None:
 
 
 def _check_gyro(source: str, t: np.ndarray, G: np.ndarray, units: str) -> None:
-    """Refuse a gyro that turns impossibly fast between samples: degrees read as
-    radians (a wrap of a full turn is not a step)."""
+    """Refuse a gyro that turns impossibly fast between samples, as wheel distances are
+    refused: degrees read as radians, or corrupt samples. A step of about one turn is a
+    wrap (a gyro reading in [-180°, 180°)), not a turn; one of more than 1.5 turns never
+    is (wrapping it would hide a jump of 1e9 rad, which wraps to 0.58)."""
     d, dt = _steps(t, G)
     if not len(dt):
         return
-    step = np.abs(_wrap(d))
+    step = np.abs(d)
+    step = np.where(step <= 3.0 * math.pi, np.abs(_wrap(d)), step)
     if ((step / dt > MAX_TURN_RATE) & (step > math.pi / 4)).mean() > 0.01:
+        worst = float(step.max())
         raise DataLogError(
-            f"gyro entry {source!r} ({units}) turns by up to {float(step.max()):.3g} rad "
-            f"between samples: in those units that is faster than any robot turns; it is "
-            f"probably in degrees (--gyro-units deg)")
+            f"gyro entry {source!r} ({units}) turns by up to {worst:.3g} rad between "
+            f"samples: in those units that is faster than any robot turns; " +
+            ("it is probably in degrees (--gyro-units deg)" if worst < MAX_DEGREE_STEP else
+             "its samples are corrupt or in the wrong units (--gyro-units)"))
 
 
 # ---------------------------------------------------------------------------------------
@@ -575,7 +639,7 @@ def writeReplayLog(result: ReplayResult, path: str | os.PathLike[str]) -> None:
                        metadata='{"source":"drivekin replay"}')
         if result.vsLogged is not None:
             w.appendSeries(ERROR_ENTRY, "double", result.vsLogged.t, result.vsLogged.error,
-                           metadata='{"unit":"m","against":"' + result.entries["pose"] + '"}')
+                           metadata=json.dumps({"unit": "m", "against": result.entries["pose"]}))
 
 
 def plotReplay(result: ReplayResult, path: str | os.PathLike[str]) -> None:
@@ -684,4 +748,6 @@ def report(result: ReplayResult, outputs: tuple[str, ...] = ()) -> str:
         rows.append(f"  warning    {r.truncated}; the complete records were used")
     if outputs:
         rows.append(f"  wrote      {', '.join(outputs)}")
-    return "\n".join(rows)
+    # Entry names and paths are the log's and the user's bytes: escaped row by row, so
+    # one with a newline or terminal controls stays on its row and prints harmlessly.
+    return "\n".join(escape(row) for row in rows)

@@ -21,7 +21,6 @@ replay stops and names the option.
 from __future__ import annotations
 
 import difflib
-import json
 import math
 import weakref
 from dataclasses import dataclass, field
@@ -30,6 +29,7 @@ from typing import Any, Callable
 import numpy as np
 
 from drivekin._core import catalog
+from drivekin._core.metadata import parse as parse_metadata
 from drivekin.datalog import DataLogError, EntryInfo, LogData
 from drivekin.geometry3d import Pose3d
 
@@ -109,17 +109,12 @@ _FOOT = 0.3048
 def _metadata_unit(metadata: str) -> str | None:
     """The folded unit an entry's metadata names: ``{"unit": ...}`` JSON, or the bare unit
     word WPILib's SysId log writes (``Meter``, ``Meter per Second``)."""
-    if not metadata or len(metadata) >= 4096:
-        return None
     if metadata.lstrip().startswith("{"):
-        try:
-            meta = json.loads(metadata)
-        except ValueError:
-            return None
-        unit = meta.get("unit") if isinstance(meta, dict) else None
+        meta = parse_metadata(metadata)
+        unit = meta.get("unit") if meta is not None else None
         return fold(unit) if isinstance(unit, str) else None
     word = fold(metadata)
-    return word if len(word) < 40 else None
+    return word if 0 < len(word) < 40 else None
 
 
 def unit_of(suffix: str, metadata: str) -> str | None:

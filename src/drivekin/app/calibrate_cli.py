@@ -15,13 +15,13 @@ import os
 import sys
 import time
 
-from drivekin.app.options import docs_url, new_file
-from drivekin.app.replay_cli import _join_negative_points, add_log_options, check_log_options
-from drivekin.app.replay_cli import log_config
+from drivekin._core.display import escape
+from drivekin.app.options import Parser, docs_url, emit, new_file
+from drivekin.app.replay_cli import add_log_options, check_log_options, log_config, parse
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
+    p = Parser(
         prog="python -m drivekin calibrate",
         description=(
             "Estimate a robot's true geometry from its WPILib DataLogs (.wpilog): wheel "
@@ -53,12 +53,12 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _progress(text: str) -> None:
-    print(text, file=sys.stderr, flush=True)
+    emit(text, sys.stderr)
 
 
 def main(argv) -> int:
     parser = build_parser()
-    args = parser.parse_args(_join_negative_points(list(argv)))
+    args = parse(parser, argv)
     check_log_options(parser, args)
     if importlib.util.find_spec("scipy") is None:
         parser.error('calibrate needs scipy: pip install "drivekin[calibrate]"')
@@ -89,8 +89,8 @@ def main(argv) -> int:
             f"{e}" if isinstance(e, (OSError, ImportError)) else f"{type(e).__name__}: {e}")
         if isinstance(e, OSError) and e.filename and str(e.filename) not in message:
             message = f"{e.filename}: {message}"
-        print(f"python -m drivekin calibrate: error: {message}", file=sys.stderr)
+        emit(f"python -m drivekin calibrate: error: {escape(message)}", sys.stderr)
         return 1
     _progress(f"done in {time.perf_counter() - t0:.2f} s")
-    print(calibrate.report(result))
+    emit(calibrate.report(result))
     return 0

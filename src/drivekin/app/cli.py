@@ -8,7 +8,6 @@ simulation and the measurements live in :mod:`drivekin.app.demo`.
 """
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import sys
@@ -16,7 +15,7 @@ import sys
 from drivekin.app import calibrate_cli, replay_cli
 from drivekin.app.demo import (DRIVETRAINS, DT, SETPOINT_DRIVETRAINS, VISION_DRIVETRAINS,
                                 header, run, table)
-from drivekin.app.options import docs_url, need_extras, new_file, number_option
+from drivekin.app.options import Parser, docs_url, need_extras, new_file, number_option
 
 
 # Option ranges. The upper bounds keep a run's memory and time sane (--seconds sizes the
@@ -28,7 +27,7 @@ MAX_OMEGA_RANGE = (0.0, 100.0)          # rad/s, exclusive lower bound
 
 
 def parse_args(argv=None):
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="python -m drivekin",
         description=(
             "Simulate a 50 Hz drivetrain control loop (swerve, mecanum, differential or "

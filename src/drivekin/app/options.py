@@ -6,6 +6,45 @@ import argparse
 import importlib.util
 import math
 import os
+import sys
+from typing import NoReturn, TextIO
+
+from drivekin._core.display import escape, escape_lines
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse's parser, its error line escaped (it may quote what the user typed)."""
+
+    def error(self, message: str) -> NoReturn:
+        super().error(escape(message))
+
+
+def emit(text: str, file: TextIO | None = None) -> None:
+    """Print ``text`` (a report, a listing, an error line) with every line escaped: the
+    command lines print nothing from a log or the user any other way, so no entry name
+    can send control characters to the terminal."""
+    print(escape_lines(text), file=sys.stdout if file is None else file, flush=True)
+
+
+def attach_negative_values(parser: argparse.ArgumentParser, argv: list[str]) -> list[str]:
+    """``--steer-offsets -0.573,1.2`` (as calibrate prints it) and ``--module -0.3,0.3``:
+    argparse takes a value starting with '-' for an option unless it is one plain
+    negative number, so a value that starts like a negative number (``-`` and a digit or
+    a point) following an option that takes a value is attached to it
+    (``--steer-offsets=-0.573,1.2``) before parsing."""
+    takes_value = {s for a in parser._actions if a.nargs is None for s in a.option_strings}
+    out: list[str] = []
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        if (a in takes_value and i + 1 < len(argv) and argv[i + 1][:1] == "-"
+                and argv[i + 1][1:2] in set("0123456789.")):
+            out.append(f"{a}={argv[i + 1]}")
+            i += 2
+            continue
+        out.append(a)
+        i += 1
+    return out
 
 
 def docs_url() -> str:

@@ -15,7 +15,9 @@ import time
 
 import numpy as np
 
-from drivekin.app.options import docs_url, need_extras, number_option
+from drivekin._core.display import escape
+from drivekin.app.options import (Parser, attach_negative_values, docs_url, emit,
+                                  need_extras, number_option)
 
 
 def _point(option: str, n: int):
@@ -137,7 +139,7 @@ def check_log_options(parser: argparse.ArgumentParser, args: argparse.Namespace)
 
 
 def build_parser() -> argparse.ArgumentParser:
-    p = argparse.ArgumentParser(
+    p = Parser(
         prog="python -m drivekin replay",
         description=(
             "Recompute a robot's odometry from WPILib DataLogs (.wpilog): the gyro and "
@@ -195,29 +197,17 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def _progress(text: str) -> None:
-    print(text, file=sys.stderr, flush=True)
+    emit(text, sys.stderr)
 
 
-def _join_negative_points(argv):
-    """``--module -0.3,0.3``: argparse takes a value starting with '-' for an option, so
-    the value is attached (``--module=-0.3,0.3``) before parsing."""
-    out = []
-    i = 0
-    while i < len(argv):
-        a = argv[i]
-        if a in ("--module", "--dead-wheel") and i + 1 < len(argv) \
-                and argv[i + 1].startswith("-") and "," in argv[i + 1]:
-            out.append(f"{a}={argv[i + 1]}")
-            i += 2
-            continue
-        out.append(a)
-        i += 1
-    return out
+def parse(parser: argparse.ArgumentParser, argv) -> argparse.Namespace:
+    """``argv`` parsed, values that start like negative numbers included."""
+    return parser.parse_args(attach_negative_values(parser, list(argv)))
 
 
 def main(argv) -> int:
     parser = build_parser()
-    args = parser.parse_args(_join_negative_points(list(argv)))
+    args = parse(parser, argv)
     if args.out_dir is not None and not os.path.isdir(args.out_dir):
         parser.error(f"argument --out-dir: {args.out_dir!r} is not a folder")
     if args.heading == "wheels" and args.trackwidth is None:
@@ -246,7 +236,7 @@ def main(argv) -> int:
                 if results:
                     print()
                 results.append(path)
-                print(replay.listing(log, config))
+                emit(replay.listing(log, config))
                 continue
             stem = os.path.splitext(os.path.basename(path))[0]
             folder = args.out_dir if args.out_dir is not None else (os.path.dirname(path) or ".")
@@ -278,7 +268,7 @@ def main(argv) -> int:
             if isinstance(e, OSError) and e.filename and str(e.filename) not in message:
                 message = f"{e.filename}: {message}"
             first = message if message.startswith(path) else f"{path}: {message}"
-            print(f"python -m drivekin replay: error: {first}", file=sys.stderr)
+            emit(f"python -m drivekin replay: error: {escape(first)}", sys.stderr)
             continue
         _progress(f"{tag}: done in {time.perf_counter() - t0:.2f} s "
                   f"({len(result.t)} samples)")
@@ -290,7 +280,7 @@ def main(argv) -> int:
             if results:
                 print()
             results.append(result)
-            print(replay.report(result, tuple(outputs)))
+            emit(replay.report(result, tuple(outputs)))
     if args.json and not args.list:
         print(json.dumps(results, indent=2))
     if total > 1 and not args.list:
