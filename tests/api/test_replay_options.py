@@ -55,7 +55,7 @@ BAD = [
     ("gyro", "", ValueError, "not empty"),
     ("allowTruncated", "yes", TypeError, "True or False"),
     ("moduleEntries", "FL=/a,/b", TypeError, "list of str"),
-    ("moduleEntries", [], ValueError, "non-empty string"),
+    ("moduleEntries", [], ValueError, "at least one non-empty string"),
 ]
 
 

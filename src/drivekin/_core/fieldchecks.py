@@ -51,7 +51,7 @@ def texts(label: str, value: Any) -> None:
     if not isinstance(value, (list, tuple)) or not all(isinstance(v, str) for v in value):
         raise TypeError(f"{label} must be a list of str or None, got {_kind(value)}")
     if not value or not all(value):
-        raise ValueError(f"{label} must hold at least one non-empty string (None: not used)")
+        raise ValueError(f"{label} must be at least one non-empty string (None: not used)")
 
 
 def flag(label: str, value: Any) -> None:
