@@ -66,6 +66,7 @@ def _unit_suffix(leaf: str) -> str:
 # Gyros
 
 _YAGSL_IMU = "swerve/imu/raw"
+_YAGSL_DEGREES = (_YAGSL_IMU, "swerve/imu/adjusted")
 _GYRO_DEVICE = ("gyro", "imu", "pigeon", "navx", "ahrs", "yaw")
 _GYRO_HEADING = ("heading", "robotangle")
 _DRIVE_PATH = ("drive", "chassis", "swerve")
@@ -146,7 +147,7 @@ def find_double_gyro(log: LogData, units: Options) -> list[Signal]:
         u, said = units.gyro, "--gyro-units"
         if u is None:
             u, said = unit_of(suffix, e.metadata), "the entry's name or metadata"
-        if u is None and (widget or fold(e.name).endswith(_YAGSL_IMU)):
+        if u is None and (widget or fold(e.name).endswith(_YAGSL_DEGREES)):
             u, said = "deg", "YAGSL's convention" if not widget else "WPILib's Gyro widget"
         t, v = log.values(e.name)
         if u is None:

@@ -117,9 +117,10 @@ def _named_array(log: LogData, name: str, want: str, ragged: str) -> Signal:
     return Signal("positions", t, v, (info.name,), "double[]", kind, "m")
 
 
-def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Signal,
+def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Signal | None,
           pose: Signal | None, cands: list[Signal] | None = None) -> tuple[Signal, str]:
-    """The gyro signal and why (``cands``: the log's gyro candidates, when known)."""
+    """The gyro signal and why (``cands``: the log's gyro candidates, when known;
+    ``positions`` None: the choice ``--list`` shows for a log without positions)."""
     problems: list[DataLogError] = []
     if cands is None:
         cands = layouts.candidates(log, "gyro", units, problems)
@@ -139,7 +140,7 @@ def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Si
                                f"double (with --gyro-units)")
         chosen, why = hits[0], "named with --gyro"
     else:
-        if positions.highRate:
+        if positions is not None and positions.highRate:
             high = [s for s in cands if s.highRate]
             if high:
                 cands = high
