@@ -28,8 +28,8 @@ wheel samples), never a one-record value, a setpoint, a stored, reset or offset 
 a rate, a distance, a module's or turret's angle. Names rank: YAGSL's
 ``swerve/imu/raw`` (degrees: its odometry's gyro) first, then device words (gyro, imu,
 pigeon, navX, ahrs, yaw; a SmartDashboard ``Gyro`` widget's ``Value``, degrees), then
-the robot's heading (``Heading``, ``Robot Angle``), each one higher under a drivetrain
-path (drive, chassis, swerve). Units come from the name (``Degrees``, ``Deg``, ``Rad``),
+the robot's heading (``Heading``, ``Robot Angle``; one higher under a drivetrain path:
+drive, chassis, swerve, so ``DriveTrain/Robot Angle`` passes a dashboard's ``Heading``). Units come from the name (``Degrees``, ``Deg``, ``Rad``),
 the metadata or the convention just named; otherwise ``--gyro-units`` must say.
 """
 from __future__ import annotations
@@ -91,7 +91,7 @@ def gyro_score(name: str) -> tuple[int, str] | None:
     score, why = (3, f"its name says {device}") if device else (
         2, f"its name says {'robot angle' if heading == 'robotangle' else heading}")
     path = f.rpartition("/")[0]
-    if any(w in path for w in _DRIVE_PATH):
+    if device is None and any(w in path for w in _DRIVE_PATH):
         score, why = score + 1, why + " under the drivetrain"
     return score, why
 

@@ -123,19 +123,21 @@ def listing(log: LogData, config: ReplayConfig | None = None, showAll: bool = Fa
     refused_rows: list[str] = []
     listed: set[str] = set()
     for role, signals in found.items():
-        chosen = used.get(role)
+        # The choice may be its own reading of the same entries (positions are found
+        # again by the choice): the candidate holding the same entries stands for it.
+        chosen = next((s for s in signals if role in used and
+                       s.entries == used[role].entries), None)
         good = [s for s in signals if _refused(role, s, wheels) is None]
         good.sort(key=_rank(role, wheels), reverse=True)
         if chosen is not None and chosen in good:
             good.remove(chosen)
             good.insert(0, chosen)
         for k, s in enumerate(good, 1):
-            mark = " (used)" if s is chosen or (role == "pose" and stand_in and
-                                                s is used.get("pose")) else ""
+            mark = " (used)" if s is chosen else ""
             kind = f"{s.layout}, {s.drivetrain}" if s.drivetrain else s.layout
             text = f"{_word(role, s)} candidate {k}{mark}: {kind}"
             text += "".join(f"; {x}" for x in (s.why, s.units) if x)
-            if role == "pose" and stand_in and s is used.get("pose"):
+            if role == "pose" and stand_in and s is chosen:
                 text += "; its heading stands in for the gyro (the log has none)"
             for n in s.entries:
                 if n not in listed and n in infos:
