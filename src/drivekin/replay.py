@@ -64,6 +64,7 @@ from drivekin._core import fieldchecks as check
 from drivekin._core import loglayouts as layouts
 from drivekin._core.display import escape
 from drivekin._core.loglayouts import REPLAY_PREFIX, Signal
+from drivekin._core.listing import listing
 from drivekin._core.modulelayouts import BATCH_US, batch_ends
 from drivekin._core.plotting import pyplot
 from drivekin._core.replayspec import ReplaySpec
@@ -565,59 +566,6 @@ def _check_gyro(source: str, t: np.ndarray, G: np.ndarray, units: str) -> None:
             f"samples: in those units that is faster than any robot turns; " +
             ("it is probably in degrees (--gyro-units deg)" if worst < MAX_DEGREE_STEP else
              "its samples are corrupt or in the wrong units (--gyro-units)"))
-
-
-# ---------------------------------------------------------------------------------------
-# Listing
-
-def listing(log: LogData, config: ReplayConfig | None = None) -> str:
-    """Every entry of a log with its type, record count and median rate, and what
-    :func:`replayLog` would use it for (``python -m drivekin replay LOG --list``)."""
-    cfg = config or ReplayConfig()
-    opts = layouts.Options(cfg.driveUnits, cfg.turnUnits, cfg.gyroUnits, cfg.wheelRadius,
-                           cfg.ragged)
-    use: dict[str, list[str]] = {}
-    chosen: dict[str, str] = {}
-    problems = []
-
-    def mark(signals: list[Signal], role: str) -> None:
-        for s in signals:
-            what = f"{role} candidate: {s.layout}" + (f", {s.drivetrain}" if s.drivetrain
-                                                     else "")
-            for n in s.entries:
-                use.setdefault(n, []).append(what)
-
-    for role in ("positions", "gyro", "pose"):
-        found: list[DataLogError] = []
-        mark(layouts.candidates(log, role, opts, found), role)
-        problems += [f"{role}: {e}" for e in found]
-    try:
-        pos, _, _ = _positions(log, cfg, opts)
-        chosen.update(dict.fromkeys(pos.entries, "positions"))
-        if cfg.heading != "wheels":
-            g, _ = _gyro(log, cfg, opts, pos, _pose(log, cfg, opts, set())[0])
-            chosen.update(dict.fromkeys(g.entries, "gyro"))
-    except DataLogError as e:
-        problems.append(str(e))
-    try:
-        p, _ = _pose(log, cfg, opts, set())
-        if p is not None:
-            chosen.update(dict.fromkeys(p.entries, "pose"))
-    except DataLogError as e:
-        problems.append(str(e))
-    infos = [e for e in log.entries.values() if not layouts.is_schema(e.name)]
-    width = min(max((len(e.name) for e in infos), default=4), 60)
-    rows = [f"{log.source}: {len(infos)} entries (schemas not listed)",
-            f"  {'entry':<{width}}  {'type':<30} {'records':>8} {'rate':>8}  replay uses it as"]
-    for e in infos:
-        t = log._entries[e.name].ts
-        rate = layouts.rate(np.sort(t)) if len(t) > 1 else 0.0
-        role = chosen.get(e.name)
-        text = (f"{role} (chosen)" if role else "; ".join(dict.fromkeys(use.get(e.name, []))))
-        rows.append(f"  {e.name:<{width}}  {e.type[:30]:<30} {e.records:>8} "
-                    f"{(f'{rate:.0f} Hz' if rate else '-'):>8}  {text}")
-    rows += [f"  note: {p}" for p in problems]
-    return "\n".join(rows)
 
 
 # ---------------------------------------------------------------------------------------

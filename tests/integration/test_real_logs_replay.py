@@ -145,18 +145,20 @@ def test_wheel_radians_read_as_metres_are_refused(logs, capsys):
     assert "faster than any robot: check the units" in err
 
 
-def test_list_shows_every_entry_and_its_use(logs, capsys):
+def test_list_all_shows_every_entry_and_its_use(logs, capsys):
     rl = logs["pykit_swerve"]
-    assert main(["replay", str(rl.path), "--list", "--wheel-radius", "0.0508"]) == 0
+    assert main(["replay", str(rl.path), "--list", "--all", "--wheel-radius", "0.0508"]) == 0
     out = capsys.readouterr().out
     log = datalog.read(rl.path)
+    lines = out.splitlines()
     for name in log.entries:
         if not name.startswith(("/.schema/", "NT:/.schema/")):
-            assert name in out
-    line = next(x for x in out.splitlines() if "/RealOutputs/Odometry/Robot" in x)
-    assert "pose (chosen)" in line
-    line = next(x for x in out.splitlines() if "/Drive/Module0/odometryTimestamps" in x)
-    assert "positions (chosen)" in line and "250 Hz" not in line.split()[0]
+            assert sum(x.startswith(name + " ") for x in lines) == 1, name
+    line = next(x for x in lines if x.startswith("/RealOutputs/Odometry/Robot "))
+    assert "pose candidate 1 (used)" in line
+    line = next(x for x in lines if x.startswith("/Drive/Module0/odometryTimestamps "))
+    # the records' rate: each array record holds five 250 Hz samples
+    assert "position candidate 1 (used)" in line and " 50 Hz " in line
 
 
 def test_an_existing_output_is_not_overwritten_without_force(logs, capsys, tmp_path):

@@ -274,7 +274,8 @@ def bad_logs(tmp_path_factory, match):
     logs["no positions"] = (p, "no wheel or module positions found")
     p = folder / "nogyro.wpilog"
     _robotpy_log_with(p, [GOOD_MODULES])
-    logs["no gyro"] = (p, "no gyro entry (struct:Rotation2d, or a double named gyro, yaw or heading); name one with --gyro")
+    logs["no gyro"] = (p, "no continuous gyro (struct:Rotation2d, or a double named gyro, imu, yaw, "
+                          "heading or robot angle); name one with --gyro")
     p = folder / "twogyros.wpilog"
     _robotpy_log_with(p, [GOOD_MODULES, GOOD_GYRO, ("/Drive/GyroBackup", *GOOD_GYRO[1:])])
     logs["two gyros"] = (p, "several gyro entries")

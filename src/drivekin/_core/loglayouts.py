@@ -21,6 +21,7 @@ replay stops and names the option.
 from __future__ import annotations
 
 import difflib
+import importlib
 import math
 import weakref
 from dataclasses import dataclass, field
@@ -31,7 +32,6 @@ import numpy as np
 from drivekin._core import catalog
 from drivekin._core.metadata import parse as parse_metadata
 from drivekin.datalog import DataLogError, EntryInfo, LogData
-from drivekin.geometry3d import Pose3d
 
 REPLAY_PREFIX = "/drivekin/"
 
@@ -601,30 +601,6 @@ def _find_array_positions(log: LogData, units: Options) -> list[Signal]:
     return out
 
 
-_GYRO_WORDS = ("gyro", "yaw", "heading", "imu", "pigeon", "navx", "ahrs")
-_NOT_GYRO = ("velocity", "rate", "persec", "turn", "steer", "module", "absolute",
-             "connected", "pitch", "roll", "setpoint", "target", "desired")
-
-
-def _gyro_name(e: EntryInfo) -> bool:
-    f = fold(e.name)
-    return any(w in f for w in _GYRO_WORDS) and not any(w in f for w in _NOT_GYRO)
-
-
-def _find_struct_gyro(log: LogData, units: Options) -> list[Signal]:
-    out = []
-    for e in _live(log):
-        if e.type == "struct:Rotation2d" and not _module_entry(e.name):
-            t, v = log.values(e.name)
-            out.append(Signal("gyro", t, v.astype(np.float64), (e.name,), "Rotation2d",
-                              units="rad", why="name says gyro" if _gyro_name(e) else ""))
-    return out
-
-
-def _module_entry(name: str) -> bool:
-    return any(_module_index(p) is not None for p in name.split("/")[:-1])
-
-
 def _find_high_gyro(log: LogData, units: Options) -> list[Signal]:
     """AdvantageKit's OdometryYawPositions with OdometryYawTimestamps."""
     out = []
@@ -652,111 +628,13 @@ def _find_high_gyro(log: LogData, units: Options) -> list[Signal]:
     return out
 
 
-def _find_double_gyro(log: LogData, units: Options) -> list[Signal]:
-    out = []
-    for e in _live(log):
-        if e.type not in ("double", "float") or not _gyro_name(e):
-            continue
-        leaf = fold(e.name.rpartition("/")[2])
-        suffix = ""
-        for u in sorted(_UNIT_WORDS, key=len, reverse=True):
-            if leaf.endswith(u) and len(leaf) > len(u):
-                suffix = u
-                break
-        u = units.gyro or unit_of(suffix, e.metadata)
-        t, v = log.values(e.name)
-        if u is None:
-            out.append(Signal("gyro", t, v, (e.name,), "double", units="",
-                              why="needs --gyro-units"))
-            continue
-        said = "--gyro-units" if units.gyro else "the entry's name or metadata"
-        out.append(Signal("gyro", t, v * _TO_RAD[u], (e.name,), "double",
-                          units=f"{u} ({said})", why="name says gyro"))
-    return out
-
-
-# Pose candidates: words that make a Pose2d the robot's own pose, and words that make it
-# something else (what the robot was told to do, or saw).
-_POSE_GOOD = (("odometry/robot", 6, "AdvantageKit's odometry output"),
-              ("drivestate/pose", 5, "CTRE's swerve drive state"),
-              ("estimat", 4, "an estimate of the robot's pose"),
-              ("odometry", 3, "odometry"),
-              ("currentpose", 3, "the current pose"),
-              ("field/robot", 2, "Field2d's robot pose"),
-              ("robot", 1, "the robot"),
-              ("pose", 1, "a pose"))
-_POSE_BAD = ("setpoint", "target", "trajectory", "desired", "goal", "reference",
-             "commanded", "vision", "camera", "tag", "replayoutputs", "truth", "sim",
-             "ghost", "start", "initial", "reset")
-
-
-def pose_score(name: str) -> tuple[int, str]:
-    """How much a pose entry's name says it is the robot's own pose, and why."""
-    f = fold(name)
-    for w in _POSE_BAD:
-        if w in f:
-            return -10, f"its name says {w!r}: not the robot's measured pose"
-    for w, s, why in _POSE_GOOD:
-        if w in f:
-            return s, why
-    return 0, "no hint in the name"
-
-
-def _planar(rows: np.ndarray) -> np.ndarray:
-    """Pose3d struct rows (N, 7) ``[x, y, z, qw, qx, qy, qz]`` in the plane, (N, 3)
-    ``[x, y, θ]``: each unpacked as WPILib unpacks it (the quaternion normalised), then
-    its ``toPose2d()`` (x, y and the rotation about z)."""
-    build = catalog.BY_CLASS[Pose3d].build
-    assert build is not None
-    out = np.empty((len(rows), 3))
-    for i, row in enumerate(rows.tolist()):
-        p = build(*row).toPose2d()
-        out[i] = (p.getX(), p.getY(), p.getRotation().getRadians())
-    return out
-
-
-def _find_struct_pose(type_string: str, layout: str, units_text: str,
-                      planar: Callable[[np.ndarray], np.ndarray] | None
-                      ) -> Callable[[LogData, Options], list[Signal]]:
+def _later(module: str, name: str) -> Callable[[LogData, Options], list[Signal]]:
+    """A finder of ``_core/candidates.py`` (poses, gyros) or ``_core/modulelayouts.py``,
+    looked up when called: those modules build on this one's helpers."""
     def find(log: LogData, units: Options) -> list[Signal]:
-        out = []
-        for e in _live(log):
-            if e.type == type_string:
-                t, v = log.values(e.name)
-                why = pose_score(e.name)[1]
-                out.append(Signal("pose", t, v if planar is None else planar(v), (e.name,),
-                                  layout, units=units_text, why=why))
-        return out
-    return find
-
-
-def _find_field2d_pose(log: LogData, units: Options) -> list[Signal]:
-    out = []
-    for e in _live(log):
-        if e.type != "double[]":
-            continue
-        f = fold(e.name)
-        if not any(w in f for w in ("field", "pose", "robot")):
-            continue
-        try:
-            t, v = log.values(e.name)
-        except DataLogError:
-            continue
-        if v.ndim != 2 or v.shape[1] != 3:
-            continue
-        why = pose_score(e.name)[1]
-        P = v.copy()
-        P[:, 2] = np.radians(P[:, 2])
-        out.append(Signal("pose", t, P, (e.name,), "Field2d double[3]",
-                          units="m; deg (Field2d)", why=why))
-    return out
-
-
-def _deferred(name: str) -> Callable[[LogData, Options], list[Signal]]:
-    """A finder of _core/modulelayouts, which builds on this module's primitives."""
-    def find(log: LogData, units: Options) -> list[Signal]:
-        from drivekin._core import modulelayouts
-        return getattr(modulelayouts, name)(log, units)  # type: ignore[no-any-return]
+        found: list[Signal] = getattr(importlib.import_module(f"drivekin._core.{module}"),
+                                      name)(log, units)
+        return found
     return find
 
 
@@ -781,19 +659,19 @@ LAYOUTS: tuple[Layout, ...] = (
            "YAGSL's SmartDashboard telemetry (DataLogManager's NT mirror): "
            "swerve/modules/<name>/Raw Drive Encoder, Adjusted Absolute Encoder, module "
            "offsets from swerve/wheelLocation", "drive m; turn deg; offsets in",
-           _deferred("find_yagsl_positions")),
+           _later("modulelayouts", "find_yagsl_positions")),
     Layout("SysId routine", "positions",
            "WPILib SysIdRoutineLog: position-<motor> per module corner, paired with the "
            "robot's module angles", "from the entry's unit metadata (Meter, Rotation)",
-           _deferred("find_sysid_positions")),
+           _later("modulelayouts", "find_sysid_positions")),
     Layout("module velocity states", "positions",
            "module speeds without distances: per-module Drive Velocity with Steer/Angle "
            "entries, struct:SwerveModuleState[] measured states; integrated",
            "from the suffix (Feet: ft/s), the metadata or --drive-units m/s|ft/s",
-           _deferred("find_state_velocities")),
+           _later("modulelayouts", "find_state_velocities")),
     Layout("module velocity states", "positions",
            "one struct:SwerveModuleState per corner (ActualFrontLeftModuleState, ...); "
-           "integrated", "m/s; rad", _deferred("find_corner_states")),
+           "integrated", "m/s; rad", _later("modulelayouts", "find_corner_states")),
     Layout("left/right doubles", "positions", "differential drives: LeftPosition, "
            "RightPosition", "m unless the suffix or --drive-units says otherwise",
            _find_side_positions),
@@ -804,22 +682,29 @@ LAYOUTS: tuple[Layout, ...] = (
     Layout("AdvantageKit high-rate odometry", "gyro",
            "AdvantageKit / robotpy-pykit OdometryYawPositions + OdometryYawTimestamps",
            "Rotation2d; timestamps s", _find_high_gyro),
-    Layout("YAGSL telemetry", "gyro", "YAGSL's swerve/imu/raw", "deg",
-           _deferred("find_yagsl_gyro")),
     Layout("Rotation2d", "gyro", "struct:Rotation2d entries (AdvantageKit YawPosition)",
-           "rad", _find_struct_gyro),
-    Layout("double", "gyro", "double entries named gyro, yaw, heading, ...",
-           "from the suffix, the metadata or --gyro-units", _find_double_gyro),
+           "rad", _later("candidates", "find_struct_gyro")),
+    Layout("double", "gyro", "double entries named gyro, imu, pigeon, navX, yaw, heading, "
+           "robot angle (YAGSL swerve/imu/raw; a SmartDashboard Gyro widget's Value)",
+           "from the suffix, the metadata or --gyro-units (YAGSL and Gyro widgets: deg)",
+           _later("candidates", "find_double_gyro")),
     Layout("CTRE DriveState", "pose", "CTRE's NT:/DriveState/Pose with DriveState/Timestamp",
            "m; rad; timestamps s", _find_ctre_pose),
     Layout("Pose2d", "pose", "struct:Pose2d entries (AdvantageKit Odometry/Robot, CTRE "
            "DriveState/Pose, PathPlanner currentPose)", "m; rad",
-           _find_struct_pose("struct:Pose2d", "Pose2d", "m; rad", None)),
+           _later("candidates", "find_pose2d")),
     Layout("Pose3d", "pose", "struct:Pose3d entries (a 3-D pose estimate), compared in the "
            "plane", "m; rad (x, y and yaw: toPose2d)",
-           _find_struct_pose("struct:Pose3d", "Pose3d", "m; rad (toPose2d)", _planar)),
+           _later("candidates", "find_pose3d")),
+    Layout("three doubles", "pose", "a pose as three doubles: X, Y and Angle / Heading / "
+           "Rotation (/Pose/RobotPoseX, ...; Drive/X, Drive/Y, Drive/Heading)",
+           "m; the angle's unit from its name or metadata, else deg beyond ±π, else rad",
+           _later("candidates", "find_double_pose")),
+    Layout("Pose2d string", "pose", "a string entry holding WPILib's Pose2d.toString() "
+           "(Java, robotpy) or x,y,θ", "m; rad (x,y,θ text: as three doubles)",
+           _later("candidates", "find_string_pose")),
     Layout("Field2d double[3]", "pose", "SmartDashboard Field2d (legacy double[3])",
-           "m; deg", _find_field2d_pose),
+           "m; deg", _later("candidates", "find_field2d_pose")),
 )
 
 

@@ -329,20 +329,6 @@ def find_yagsl_positions(log: LogData, units: Options) -> list[Signal]:
     return out
 
 
-def find_yagsl_gyro(log: LogData, units: Options) -> list[Signal]:
-    out = []
-    for e in L._live(log):
-        parts = e.name.split("/")
-        if (len(parts) >= 3 and fold(parts[-1]) == "raw" and fold(parts[-2]) == "imu"
-                and fold(parts[-3]) == "swerve" and e.type in ("double", "float")):
-            u = units.gyro or L.unit_of("", e.metadata) or "deg"
-            t, v = log.values(e.name)
-            out.append(Signal("gyro", t, v * L.angle_scale(u), (e.name,), "YAGSL telemetry",
-                              units=f"{u} (YAGSL publishes degrees)",
-                              why="YAGSL's odometry gyro (swerve/imu/raw)"))
-    return out
-
-
 # --------------------------------------------------------------------------------------
 # WPILib SysId routine logs: position-<motor>, velocity-<motor>, voltage-<motor>
 

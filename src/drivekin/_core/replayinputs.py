@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Any
 from drivekin._core import catalog
 from drivekin._core import loglayouts as layouts
 from drivekin._core import modulelayouts
+from drivekin._core.candidates import gyro_rank, gyro_rejected, pose_rank, pose_score
 from drivekin._core.loglayouts import Signal
 from drivekin.datalog import DataLogError, LogData
 
@@ -135,10 +136,13 @@ def _named_array(log: LogData, name: str, want: str, ragged: str) -> Signal:
     return Signal("positions", t, v, (info.name,), "double[]", kind, "m")
 
 
-def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Signal,
-          pose: Signal | None) -> tuple[Signal, str]:
+def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Signal | None,
+          pose: Signal | None, cands: list[Signal] | None = None) -> tuple[Signal, str]:
+    """The gyro signal and why (``cands``: the log's gyro candidates, when known;
+    ``positions`` None: the choice ``--list`` shows for a log without positions)."""
     problems: list[DataLogError] = []
-    cands = layouts.candidates(log, "gyro", units, problems)
+    if cands is None:
+        cands = layouts.candidates(log, "gyro", units, problems)
     if cfg.gyro is not None:
         info = layouts.resolve(log, cfg.gyro, "--gyro")
         hits = [s for s in cands if info.name in s.entries]
@@ -155,12 +159,14 @@ def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Si
                                f"double (with --gyro-units)")
         chosen, why = hits[0], "named with --gyro"
     else:
-        if positions.highRate:
+        if positions is not None and positions.highRate:
             high = [s for s in cands if s.highRate]
             if high:
                 cands = high
         else:
             cands = [s for s in cands if not s.highRate]
+        brief = [s for s in cands if not gyro_rank(s, positions)[0]]
+        cands = [s for s in cands if gyro_rank(s, positions)[0]]
         named = [s for s in cands if s.why]
         if not cands and problems:
             raise problems[0]
@@ -173,39 +179,57 @@ def _gyro(log: LogData, cfg: ReplayConfig, units: layouts.Options, positions: Si
                     "no gyro in the log: the logged pose's heading stands in for it, so "
                     "only the translation is replayed independently")
         if not cands:
-            raise DataLogError("no gyro entry (struct:Rotation2d, or a double named gyro, "
-                               "yaw or heading); name one with --gyro")
+            raise DataLogError(_no_gyro(log, brief))
         chosen, why = _choose(named or cands, "gyro", "--gyro",
-                              lambda s: (s.layout != "double") + 0)
+                              lambda s: gyro_rank(s, positions))
     if not chosen.units:
         raise DataLogError(f"gyro entry {chosen.source!r} is a plain number with no units "
                            f"in its name or metadata: give --gyro-units deg, rad or rot")
     return chosen, why
 
 
-def _pose(log: LogData, cfg: ReplayConfig, units: layouts.Options, exclude: set[str]
-          ) -> tuple[Signal | None, str]:
-    cands = [s for s in layouts.candidates(log, "pose", units)
-             if not exclude & set(s.entries)]
+def _no_gyro(log: LogData, brief: list[Signal]) -> str:
+    """What the log lacks when no gyro candidate is continuous."""
+    said = [n for n in log.entries if gyro_rejected(n) is not None
+            and log.entries[n].records > 0]
+    parts = []
+    if brief:
+        parts.append(f"{len(brief)} with fewer than 10 records or spanning under 1 s "
+                     f"({', '.join(s.source for s in brief[:3])}"
+                     f"{', ...' if len(brief) > 3 else ''})")
+    if said:
+        parts.append(f"{len(said)} named as something else ({', '.join(said[:3])}"
+                     f"{', ...' if len(said) > 3 else ''})")
+    return (f"no continuous gyro{': ' + '; '.join(parts) if parts else ''} "
+            f"(struct:Rotation2d, or a double named gyro, imu, yaw, heading or robot "
+            f"angle); name one with --gyro")
+
+
+_POSE_TYPES = ("struct:Pose2d, struct:Pose3d, a Field2d double[3], one of three pose doubles "
+               "(X, Y, Angle) or a Pose2d string")
+
+
+def _pose(log: LogData, cfg: ReplayConfig, units: layouts.Options, exclude: set[str],
+          cands: list[Signal] | None = None) -> tuple[Signal | None, str]:
+    """The logged pose and why (``cands``: the log's pose candidates, when known)."""
+    if cands is None:
+        cands = layouts.candidates(log, "pose", units)
+    cands = [s for s in cands if not exclude & set(s.entries)]
     if cfg.pose is not None:
         info = layouts.resolve(log, cfg.pose, "--pose")
         hits = [s for s in cands if info.name in s.entries]
         if not hits:
             raise DataLogError(f"--pose {info.name!r} has type {info.type}, expected "
-                               f"struct:Pose2d, struct:Pose3d or a Field2d double[3]")
+                               f"{_POSE_TYPES}")
         return hits[0], "named with --pose"
-    usable = [s for s in cands if layouts.pose_score(s.entries[0])[0] > -10]
+    usable = [s for s in cands if pose_score(s.entries[0])[0] > -10]
     if not usable:
         return None, ("no pose entry" if not cands else
                       f"none of {', '.join(s.source for s in cands)} is the robot's pose "
                       f"(name one with --pose)")
-    # On equal names: CTRE's clock over its Pose2d read plainly, a 2-D pose over a 3-D
-    # one (both the robot's own, the replay is planar).
-    chosen, why = _choose(usable, "pose", "--pose",
-                          lambda s: (layouts.pose_score(s.entries[0])[0],
-                                     s.layout == "CTRE DriveState", s.layout != "Pose3d"))
-    rejected = [f"{s.source} ({layouts.pose_score(s.entries[0])[1].split(':')[0]})"
-                for s in cands if layouts.pose_score(s.entries[0])[0] <= -10]
+    chosen, why = _choose(usable, "pose", "--pose", pose_rank)
+    rejected = [f"{s.source} ({pose_score(s.entries[0])[1].split(':')[0]})"
+                for s in cands if pose_score(s.entries[0])[0] <= -10]
     if rejected:
         why += "; not " + ", ".join(rejected[:3])
     return chosen, why
@@ -217,4 +241,4 @@ def _named_pose(log: LogData, name: str, option: str, opts: layouts.Options) -> 
         if info.name in s.entries:
             return s
     raise DataLogError(f"{option} {info.name!r} has type {info.type}, expected "
-                       f"struct:Pose2d, struct:Pose3d or a Field2d double[3]")
+                       f"{_POSE_TYPES}")

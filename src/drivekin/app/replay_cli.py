@@ -187,8 +187,11 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--force", action="store_true",
                    help="overwrite outputs that exist (default: stop before replaying)")
     p.add_argument("--list", action="store_true",
-                   help="list every entry of each log (type, records, rate and what replay "
-                        "would use it for) and replay nothing")
+                   help="list each log's drivetrain candidates (positions, gyro, pose), "
+                        "ranked, with why and the one replay would use, in at most 60 "
+                        "lines, and replay nothing")
+    p.add_argument("--all", action="store_true",
+                   help="with --list: every entry, not only the candidates")
     p.add_argument("--plot", action="store_true",
                    help='draw LOG-replay.png (needs matplotlib: pip install "drivekin[plot]")')
     p.add_argument("--json", action="store_true",
@@ -236,7 +239,7 @@ def main(argv) -> int:
                 if results:
                     print()
                 results.append(path)
-                emit(replay.listing(log, config))
+                emit(replay.listing(log, config, showAll=args.all))
                 continue
             stem = os.path.splitext(os.path.basename(path))[0]
             folder = args.out_dir if args.out_dir is not None else (os.path.dirname(path) or ".")
