@@ -465,12 +465,13 @@ def find_corner_states(log: LogData, units: Options) -> list[Signal]:
             if len(corner) > 2 and corner in f:
                 groups.setdefault(head + "/" + f.replace(corner, "*"), {})[idx] = e
                 break
-    out = []
-    for key, corners in groups.items():
+    out, lacking = [], []
+    for corners in groups.values():
         if len(corners) < 4:
             if len(corners) >= 2:
+                names = ", ".join(e.name for _, e in sorted(corners.items()))
                 labels = [L.CORNER_NAMES[i] for i in corners]
-                raise DataLogError(f"module states {key}: {missing_corners(labels)}")
+                lacking.append(f"module states {names}: {missing_corners(labels)}")
             continue
         series = [log.values(corners[i].name) for i in range(4)]
         start = max(int(ts[0]) for ts, _ in series)
@@ -485,4 +486,6 @@ def find_corner_states(log: LogData, units: Options) -> list[Signal]:
                           "speed m/s, angle rad (SwerveModuleState)", integrated=True,
                           batched=True,
                           why="integrated from measured module states, one per corner"))
+    if lacking and not out:
+        raise DataLogError("; ".join(lacking))
     return out
