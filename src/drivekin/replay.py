@@ -748,3 +748,30 @@ def report(result: ReplayResult, outputs: tuple[str, ...] = ()) -> str:
     if outputs:
         rows.append(f"  wrote      {', '.join(outputs)}")
     return "\n".join(rows)
+
+
+# ---------------------------------------------------------------------------------------
+# Replaying a result again with corrected samples (drivekin.calibrate's one public hook)
+
+def replayAgain(result: ReplayResult, positions: np.ndarray, gyroAngles: np.ndarray,
+                compare: str | None = "hold", kinematics: Any = None) -> ReplayResult:
+    """``result`` replayed again, without reading its log, from its start pose on other
+    (corrected) wheel samples and gyro angles, of the shapes of ``result.positions`` and
+    ``result.gyroAngles`` (rad, unwrapped), with ``kinematics`` (default: the result's
+    geometry), and compared with its logged pose and truth as :func:`replayLog` compares
+    (``compare``: "hold" or "interpolate"; None: not compared). A new
+    :class:`ReplayResult`; ``result`` is unchanged."""
+    P = np.ascontiguousarray(positions, dtype=np.float64)
+    g = np.ascontiguousarray(gyroAngles, dtype=np.float64)
+    if result.positions is None or P.shape != result.positions.shape or \
+            g.shape != result.t.shape:
+        raise ValueError("positions and gyroAngles must have the shapes of the result's")
+    kin = result.kinematics if kinematics is None else kinematics
+    poses = _run(result.drivetrain, kin, g, P, result.start or Pose2d())
+    out = dataclasses.replace(result, poses=poses, positions=P, gyroAngles=g,
+                              kinematics=kin, vsLogged=None, vsTruth=None)
+    if compare is not None and result.logged is not None:
+        out.vsLogged = _drift(result.t, poses, result.logged[0], result.logged[1], compare)
+    if compare is not None and result.truth is not None and len(result.truth[0]):
+        out.vsTruth = _drift(result.t, poses, result.truth[0], result.truth[1], compare)
+    return out
