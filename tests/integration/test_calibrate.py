@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import math
+import sys
 
 import numpy as np
 import pytest
@@ -155,6 +156,36 @@ def test_intervals_cover_the_truth_about_95_percent_of_the_time(tmp_path, kind, 
         assert 0.88 <= rate <= 1.0, f"{name}: {rate:.1%} of {len(h)} true values inside"
 
 
+# ---- ordinary driving: arcs, no spin ---------------------------------------------------
+
+ARC_SCALE = 1 / 0.97        # encoders reading 3 % short: logged distance × scale = true
+
+
+@pytest.mark.parametrize("writer", cl.WRITERS)
+@pytest.mark.parametrize("kind", ["swerve", "mecanum", "differential"])
+def test_wheel_scale_from_ordinary_driving(tmp_path, kind, writer):
+    # Six arcs, each turning 3.5 rad in 3 s, left and right; never a spin in place.
+    sim = cl.write_calibration_log(tmp_path / "arcs.wpilog", kind, manoeuvres=("arcs",) * 3,
+                                   wheel_scale=ARC_SCALE, writer=writer, log_pose=False)
+    res = calibrate.calibrate(sim.path, sim.config())
+    assert {w.kind for w in res.windows if w.used} == {"turn"}
+    p = res.parameters["wheelRadiusScale"]
+    if kind == "differential":
+        # From the gyro alone a differential drive's wheel scale and trackwidth are not
+        # separable: the trackwidth found is the one of the logged distances, W / scale.
+        assert not p.determined and "not separable" in p.why
+        tw = res.parameters["trackwidth"]
+        assert tw.determined and abs(tw.value - sim.truth["trackwidth"] / ARC_SCALE) <= \
+            tw.uncertainty
+        return
+    assert p.determined and "turning" in p.why and "one factor" in p.why
+    assert _inside(p, sim.truth["wheelRadiusScale"]).all()
+    assert max(p.uncertainty) < 0.002 * ARC_SCALE
+    # Replayed with it, the robot follows its true path about as well as with the truth.
+    fitted = cl.replay_drift(sim, {"wheelRadiusScale": p.value})["rms"]
+    assert fitted < 0.05 * cl.replay_drift(sim)["rms"]
+
+
 # ---- refusing to guess ----------------------------------------------------------------
 
 def test_a_differential_drive_needs_a_reference_for_its_wheel_scale(tmp_path):
@@ -175,12 +206,6 @@ def test_steer_offsets_need_straight_driving(tmp_path):
     assert res.parameters["wheelRadiusScale"].determined
 
 
-def test_wheel_scales_need_a_spin(tmp_path):
-    sim = _sim(tmp_path, "mecanum", manoeuvres=("straight", "turn"))
-    p = _calibrate(sim, False).parameters["wheelRadiusScale"]
-    assert not p.determined and "spin in place" in p.why
-
-
 def test_windows_say_why_they_were_rejected(tmp_path):
     sim = _sim(tmp_path, "swerve", manoeuvres=("spin", (0.3, 2.0, 0.0, 0.0), "straight"))
     res = _calibrate(sim, False)
@@ -190,6 +215,20 @@ def test_windows_say_why_they_were_rejected(tmp_path):
 
 
 # ---- the command line -----------------------------------------------------------------
+
+def test_each_log_is_replayed_once(tmp_path, monkeypatch):
+    from drivekin import replay
+
+    calls = []
+    real = replay.replayLog
+    monkeypatch.setattr(replay, "replayLog", lambda *a, **k: calls.append(a) or real(*a, **k))
+    sims = [cl.write_calibration_log(tmp_path / f"{i}.wpilog", "mecanum", seed=i,
+                                     reference="pose") for i in range(2)]
+    res = calibrate.calibrate([s.path for s in sims],
+                              sims[0].config(truth=sims[0].entries["reference"]))
+    assert len(calls) == 2
+    assert res.after[0] is not None and res.after[0].maxPosition < res.before[0].maxPosition
+
 
 def _run(capsys, *argv):
     code = cli.main(["calibrate", *map(str, argv)])
@@ -268,6 +307,23 @@ def test_cli_refuses_logs_it_cannot_calibrate(tmp_path, capsys, make, message):
     assert lines[-1].startswith("python -m drivekin calibrate: error: ")
     assert message in lines[-1] and "Traceback" not in err
     assert not out_json.exists() and out == ""
+
+
+def test_cli_list_is_replays_listing(tmp_path, capsys):
+    sim = _sim(tmp_path, "swerve")
+    code, listed, _ = _run(capsys, sim.path, "--list")
+    assert code == 0
+    assert cli.main(["replay", str(sim.path), "--list"]) == 0
+    assert listed == capsys.readouterr().out and sim.entries["positions"] in listed
+
+
+def test_cli_without_scipy_is_one_error_line(tmp_path, capsys, monkeypatch):
+    sim = _sim(tmp_path, "swerve")
+    monkeypatch.setitem(sys.modules, "scipy", None)       # import scipy fails
+    code, out, err = _run(capsys, sim.path)
+    assert code == 1 and out == ""
+    assert err.splitlines() == ['python -m drivekin calibrate: error: calibrate needs scipy: '
+                                'pip install "drivekin[calibrate]"']
 
 
 def test_cli_refuses_geometry_that_contradicts_the_log(tmp_path, capsys):
