@@ -117,6 +117,7 @@ pose is computed from the noisy readings.
 """
 from __future__ import annotations
 
+import functools
 import json
 import math
 import os
@@ -311,6 +312,35 @@ class _Motion:
 
     def pose(self) -> np.ndarray:
         return np.stack([self.x, self.y, self.theta], axis=1)
+
+
+@functools.lru_cache(maxsize=4)
+def _motion(moves: tuple[_Move, ...], duration: float | None) -> _Motion:
+    """The true motion of ``moves`` (shared by the logs of one test, which differ in
+    noise and parameters only: read, never written)."""
+    mo = _Motion(list(moves), duration)
+    for a in (mo.t, mo.omega, mo.theta, mo.vx, mo.vy, mo.x, mo.y):
+        a.setflags(write=False)
+    return mo
+
+
+@functools.lru_cache(maxsize=4)
+def _true_wheels(moves: tuple[_Move, ...], duration: float | None, kind: str,
+                 geometry) -> tuple[np.ndarray, np.ndarray | None]:
+    """The true wheel travel (and swerve module angles) of ``moves`` on the fine grid."""
+    mo = _motion(moves, duration)
+    angle = None
+    if kind == "swerve":
+        travel, angle = _swerve_modules(mo, geometry)
+        angle.setflags(write=False)
+    elif kind == "mecanum":
+        travel = _linear_travel(mo, _mecanum_matrix(geometry))
+    elif kind == "differential":
+        travel = _linear_travel(mo, [[1.0, 0.0, -geometry / 2], [1.0, 0.0, geometry / 2]])
+    else:
+        travel = _linear_travel(mo, _deadwheel_matrix(geometry))
+    travel.setflags(write=False)
+    return travel, angle
 
 
 def _swerve_modules(mo: _Motion, modules) -> tuple[np.ndarray, np.ndarray]:
@@ -706,7 +736,7 @@ def write_calibration_log(
                       else ("spin", "straight", "turn", "strafe"))
     moves = [mv for m in manoeuvres
              for mv in _moves(m, kind, spin_rate, spin_turns, speed, straight_s)]
-    mo = _Motion(moves, duration)
+    mo = _motion(tuple(moves), duration)
 
     # geometry and parameters
     truth: dict[str, Any] = {}
@@ -743,15 +773,9 @@ def write_calibration_log(
         raise ValueError("steer_offsets apply to swerve only")
 
     # true sensor values on the fine grid
-    angle = None
-    if kind == "swerve":
-        travel, angle = _swerve_modules(mo, modules)
-    elif kind == "mecanum":
-        travel = _linear_travel(mo, _mecanum_matrix(modules))
-    elif kind == "differential":
-        travel = _linear_travel(mo, [[1.0, 0.0, -tw / 2], [1.0, 0.0, tw / 2]])
-    else:
-        travel = _linear_travel(mo, _deadwheel_matrix(true_dw))
+    geometry = (tuple(map(tuple, modules)) if kind in ("swerve", "mecanum") else
+                tw if kind == "differential" else tuple(true_dw))
+    travel, angle = _true_wheels(tuple(moves), duration, kind, geometry)
 
     # samples
     step = 4000 // rate_hz

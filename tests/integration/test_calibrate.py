@@ -131,19 +131,27 @@ def test_the_wrong_values_are_corrected(tmp_path):
 
 # ---- coverage: honest 95 % intervals -------------------------------------------------
 
-COVERAGE = [("swerve", False), ("swerve", True), ("differential", True), ("mecanum", True),
-            ("deadwheel", False)]
+# (kind, reference, manoeuvres): without a reference, only the manoeuvres the estimates
+# use (shorter logs). No robot pose is logged: the estimates compare the replay's relative
+# motion and heading changes with the reference's, whatever pose the replay starts from.
+COVERAGE = [("swerve", False, ("spin", "straight")), ("swerve", True, None),
+            ("differential", True, None), ("mecanum", True, None),
+            ("deadwheel", False, ("spin",)), ("mecanum", False, ("arcs",) * 3)]
 
 
-@pytest.mark.parametrize("kind, reference", COVERAGE,
+@pytest.mark.parametrize("kind, reference, manoeuvres", COVERAGE,
                          ids=[f"{k}-{'reference' if r else 'no-reference'}"
-                              for k, r in COVERAGE])
-def test_intervals_cover_the_truth_about_95_percent_of_the_time(tmp_path, kind, reference):
+                              + ("-arcs" if m and "arcs" in m else "")
+                              for k, r, m in COVERAGE])
+def test_intervals_cover_the_truth_about_95_percent_of_the_time(tmp_path, kind, reference,
+                                                                manoeuvres):
     seeds = 40
     hits: dict[str, list[bool]] = {}
+    kw = {**_kw(kind, reference), **({"wheel_scale": ARC_SCALE} if manoeuvres and
+                                     "arcs" in manoeuvres else {})}
     for seed in range(seeds):
         sim = _sim(tmp_path, kind, seed=seed + 100, reference=reference,
-                   **_kw(kind, reference))
+                   manoeuvres=manoeuvres, log_pose=False, **kw)
         res = _calibrate(sim, reference)
         for name, p in res.parameters.items():
             if p.determined and name != "deadWheelPoses":
