@@ -17,9 +17,15 @@ units and geometry options), with no corrections. Then:
 
    - ``wheelRadiusScale`` (swerve, mecanum; true radius / the radius the robot used, per
      module): spinning in place, module i rolls k_i·ψ, k_i its distance per radian of
-     robot rotation in the configured geometry (the distance from the centre, for a swerve module), so its logged
-     distance is k_i·ψ / scale_i (Team 6328's wheel-radius characterization, per module).
-     It assumes the gyro and the module positions are right.
+     robot rotation in the configured geometry (the distance from the centre, for a
+     swerve module), so its logged distance is k_i·ψ / scale_i (Team 6328's wheel-radius
+     characterization, per module). Without a usable spin, every turning window gives
+     the wheels' common scale: the rotation the wheels imply through the configured
+     geometry (forward kinematics) is 1 / scale of the gyro's, one slope through the
+     origin over disjoint intervals of at least ``INTERVAL`` s (independent noise), its
+     interval from their residuals (heteroskedasticity-robust). Both assume the gyro and
+     the module positions (and, turning while driving, a swerve's steer angles) are
+     right.
    - ``trackwidth`` (differential, effective, m): (right − left) = W·ψ over every window
      that turns (WPILib SysId's trackwidth analysis, as a regression). It assumes the
      logged wheel distances are right: from the gyro alone, a differential drive's wheel
@@ -56,7 +62,8 @@ units and geometry options), with no corrections. Then:
    side, and its trackwidth then follows from the turning windows. Dead wheels are
    regressed on the reference's motion directly.
 4. **Drift before and after**: the replay as configured and with the fitted values
-   against the reference (without one, drift is not measured: the logged pose is the
+   (the replay's own samples corrected, :func:`drivekin.replay.replayAgain`: each log is
+   read and replayed once) against the reference (without one, drift is not measured: the logged pose is the
    robot's own odometry, made with the geometry being corrected), and the ``replay``
    command line that applies the fitted values.
 
@@ -64,6 +71,10 @@ Intervals: ``uncertainty`` is the half-width of the 95 % interval. The tests mea
 often it holds the true value over 40 noisy simulated logs per case (94–96 % for the
 window estimates and the joint fits; a differential trackwidth fitted with its wheel
 scales is conservative, its terms added in quadrature).
+
+Each drivetrain's parameters, window estimates, joint-fit parameters and corrections
+are its calibration model (``drivekin._core.calibrationmodels``, found by
+``model_for``); calibrate never compares drivetrain names.
 
 A parameter the logs cannot determine is reported ``determined=False`` with the
 manoeuvre or reference that would determine it. scipy is an optional extra

@@ -77,8 +77,8 @@ class _Holonomic(CalibrationModel):
     """Swerve and mecanum: the wheels imply a rotation through the configured geometry,
     so a turn against the gyro gives their common scale; a spin in place gives each's."""
 
-    windowEstimates = ("wheelRadiusScale",)
-    jointCommon = ("wheelRadiusScale",)
+    windowEstimates: tuple[str, ...] = ("wheelRadiusScale",)
+    jointCommon: tuple[str, ...] = ("wheelRadiusScale",)
 
     def matrix(self, kin: Any) -> np.ndarray:
         """Inverse kinematics: the wheel increments of (dx, dy, dθ), one row each."""
