@@ -210,10 +210,9 @@ def _options_text(opts: dict[str, Any]) -> list[str]:
         if k == "dead-wheel":                       # repeated: X,Y,DEG per wheel
             for w in v:
                 out += [f"--{k}={','.join(f'{x:.6g}' for x in w)}"]
-        elif isinstance(v, (list, tuple)):
-            out += [f"--{k}", ",".join(f"{x:.6g}" for x in v)]
         else:
-            out += [f"--{k}", f"{v:.6g}"]
+            # Attached with '=': a value starting with '-' would read as an option.
+            out += [f"--{k}=" + ",".join(f"{x:.6g}" for x in np.atleast_1d(v))]
     return out
 
 

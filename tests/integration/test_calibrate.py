@@ -245,7 +245,8 @@ def _run(capsys, *argv):
 
 
 def test_cli_json_and_replay_command(tmp_path, capsys):
-    sim = _sim(tmp_path, "swerve", reference=True)
+    # The first steer offset negative: the printed command must still parse.
+    sim = _sim(tmp_path, "swerve", reference=True, steer_offsets=[-0.05, 0.03, 0.02, 0.0])
     out_json = tmp_path / "fit.json"
     code, out, err = _run(capsys, sim.path, "--truth", sim.entries["reference"], "--json",
                           out_json)
@@ -260,6 +261,7 @@ def test_cli_json_and_replay_command(tmp_path, capsys):
     # The printed replay command reproduces the fitted drift.
     command = data["replay_command"].split()
     assert command[:4] == ["python", "-m", "drivekin", "replay"]
+    assert any(a.startswith("--steer-offsets=-") for a in command)
     code = cli.main(command[3:] + ["--truth", sim.entries["reference"], "--no-write",
                                    "--json"])
     replayed, _ = capsys.readouterr()
