@@ -17,9 +17,15 @@ units and geometry options), with no corrections. Then:
 
    - ``wheelRadiusScale`` (swerve, mecanum; true radius / the radius the robot used, per
      module): spinning in place, module i rolls k_i·ψ, k_i its distance per radian of
-     robot rotation in the configured geometry (the distance from the centre, for a swerve module), so its logged
-     distance is k_i·ψ / scale_i (Team 6328's wheel-radius characterization, per module).
-     It assumes the gyro and the module positions are right.
+     robot rotation in the configured geometry (the distance from the centre, for a
+     swerve module), so its logged distance is k_i·ψ / scale_i (Team 6328's wheel-radius
+     characterization, per module). Without a usable spin, every turning window gives
+     the wheels' common scale: the rotation the wheels imply through the configured
+     geometry (forward kinematics) is 1 / scale of the gyro's, one slope through the
+     origin over disjoint intervals of at least ``INTERVAL`` s (independent noise), its
+     interval from their residuals (heteroskedasticity-robust). Both assume the gyro and
+     the module positions (and, turning while driving, a swerve's steer angles) are
+     right.
    - ``trackwidth`` (differential, effective, m): (right − left) = W·ψ over every window
      that turns (WPILib SysId's trackwidth analysis, as a regression). It assumes the
      logged wheel distances are right: from the gyro alone, a differential drive's wheel
@@ -56,7 +62,8 @@ units and geometry options), with no corrections. Then:
    side, and its trackwidth then follows from the turning windows. Dead wheels are
    regressed on the reference's motion directly.
 4. **Drift before and after**: the replay as configured and with the fitted values
-   against the reference (without one, drift is not measured: the logged pose is the
+   (the replay's own samples corrected, :func:`drivekin.replay.replayAgain`: each log is
+   read and replayed once) against the reference (without one, drift is not measured: the logged pose is the
    robot's own odometry, made with the geometry being corrected), and the ``replay``
    command line that applies the fitted values.
 
@@ -64,6 +71,10 @@ Intervals: ``uncertainty`` is the half-width of the 95 % interval. The tests mea
 often it holds the true value over 40 noisy simulated logs per case (94–96 % for the
 window estimates and the joint fits; a differential trackwidth fitted with its wheel
 scales is conservative, its terms added in quadrature).
+
+Each drivetrain's parameters, window estimates, joint-fit parameters and corrections
+are its calibration model (``drivekin._core.calibrationmodels``, found by
+``model_for``); calibrate never compares drivetrain names.
 
 A parameter the logs cannot determine is reported ``determined=False`` with the
 manoeuvre or reference that would determine it. scipy is an optional extra
@@ -81,7 +92,9 @@ import numpy as np
 
 from drivekin import datalog, replay
 from drivekin._core.calibrationfit import (  # noqa: F401 (CONFIDENCE: calibrate's, as before)
-    CONFIDENCE, INTERVAL, _joint_fit, _pairs, _relative, _scipy, _slope, _t95, _twist)
+    CONFIDENCE, INTERVAL, _joint_fit, _origin_slope, _pairs, _relative, _scipy, _slope, _t95,
+    _twist)
+from drivekin._core.calibrationmodels import CalibrationModel, model_for
 from drivekin._core.plotting import pyplot
 from drivekin.datalog import DataLogError, LogData
 from drivekin.geometry import Pose2d
@@ -99,7 +112,6 @@ TURN_RATE = 0.3        # rad/s, a turning window's least rate
 TRIM = 0.25            # s cut from both ends of a window
 MIN_WINDOW = 1.0       # s
 MIN_TURN = 1.0         # rad a spin or turn window must turn
-TANGENT_TOLERANCE = math.radians(15.0)   # a spinning swerve module this far off tangent
 
 _KINDS = ("spin", "straight", "turn")
 
@@ -198,10 +210,9 @@ def _options_text(opts: dict[str, Any]) -> list[str]:
         if k == "dead-wheel":                       # repeated: X,Y,DEG per wheel
             for w in v:
                 out += [f"--{k}={','.join(f'{x:.6g}' for x in w)}"]
-        elif isinstance(v, (list, tuple)):
-            out += [f"--{k}", ",".join(f"{x:.6g}" for x in v)]
         else:
-            out += [f"--{k}", f"{v:.6g}"]
+            # Attached with '=': a value starting with '-' would read as an option.
+            out += [f"--{k}=" + ",".join(f"{x:.6g}" for x in np.atleast_1d(v))]
     return out
 
 
@@ -276,16 +287,6 @@ class _Log:
         return [s for k, s, w in self.windows if w.used and k in kinds]
 
 
-def _per_rad(kind: str, kin: Any) -> np.ndarray:
-    """Each wheel's distance per radian of robot rotation in the configured geometry
-    (swerve: the module's distance from the centre; mecanum: inverse kinematics of ω = 1)."""
-    if kind == "swerve":
-        return np.array([m.getNorm() for m in kin.getModules()])
-    from drivekin.chassis import ChassisVelocities
-    w = kin.toWheelVelocities(ChassisVelocities(0.0, 0.0, 1.0))
-    return np.array([w.frontLeft, w.frontRight, w.rearLeft, w.rearRight])
-
-
 def _gyro_scale(logs: list[_Log]) -> Parameter:
     if not any(lg.ref is not None for lg in logs):
         return Parameter("gyroScale", None, None, False,
@@ -310,57 +311,94 @@ def _gyro_scale(logs: list[_Log]) -> Parameter:
                      f"reference heading against the gyro over {turned:.1f} rad")
 
 
-def _spin_scales(logs: list[_Log], kind: str, gyro: float) -> Parameter:
-    """wheelRadiusScale of swerve modules or mecanum wheels from the spin windows."""
+def _wheel_scales(logs: list[_Log], model: CalibrationModel, gyro: float) -> list[Parameter]:
+    """wheelRadiusScale: each wheel's from the spin windows; without one, the wheels'
+    common factor from the turning windows."""
+    if any(lg.used("spin") for lg in logs):
+        return [_spin_scales(logs, model, gyro)]
+    return [_turn_scale(logs, model, gyro)]
+
+
+def _spin_scales(logs: list[_Log], model: CalibrationModel, gyro: float) -> Parameter:
+    """Each wheel's distance against the gyro's heading while spinning in place: it rolls
+    k·ψ / scale, k its distance per radian of robot rotation in the configured geometry."""
     r0 = logs[0].r
     width = r0.positions.shape[1]
-    k = _per_rad(kind, r0.kinematics)
+    k = model.per_rad(r0.kinematics)
     values, errs, notes = [], [], []
     spins = sum(len(lg.used("spin")) for lg in logs)
-    if spins == 0:
-        return Parameter("wheelRadiusScale", None, None, False,
-                         "no usable spin-in-place window: spin in place for 3 turns")
     for i in range(width):
         xs, ys = [], []
         skipped = 0
         for lg in logs:
             for s in lg.used("spin"):
-                P = lg.r.positions[s]
-                if kind == "swerve":
-                    d, a = P[:, i, 0], P[:, i, 1]
-                    x, y = (m := lg.r.kinematics.getModules()[i]).getX(), m.getY()
-                    tangent = math.atan2(x, -y)
-                    dev = np.angle(np.exp(2j * (a - tangent))) / 2   # mod π
-                    if abs(float(np.mean(dev))) > TANGENT_TOLERANCE:
-                        skipped += 1
-                        continue
-                else:
-                    d = P[:, i]
+                d = model.spin_distances(lg.r, s, i)
+                if d is None:
+                    skipped += 1
+                    continue
                 xs.append(lg.r.gyroAngles[s] * gyro)
                 ys.append(d)
         if not xs:
             values.append(float("nan"))
             errs.append(float("nan"))
-            notes.append(f"module {i}: never tangent while spinning")
+            notes.append(f"{model.wheel} {i}: never tangent while spinning")
             continue
         b, se, dof = _slope(xs, ys)
         if not (abs(b) > 0 and math.isfinite(b)):
             values.append(float("nan"))
             errs.append(float("nan"))
-            notes.append(f"wheel {i} did not roll while spinning")
+            notes.append(f"{model.wheel} {i} did not roll while spinning")
             continue
         values.append(abs(k[i] / b))
         errs.append(abs(k[i]) * _t95(dof) * se / b ** 2)
         if skipped:
-            notes.append(f"module {i}: {skipped} window(s) skipped (not tangent)")
+            notes.append(f"{model.wheel} {i}: {skipped} window(s) skipped (not tangent)")
     ok = all(math.isfinite(v) for v in values)
-    why = (f"spinning in place ({spins} window(s)): each {'module' if kind == 'swerve' else 'wheel'}"
-           f"'s distance against the gyro's heading"
+    why = (f"spinning in place ({spins} window(s)): each {model.wheel}'s distance against "
+           f"the gyro's heading"
            + (", the gyro corrected by gyroScale" if gyro != 1.0 else
               ", assuming the gyro and the geometry are right"))
     if notes:
         why += "; " + "; ".join(notes)
     return Parameter("wheelRadiusScale", values if ok else None, errs if ok else None, ok, why)
+
+
+def _turn_scale(logs: list[_Log], model: CalibrationModel, gyro: float) -> Parameter:
+    """The wheels' common scale from every window that turns: the rotation the wheels
+    imply through the configured geometry (forward kinematics) against the gyro's, over
+    disjoint intervals of at least INTERVAL s (so their noise is independent), one slope
+    through the origin; the interval from the intervals' residuals (sandwich)."""
+    x, y = [], []
+    windows = 0
+    for lg in logs:
+        steps = model.step_rotations(lg.r)
+        if steps is None:
+            break
+        implied = np.concatenate([[0.0], np.cumsum(steps)])
+        for s in lg.used("turn"):
+            a, b = _pairs(lg.r.t[s])
+            windows += 1
+            x.append(implied[s][b] - implied[s][a])
+            y.append((lg.r.gyroAngles[s][b] - lg.r.gyroAngles[s][a]) * gyro)
+    count = sum(len(v) for v in x)
+    if count < 3:
+        return Parameter("wheelRadiusScale", None, None, False,
+                         "no usable spin-in-place or turning window: spin in place for 3 "
+                         "turns, or drive while turning")
+    f, se, dof = _origin_slope(np.concatenate(x), np.concatenate(y))
+    if not (f > 0 and math.isfinite(f)):
+        return Parameter("wheelRadiusScale", None, None, False,
+                         "the wheels imply no rotation while the gyro turns: check the "
+                         "geometry; or spin in place for 3 turns")
+    width = logs[0].r.positions.shape[1]
+    half = _t95(dof) * se
+    why = (f"turning ({windows} window(s), {count} independent {INTERVAL:g} s intervals): "
+           f"the rotation the {model.wheel}s imply through the configured geometry against "
+           f"the gyro's" + (", the gyro corrected by gyroScale" if gyro != 1.0 else
+                            ", assuming the gyro and the geometry are right")
+           + f"; one factor for every {model.wheel} (each {model.wheel}'s own needs a spin "
+             f"in place)")
+    return Parameter("wheelRadiusScale", [f] * width, [half] * width, True, why)
 
 
 def _trackwidth(logs: list[_Log], gyro: float, scales: Any = None,
@@ -454,6 +492,16 @@ def _dead_wheel_levers(logs: list[_Log], gyro: float) -> list[Parameter]:
                       "m, m, deg")]
 
 
+#: The window estimators, by the parameter they estimate (a model's windowEstimates):
+#: (logs, model, gyro scale) -> the Parameters found.
+_ESTIMATORS = {
+    "wheelRadiusScale": _wheel_scales,
+    "steerOffsets": lambda logs, model, gyro: [_steer_offsets(logs)],
+    "trackwidth": lambda logs, model, gyro: [_trackwidth(logs, gyro)],
+    "deadWheelLevers": lambda logs, model, gyro: _dead_wheel_levers(logs, gyro),
+}
+
+
 # ---------------------------------------------------------------------------------------
 # calibrate()
 
@@ -505,8 +553,9 @@ def calibrate(logs: Any, config: ReplayConfig | None = None,
                 f"{name}: the gyro ({r.entries.get('gyro')}) turned {turned:.3f} rad in "
                 f"all: the robot never turned, or the gyro never moved; a calibration needs "
                 f"the robot to turn (spin in place for 3 turns) and a gyro that reads it")
-        if r.drivetrain == "deadwheel" and r.entries.get("gyro") in (None, "(wheels)"):
-            raise CalibrationError(f"{name}: calibrating dead wheels needs a gyro")
+        if model_for(r).needsGyro and r.entries.get("gyro") in (None, "(wheels)"):
+            raise CalibrationError(f"{name}: calibrating {model_for(r).wheel}s of a "
+                                   f"{r.drivetrain} drive needs a gyro")
         ref = None
         if r.truth is not None:
             tr, P = r.truth
@@ -514,71 +563,63 @@ def calibrate(logs: Any, config: ReplayConfig | None = None,
             ref = (tr[keep], P[keep])
         runs.append(_Log(name, r, wins, ref))
         windows += [w for _, _, w in wins]
-    kind = runs[0].r.drivetrain
+    model = model_for(runs[0].r)
     if not any(w.used and w.kind != "straight" for w in windows):
         raise CalibrationError(
             "no usable window that turns in " + ", ".join(lg.name for lg in runs) +
             f": spin in place (at least {SPIN_RATE:g} rad/s for {MIN_WINDOW + 2 * TRIM:g} s "
             f"and {MIN_TURN:g} rad) or drive while turning")
 
-    params: dict[str, Parameter] = {}
     gyro_p = _gyro_scale(runs)
     g = gyro_p.value if gyro_p.determined else 1.0
-    if kind in ("swerve", "mecanum"):
-        params["wheelRadiusScale"] = _spin_scales(runs, kind, g)
-        if kind == "swerve":
-            params["steerOffsets"] = _steer_offsets(runs)
-    elif kind == "differential":
-        params["wheelRadiusScale"] = Parameter(
-            "wheelRadiusScale", None, None, False,
-            "needs a reference pose (--truth ENTRY): from the gyro alone a differential "
-            "drive's wheel scale and trackwidth are not separable")
-        params["trackwidth"] = _trackwidth(runs, g, None)
-    elif kind == "deadwheel":
-        for p in _dead_wheel_levers(runs, g):
-            params[p.name] = p
-    params["gyroScale"] = gyro_p
+    found: dict[str, Parameter] = {n: Parameter(n, None, None, False, why)
+                                   for n, why in model.undetermined.items()}
+    for name in model.windowEstimates:
+        for p in _ESTIMATORS[name](runs, model, g):
+            found[p.name] = p
+    found["gyroScale"] = gyro_p
+    params = {n: found[n] for n in model.parameters}
 
     # The joint fit against the reference.
-    if kind != "deadwheel":
+    if model.joint:
         start = {k: p.value for k, p in params.items() if p.determined}
         base = {k: (p.value, p.uncertainty) for k, p in params.items()
-                if kind in ("swerve", "mecanum") and p.determined
-                and k in ("wheelRadiusScale", "steerOffsets")}
-        joint = _joint_fit(runs, kind, start, base)
+                if k in model.jointCommon and p.determined}
+        joint = _joint_fit(runs, model, start, base)
         if joint is not None:
             values, half, count = joint
             for name, v in values.items():
-                unit = "rad" if name == "steerOffsets" else ""
                 params[name] = Parameter(
                     name, v, half[name], True,
                     f"joint fit of {', '.join(values)} minimising the drift against the "
                     f"reference pose over {count} independent {INTERVAL:g} s intervals",
-                    unit)
-            if kind == "differential":
+                    params[name].unit)
+            if "trackwidth" in params:
                 params["trackwidth"] = _trackwidth(
                     runs, values["gyroScale"], values["wheelRadiusScale"],
                     (half["wheelRadiusScale"], half["gyroScale"]))
-    else:
-        joint_dw = _dead_wheel_joint(runs)
-        for p in joint_dw or ():
+    elif model.regressesOnReference:
+        for p in _dead_wheel_joint(runs) or ():
             params[p.name] = p
 
-    options = _replay_options(kind, params)
-    before: list[DriftStats | None] = []
-    after: list[DriftStats | None] = []
+    # The fitted replay of each log: its samples corrected, not the log read again.
+    fields = model.config_fields(params)
+    values = {n: p.value for n, p in params.items() if p.determined}
     fitted = []
     for lg in runs:
-        # Only a reference measures drift: the logged pose is the robot's own odometry,
-        # made with the very geometry being corrected.
-        fcfg = dataclasses.replace(cfg, **_config_fields(kind, params))
-        fr = replay.replayLog(lg.r.log if lg.r.log is not None else lg.name, fcfg)
-        fitted.append(fr)
-        before.append(lg.r.vsTruth)
-        after.append(fr.vsTruth)
+        P = model.correct(lg.r.positions, values)
+        gy = lg.r.gyroAngles
+        gy = gy[0] + (gy - gy[0]) * float(values.get("gyroScale", 1.0))
+        fitted.append(replay.replayAgain(lg.r, P, gy, cfg.compare,
+                                         model.kinematics(lg.r, params)))
+    # Only a reference measures drift: the logged pose is the robot's own odometry, made
+    # with the very geometry being corrected.
+    before: list[DriftStats | None] = [lg.r.vsTruth for lg in runs]
+    after: list[DriftStats | None] = [fr.vsTruth for fr in fitted]
     against = "reference" if any(b is not None for b in before) else None
-    return CalibrationResult([lg.name for lg in runs], kind, params, windows, against,
-                             before, after, options, [lg.r for lg in runs], fitted)
+    return CalibrationResult([lg.name for lg in runs], runs[0].r.drivetrain, params, windows,
+                             against, before, after, _replay_options(fields),
+                             [lg.r for lg in runs], fitted)
 
 
 def _dead_wheel_joint(logs: list[_Log]) -> list[Parameter] | None:
@@ -633,37 +674,17 @@ def _dead_wheel_joint(logs: list[_Log]) -> list[Parameter] | None:
                       "m, m, deg")]
 
 
-def _config_fields(kind: str, params: dict[str, Parameter]) -> dict[str, Any]:
+def _replay_options(fields: dict[str, Any]) -> dict[str, Any]:
+    """The ``replay`` command-line options of the replay configuration fields."""
     out: dict[str, Any] = {}
-    p = params.get("wheelRadiusScale")
-    if p is not None and p.determined:
-        out["wheelScale"] = list(p.value)
-    p = params.get("gyroScale")
-    if p is not None and p.determined:
-        out["gyroScale"] = float(p.value)
-    p = params.get("steerOffsets")
-    if p is not None and p.determined:
-        out["steerOffsets"] = list(p.value)
-    p = params.get("deadWheelPoses")
-    if p is not None and p.value is not None:      # replay needs them, best known
-        out["deadWheels"] = [tuple(w) for w in p.value]
-    p = params.get("trackwidth")
-    if p is not None and p.determined and kind == "differential":
-        out["trackwidth"] = float(p.value)
-    return out
-
-
-def _replay_options(kind: str, params: dict[str, Parameter]) -> dict[str, Any]:
-    f = _config_fields(kind, params)
-    out: dict[str, Any] = {}
-    if "wheelScale" in f:
-        out["wheel-scale"] = f["wheelScale"]
-    if "gyroScale" in f:
-        out["gyro-scale"] = f["gyroScale"]
-    if "steerOffsets" in f:
-        out["steer-offsets"] = [math.degrees(a) for a in f["steerOffsets"]]
-    if "deadWheels" in f:
-        out["dead-wheel"] = f["deadWheels"]
+    if "wheelScale" in fields:
+        out["wheel-scale"] = fields["wheelScale"]
+    if "gyroScale" in fields:
+        out["gyro-scale"] = fields["gyroScale"]
+    if "steerOffsets" in fields:
+        out["steer-offsets"] = [math.degrees(a) for a in fields["steerOffsets"]]
+    if "deadWheels" in fields:
+        out["dead-wheel"] = fields["deadWheels"]
     return out
 
 

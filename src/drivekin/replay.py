@@ -74,7 +74,7 @@ from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.geometry import Pose2d, Rotation2d
 
 __all__ = ["DriftStats", "ReplayConfig", "ReplayResult", "listing", "plotReplay",
-           "replayLog", "replayPoses", "report", "writeReplayLog"]
+           "replayAgain", "replayLog", "replayPoses", "report", "writeReplayLog"]
 
 #: The drivetrains a log can be replayed for: the catalog's odometry classes that can be
 #: started from a positions stack (in catalog order).
@@ -699,3 +699,31 @@ def report(result: ReplayResult, outputs: tuple[str, ...] = ()) -> str:
     # Entry names and paths are the log's and the user's bytes: escaped row by row, so
     # one with a newline or terminal controls stays on its row and prints harmlessly.
     return "\n".join(escape(row) for row in rows)
+
+
+# ---------------------------------------------------------------------------------------
+# Replaying a result again with corrected samples (drivekin.calibrate's one public hook)
+
+def replayAgain(result: ReplayResult, positions: np.ndarray, gyroAngles: np.ndarray,
+                compare: str | None = "hold", kinematics: Any = None) -> ReplayResult:
+    """``result`` replayed again, without reading its log, from its start pose on other
+    (corrected) wheel samples and gyro angles, of the shapes of ``result.positions`` and
+    ``result.gyroAngles`` (rad, unwrapped), with ``kinematics`` (default: the result's
+    geometry), and compared with its logged pose and truth as :func:`replayLog` compares
+    (``compare``: "hold" or "interpolate"; None: not compared). A new
+    :class:`ReplayResult`; ``result`` is unchanged."""
+    P = np.ascontiguousarray(positions, dtype=np.float64)
+    g = np.ascontiguousarray(gyroAngles, dtype=np.float64)
+    if result.positions is None or P.shape != result.positions.shape or \
+            g.shape != result.t.shape:
+        raise ValueError("positions and gyroAngles must have the shapes of the result's")
+    kin = result.kinematics if kinematics is None else kinematics
+    poses = _run(catalog.replay_spec(result.drivetrain), kin, g, P,
+                 result.start or Pose2d())
+    out = dataclasses.replace(result, poses=poses, positions=P, gyroAngles=g,
+                              kinematics=kin, vsLogged=None, vsTruth=None)
+    if compare is not None and result.logged is not None:
+        out.vsLogged = _drift(result.t, poses, result.logged[0], result.logged[1], compare)
+    if compare is not None and result.truth is not None and len(result.truth[0]):
+        out.vsTruth = _drift(result.t, poses, result.truth[0], result.truth[1], compare)
+    return out

@@ -87,6 +87,8 @@ Manoeuvres (:data:`MANOEUVRES`):
   back the same;
 * ``"turn"``: an arc left (``speed`` × 0.75, ω = 1 rad/s) for one full turn, then one
   right;
+* ``"arcs"``: an arc left (``speed`` × 0.75) turning ``ARC_TURN`` (3.5) rad in
+  ``ARC_S`` (3) s, ramps included, then one right (ordinary driving: no spin);
 * ``"strafe"`` (swerve, mecanum, deadwheel): left at 1.5 m/s, then right;
 * ``"drive_spin"`` (holonomic): 1.5 m/s along the heading at its start while spinning at
   1.5 rad/s for 2 turns;
@@ -115,6 +117,7 @@ pose is computed from the noisy readings.
 """
 from __future__ import annotations
 
+import functools
 import json
 import math
 import os
@@ -135,8 +138,10 @@ T0_US = 1_000_000                   # log clock (µs) of motion time 0
 START = (1.5, 2.0, 0.3)             # true start pose (x m, y m, θ rad)
 GYRO0 = -1.2                        # the gyro's reading at motion time 0, rad
 LEAD_S, REST_S, TAIL_S, RAMP_S = 1.0, 0.75, 1.0, 0.5
+ARC_TURN, ARC_S = 3.5, 3.0          # an "arcs" move turns 3.5 rad in 3 s
 
-MANOEUVRES = ("spin", "spin_cw", "straight", "turn", "strafe", "drive_spin", "rest")
+MANOEUVRES = ("spin", "spin_cw", "straight", "turn", "arcs", "strafe", "drive_spin", "rest")
+WRITERS = ("wpiutil", "ntcore")
 _HOLONOMIC_ONLY = ("strafe", "drive_spin")
 
 #: Std-devs of the default noise (``noise=None``); ``noise=k`` multiplies them by k.
@@ -233,6 +238,12 @@ def _moves(m, kind: str, spin_rate: float, spin_turns: float, speed: float,
     if m == "turn":
         hold = 2 * math.pi / 1.0 - RAMP_S
         return [_Move(m, (0.75 * speed, 0.0, 1.0), hold), _Move(m, (0.75 * speed, 0.0, -1.0), hold)]
+    if m == "arcs":
+        # 3 s each (ramps included), turning ARC_TURN rad: a smoothstep ramp pair covers
+        # RAMP_S at full speed.
+        w = ARC_TURN / (ARC_S - RAMP_S)
+        return [_Move(m, (0.75 * speed, 0.0, w), ARC_S - 2 * RAMP_S),
+                _Move(m, (0.75 * speed, 0.0, -w), ARC_S - 2 * RAMP_S)]
     if m == "strafe":
         return [_Move(m, (0.0, 1.5, 0.0), straight_s), _Move(m, (0.0, -1.5, 0.0), straight_s)]
     if m == "drive_spin":
@@ -301,6 +312,35 @@ class _Motion:
 
     def pose(self) -> np.ndarray:
         return np.stack([self.x, self.y, self.theta], axis=1)
+
+
+@functools.lru_cache(maxsize=4)
+def _motion(moves: tuple[_Move, ...], duration: float | None) -> _Motion:
+    """The true motion of ``moves`` (shared by the logs of one test, which differ in
+    noise and parameters only: read, never written)."""
+    mo = _Motion(list(moves), duration)
+    for a in (mo.t, mo.omega, mo.theta, mo.vx, mo.vy, mo.x, mo.y):
+        a.setflags(write=False)
+    return mo
+
+
+@functools.lru_cache(maxsize=4)
+def _true_wheels(moves: tuple[_Move, ...], duration: float | None, kind: str,
+                 geometry) -> tuple[np.ndarray, np.ndarray | None]:
+    """The true wheel travel (and swerve module angles) of ``moves`` on the fine grid."""
+    mo = _motion(moves, duration)
+    angle = None
+    if kind == "swerve":
+        travel, angle = _swerve_modules(mo, geometry)
+        angle.setflags(write=False)
+    elif kind == "mecanum":
+        travel = _linear_travel(mo, _mecanum_matrix(geometry))
+    elif kind == "differential":
+        travel = _linear_travel(mo, [[1.0, 0.0, -geometry / 2], [1.0, 0.0, geometry / 2]])
+    else:
+        travel = _linear_travel(mo, _deadwheel_matrix(geometry))
+    travel.setflags(write=False)
+    return travel, angle
 
 
 def _swerve_modules(mo: _Motion, modules) -> tuple[np.ndarray, np.ndarray]:
@@ -546,6 +586,84 @@ def _write(path: pathlib.Path, kind: str, t_us: np.ndarray, gyro: np.ndarray, P:
     return entries
 
 
+def _write_nt(path: pathlib.Path, kind: str, t_us: np.ndarray, gyro: np.ndarray,
+              P: np.ndarray, robot_pose: np.ndarray | None,
+              reference: tuple[np.ndarray, np.ndarray] | None, believed: dict) -> dict:
+    """The same samples published on NetworkTables and mirrored into the log by ntcore
+    (``startEntryDataLog(log, "", "NT:")``, as WPILib's DataLogManager does; NT drops a
+    value equal to the last): swerve ``/Drive/ModulePositions``
+    struct:SwerveModulePosition[], mecanum ``/Drive/WheelPositions`` double[4] (FL FR RL
+    RR) with ``/Drive/Kinematics`` struct:MecanumDriveKinematics, differential
+    ``/Drive/LeftPosition`` and ``/Drive/RightPosition`` doubles; ``/Drive/Gyro``
+    struct:Rotation2d, ``/Odometry/Robot`` and ``/Vision/Pose`` struct:Pose2d. No
+    dead-wheel layout. Entry names carry the ``NT:`` prefix."""
+    import ntcore
+    import wpiutil
+    from wpimath.geometry import Pose2d, Rotation2d, Translation2d
+    from wpimath.kinematics import MecanumDriveKinematics, SwerveModulePosition
+
+    if kind == "deadwheel":
+        raise ValueError("the ntcore writer has no dead-wheel layout")
+    log = wpiutil.DataLogWriter(str(path))
+    inst = ntcore.NetworkTableInstance.create()
+    handle = inst.startEntryDataLog(log, "", "NT:")
+    drive = inst.getTable("Drive")
+    entries = {"gyro": "NT:" + ENTRY_GYRO}
+    ts0 = int(t_us[0]) - 1000
+    try:
+        if kind == "swerve":
+            pub = drive.getStructArrayTopic("ModulePositions", SwerveModulePosition).publish()
+            entries["positions"] = "NT:/Drive/ModulePositions"
+
+            def send(i, ts):
+                pub.set([SwerveModulePosition(float(P[i, j, 0]), Rotation2d(float(P[i, j, 1])))
+                         for j in range(P.shape[1])], ts)
+        elif kind == "mecanum":
+            kin = drive.getStructTopic("Kinematics", MecanumDriveKinematics).publish()
+            kin.set(MecanumDriveKinematics(*[Translation2d(x, y)
+                                             for x, y in believed["modules"]]), ts0)
+            entries["geometry"] = "NT:" + ENTRY_KINEMATICS
+            pub = drive.getDoubleArrayTopic("WheelPositions").publish()
+            entries["positions"] = "NT:/Drive/WheelPositions"
+
+            def send(i, ts):
+                pub.set([float(v) for v in P[i]], ts)
+        else:
+            pub_l = drive.getDoubleTopic("LeftPosition").publish()
+            pub_r = drive.getDoubleTopic("RightPosition").publish()
+            entries["positions"] = "NT:/Drive/LeftPosition"
+
+            def send(i, ts):
+                pub_l.set(float(P[i, 0]), ts)
+                pub_r.set(float(P[i, 1]), ts)
+        pub_gyro = drive.getStructTopic("Gyro", Rotation2d).publish()
+        pub_pose = pub_ref = None
+        if robot_pose is not None:
+            pub_pose = inst.getStructTopic(ENTRY_POSE, Pose2d).publish()
+            entries["pose"] = "NT:" + ENTRY_POSE
+        if reference is not None:
+            pub_ref = inst.getStructTopic(ENTRY_REFERENCE, Pose2d).publish()
+            entries["reference"] = "NT:" + ENTRY_REFERENCE
+        ref_at = {} if reference is None else {int(t): k for k, t in enumerate(reference[0])}
+        for i in range(len(t_us)):
+            ts = int(t_us[i])
+            send(i, ts)
+            pub_gyro.set(Rotation2d(float(gyro[i])), ts)
+            if pub_pose is not None:
+                pub_pose.set(_pose2d(robot_pose[i]), ts)
+            k = ref_at.get(ts)
+            if k is not None:
+                pub_ref.set(_pose2d(reference[1][k]), ts)
+            if i % 100 == 99:
+                log.flush()
+    finally:
+        inst.stopEntryDataLog(handle)
+        ntcore.NetworkTableInstance.destroy(inst)
+        log.flush()
+        log.stop()
+    return entries
+
+
 # ---------------------------------------------------------------------------------------
 # The generator
 
@@ -578,7 +696,7 @@ def write_calibration_log(
         noise=None, reference: str = "none", reference_rate_hz: float = 20.0,
         rate_hz: int = 100, duration: float | None = None, log_pose: bool = True,
         gyro_stuck: bool = False, spin_rate: float = 1.5, spin_turns: float = 3.0,
-        speed: float = 2.0, straight_s: float = 1.5) -> SimulatedLog:
+        speed: float = 2.0, straight_s: float = 1.5, writer: str = "wpiutil") -> SimulatedLog:
     """Simulate one robot and write its log to ``path``; return a :class:`SimulatedLog`.
 
     * ``kind``: ``"swerve" | "differential" | "mecanum" | "deadwheel"``.
@@ -600,6 +718,9 @@ def write_calibration_log(
     * ``rate_hz``: the sample rate, a divisor of 4000 (50, 100, 200, 250, 500).
     * ``log_pose``: also log the robot's own (believed-parameter) odometry pose.
     * ``gyro_stuck``: the gyro logs ``GYRO0`` (plus noise) throughout (bad input).
+    * ``writer``: ``"wpiutil"`` (robotpy-wpiutil's DataLogWriter, the layouts above) or
+      ``"ntcore"`` (published on NetworkTables and mirrored by ntcore: see
+      :func:`_write_nt`; swerve, mecanum and differential).
     """
     if kind not in KINDS:
         raise ValueError(f"kind must be one of {KINDS}, not {kind!r}")
@@ -615,7 +736,7 @@ def write_calibration_log(
                       else ("spin", "straight", "turn", "strafe"))
     moves = [mv for m in manoeuvres
              for mv in _moves(m, kind, spin_rate, spin_turns, speed, straight_s)]
-    mo = _Motion(moves, duration)
+    mo = _motion(tuple(moves), duration)
 
     # geometry and parameters
     truth: dict[str, Any] = {}
@@ -652,15 +773,9 @@ def write_calibration_log(
         raise ValueError("steer_offsets apply to swerve only")
 
     # true sensor values on the fine grid
-    angle = None
-    if kind == "swerve":
-        travel, angle = _swerve_modules(mo, modules)
-    elif kind == "mecanum":
-        travel = _linear_travel(mo, _mecanum_matrix(modules))
-    elif kind == "differential":
-        travel = _linear_travel(mo, [[1.0, 0.0, -tw / 2], [1.0, 0.0, tw / 2]])
-    else:
-        travel = _linear_travel(mo, _deadwheel_matrix(true_dw))
+    geometry = (tuple(map(tuple, modules)) if kind in ("swerve", "mecanum") else
+                tw if kind == "differential" else tuple(true_dw))
+    travel, angle = _true_wheels(tuple(moves), duration, kind, geometry)
 
     # samples
     step = 4000 // rate_hz
@@ -692,11 +807,18 @@ def write_calibration_log(
         rp[:, 2] = _wrap(rp[:, 2] + levels["reference_theta"] * z_ref[:, 2])
         ref = (t_us[k], rp)
     robot_pose = _robot_odometry(kind, gyro, P, believed) if log_pose else None
-    entries = _write(path, kind, t_us, gyro, P, robot_pose, ref, believed)
+    if writer not in WRITERS:
+        raise ValueError(f"writer must be one of {WRITERS}")
+    entries = (_write if writer == "wpiutil" else _write_nt)(path, kind, t_us, gyro, P,
+                                                             robot_pose, ref, believed)
 
     logged: dict[str, Any] = {"drivetrain": kind}
     if kind == "differential":
         logged["trackwidth"] = believed["trackwidth"]
+    if writer == "ntcore" and kind == "swerve":
+        logged["modules"] = [tuple(m) for m in believed["modules"]]   # no geometry entry
+    if writer == "ntcore" and kind == "mecanum":
+        logged["positions"] = entries["positions"]      # a double[]: named
     if kind == "deadwheel":
         logged["positions"] = ENTRY_POSITIONS[kind]
         logged["deadWheels"] = [(x, y, math.degrees(p)) for x, y, p in bel_dw]

@@ -111,7 +111,7 @@ def test_calibrates_printed_replay_command_parses_with_negative_values():
     scales = [0.98, 1.01, 0.99, 1.0]
     argv = _printed_command({"steer-offsets": steer, "wheel-scale": scales,
                              "gyro-scale": 1.02})
-    assert "-0.573,1.2,-3.5,0.25" in argv                  # the form that failed
+    assert "--steer-offsets=-0.573,1.2,-3.5,0.25" in argv
     args = replay_cli.parse(replay_cli.build_parser(), argv)
     assert args.steer_offsets == steer
     assert args.wheel_scale == scales and args.gyro_scale == 1.02
@@ -123,6 +123,8 @@ def test_calibrates_printed_replay_command_parses_with_negative_values():
      [(-0.3, 0.3), (-0.3, -0.3)]),
     (["--dead-wheel", "-0.1,0.2,90"], "dead_wheel", [(-0.1, 0.2, 90.0)]),
     (["--steer-offsets", "-1.5"], "steer_offsets", -1.5),
+    (["--steer-offsets", "-0.573,1.2,-3.5,0.25"], "steer_offsets",    # the form that failed
+     [-0.573, 1.2, -3.5, 0.25]),
     (["--steer-offsets", "-.5,2"], "steer_offsets", [-0.5, 2.0]),
 ])
 def test_every_list_option_takes_a_negative_first_value(argv, field, expected):

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import json
 import math
+import sys
 
 import numpy as np
 import pytest
@@ -130,19 +131,27 @@ def test_the_wrong_values_are_corrected(tmp_path):
 
 # ---- coverage: honest 95 % intervals -------------------------------------------------
 
-COVERAGE = [("swerve", False), ("swerve", True), ("differential", True), ("mecanum", True),
-            ("deadwheel", False)]
+# (kind, reference, manoeuvres): without a reference, only the manoeuvres the estimates
+# use (shorter logs). No robot pose is logged: the estimates compare the replay's relative
+# motion and heading changes with the reference's, whatever pose the replay starts from.
+COVERAGE = [("swerve", False, ("spin", "straight")), ("swerve", True, None),
+            ("differential", True, None), ("mecanum", True, None),
+            ("deadwheel", False, ("spin",)), ("mecanum", False, ("arcs",) * 3)]
 
 
-@pytest.mark.parametrize("kind, reference", COVERAGE,
+@pytest.mark.parametrize("kind, reference, manoeuvres", COVERAGE,
                          ids=[f"{k}-{'reference' if r else 'no-reference'}"
-                              for k, r in COVERAGE])
-def test_intervals_cover_the_truth_about_95_percent_of_the_time(tmp_path, kind, reference):
+                              + ("-arcs" if m and "arcs" in m else "")
+                              for k, r, m in COVERAGE])
+def test_intervals_cover_the_truth_about_95_percent_of_the_time(tmp_path, kind, reference,
+                                                                manoeuvres):
     seeds = 40
     hits: dict[str, list[bool]] = {}
+    kw = {**_kw(kind, reference), **({"wheel_scale": ARC_SCALE} if manoeuvres and
+                                     "arcs" in manoeuvres else {})}
     for seed in range(seeds):
         sim = _sim(tmp_path, kind, seed=seed + 100, reference=reference,
-                   **_kw(kind, reference))
+                   manoeuvres=manoeuvres, log_pose=False, **kw)
         res = _calibrate(sim, reference)
         for name, p in res.parameters.items():
             if p.determined and name != "deadWheelPoses":
@@ -153,6 +162,36 @@ def test_intervals_cover_the_truth_about_95_percent_of_the_time(tmp_path, kind, 
         # 40 seeds (up to 4 values each, correlated within a seed): a 95 % interval lands
         # within these bounds unless it is wrong; one too narrow by a third covers ~82 %.
         assert 0.88 <= rate <= 1.0, f"{name}: {rate:.1%} of {len(h)} true values inside"
+
+
+# ---- ordinary driving: arcs, no spin ---------------------------------------------------
+
+ARC_SCALE = 1 / 0.97        # encoders reading 3 % short: logged distance × scale = true
+
+
+@pytest.mark.parametrize("writer", cl.WRITERS)
+@pytest.mark.parametrize("kind", ["swerve", "mecanum", "differential"])
+def test_wheel_scale_from_ordinary_driving(tmp_path, kind, writer):
+    # Six arcs, each turning 3.5 rad in 3 s, left and right; never a spin in place.
+    sim = cl.write_calibration_log(tmp_path / "arcs.wpilog", kind, manoeuvres=("arcs",) * 3,
+                                   wheel_scale=ARC_SCALE, writer=writer, log_pose=False)
+    res = calibrate.calibrate(sim.path, sim.config())
+    assert {w.kind for w in res.windows if w.used} == {"turn"}
+    p = res.parameters["wheelRadiusScale"]
+    if kind == "differential":
+        # From the gyro alone a differential drive's wheel scale and trackwidth are not
+        # separable: the trackwidth found is the one of the logged distances, W / scale.
+        assert not p.determined and "not separable" in p.why
+        tw = res.parameters["trackwidth"]
+        assert tw.determined and abs(tw.value - sim.truth["trackwidth"] / ARC_SCALE) <= \
+            tw.uncertainty
+        return
+    assert p.determined and "turning" in p.why and "one factor" in p.why
+    assert _inside(p, sim.truth["wheelRadiusScale"]).all()
+    assert max(p.uncertainty) < 0.002 * ARC_SCALE
+    # Replayed with it, the robot follows its true path about as well as with the truth.
+    fitted = cl.replay_drift(sim, {"wheelRadiusScale": p.value})["rms"]
+    assert fitted < 0.05 * cl.replay_drift(sim)["rms"]
 
 
 # ---- refusing to guess ----------------------------------------------------------------
@@ -175,12 +214,6 @@ def test_steer_offsets_need_straight_driving(tmp_path):
     assert res.parameters["wheelRadiusScale"].determined
 
 
-def test_wheel_scales_need_a_spin(tmp_path):
-    sim = _sim(tmp_path, "mecanum", manoeuvres=("straight", "turn"))
-    p = _calibrate(sim, False).parameters["wheelRadiusScale"]
-    assert not p.determined and "spin in place" in p.why
-
-
 def test_windows_say_why_they_were_rejected(tmp_path):
     sim = _sim(tmp_path, "swerve", manoeuvres=("spin", (0.3, 2.0, 0.0, 0.0), "straight"))
     res = _calibrate(sim, False)
@@ -191,6 +224,20 @@ def test_windows_say_why_they_were_rejected(tmp_path):
 
 # ---- the command line -----------------------------------------------------------------
 
+def test_each_log_is_replayed_once(tmp_path, monkeypatch):
+    from drivekin import replay
+
+    calls = []
+    real = replay.replayLog
+    monkeypatch.setattr(replay, "replayLog", lambda *a, **k: calls.append(a) or real(*a, **k))
+    sims = [cl.write_calibration_log(tmp_path / f"{i}.wpilog", "mecanum", seed=i,
+                                     reference="pose") for i in range(2)]
+    res = calibrate.calibrate([s.path for s in sims],
+                              sims[0].config(truth=sims[0].entries["reference"]))
+    assert len(calls) == 2
+    assert res.after[0] is not None and res.after[0].maxPosition < res.before[0].maxPosition
+
+
 def _run(capsys, *argv):
     code = cli.main(["calibrate", *map(str, argv)])
     out, err = capsys.readouterr()
@@ -198,7 +245,8 @@ def _run(capsys, *argv):
 
 
 def test_cli_json_and_replay_command(tmp_path, capsys):
-    sim = _sim(tmp_path, "swerve", reference=True)
+    # The first steer offset negative: the printed command must still parse.
+    sim = _sim(tmp_path, "swerve", reference=True, steer_offsets=[-0.05, 0.03, 0.02, 0.0])
     out_json = tmp_path / "fit.json"
     code, out, err = _run(capsys, sim.path, "--truth", sim.entries["reference"], "--json",
                           out_json)
@@ -213,6 +261,7 @@ def test_cli_json_and_replay_command(tmp_path, capsys):
     # The printed replay command reproduces the fitted drift.
     command = data["replay_command"].split()
     assert command[:4] == ["python", "-m", "drivekin", "replay"]
+    assert any(a.startswith("--steer-offsets=-") for a in command)
     code = cli.main(command[3:] + ["--truth", sim.entries["reference"], "--no-write",
                                    "--json"])
     replayed, _ = capsys.readouterr()
@@ -268,6 +317,23 @@ def test_cli_refuses_logs_it_cannot_calibrate(tmp_path, capsys, make, message):
     assert lines[-1].startswith("python -m drivekin calibrate: error: ")
     assert message in lines[-1] and "Traceback" not in err
     assert not out_json.exists() and out == ""
+
+
+def test_cli_list_is_replays_listing(tmp_path, capsys):
+    sim = _sim(tmp_path, "swerve")
+    code, listed, _ = _run(capsys, sim.path, "--list")
+    assert code == 0
+    assert cli.main(["replay", str(sim.path), "--list"]) == 0
+    assert listed == capsys.readouterr().out and sim.entries["positions"] in listed
+
+
+def test_cli_without_scipy_is_one_error_line(tmp_path, capsys, monkeypatch):
+    sim = _sim(tmp_path, "swerve")
+    monkeypatch.setitem(sys.modules, "scipy", None)       # import scipy fails
+    code, out, err = _run(capsys, sim.path)
+    assert code == 1 and out == ""
+    assert err.splitlines() == ['python -m drivekin calibrate: error: calibrate needs scipy: '
+                                'pip install "drivekin[calibrate]"']
 
 
 def test_cli_refuses_geometry_that_contradicts_the_log(tmp_path, capsys):

@@ -10,10 +10,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from drivekin import replay
-from drivekin._core import catalog
-from drivekin.geometry import Pose2d
 
 if TYPE_CHECKING:
+    from drivekin._core.calibrationmodels import CalibrationModel
     from drivekin.calibrate import _Log
 
 CONFIDENCE = 0.95
@@ -53,6 +52,20 @@ def _slope(x: list[np.ndarray], y: list[np.ndarray]) -> tuple[float, float, int]
     sigma2 = float(res @ res) / dof
     sxx = float(A[:, 0] @ A[:, 0])
     return float(coef[0]), math.sqrt(sigma2 / sxx) if sxx > 0 else float("inf"), dof
+
+
+def _origin_slope(x: np.ndarray, y: np.ndarray) -> tuple[float, float, int]:
+    """The slope of y = b·x through the origin over independent pairs: (slope, its
+    standard error from the residuals, heteroskedasticity-robust with the small-sample
+    factor n/(n − 1), degrees of freedom)."""
+    sxx = float(x @ x)
+    n = len(x)
+    if n < 2 or sxx <= 0:
+        return float("nan"), float("inf"), max(n - 1, 0)
+    b = float(x @ y) / sxx
+    res = y - b * x
+    var = float((x * x) @ (res * res)) / sxx ** 2 * n / (n - 1)
+    return b, math.sqrt(var), n - 1
 
 
 def _t95(dof: int) -> float:
@@ -103,33 +116,35 @@ def _at(t_src: np.ndarray, poses: np.ndarray, t: np.ndarray) -> np.ndarray:
                             np.interp(tt, ts, np.unwrap(poses[:, 2]))])
 
 
+_ADDITIVE = ("steerOffsets",)     # joint parameters that add (rad); the rest multiply
+
+
 class _Model:
-    """The parameters a drivetrain's joint fit varies, as one vector, and the replay they
-    give. The drift of a swerve or mecanum drive barely tells one module's wheel scale or
-    steer offset from another's (forward kinematics averages the modules; a mecanum
-    drive's has a null space), so where the windows gave them (``base``) the fit varies
-    only their common factor and common offset, keeping the windows' differences between
+    """The parameters a drivetrain's joint fit varies (its calibration model's ``joint``),
+    as one vector, and the replay they give. The drift of a swerve or mecanum drive
+    barely tells one module's wheel scale or steer offset from another's (forward
+    kinematics averages the modules; a mecanum drive's has a null space), so where the
+    windows gave them (``base``, of the model's ``jointCommon``) the fit varies only
+    their common factor and common offset, keeping the windows' differences between
     modules; everything else is fitted per wheel."""
 
-    def __init__(self, kind: str, width: int, start: dict[str, Any],
+    def __init__(self, model: CalibrationModel, width: int, start: dict[str, Any],
                  base: dict[str, tuple[list[float], list[float]]]) -> None:
-        self.kind, self.width, self.base = kind, width, base
+        self.model, self.width, self.base = model, width, base
         self.names: list[tuple[str, int | None]] = []
-        if kind in ("swerve", "mecanum", "differential"):
-            self.names += ([("wheelRadiusScale", None)] if "wheelRadiusScale" in base else
-                           [("wheelRadiusScale", i) for i in range(width)])
-        if kind == "swerve":
-            self.names += ([("steerOffsets", None)] if "steerOffsets" in base else
-                           [("steerOffsets", i) for i in range(width)])
-        self.names.append(("gyroScale", None))
+        for name in model.joint:
+            if name == "gyroScale" or name in base:
+                self.names.append((name, None))
+            else:
+                self.names += [(name, i) for i in range(width)]
         x = []
         for name, i in self.names:
             v = start.get(name)
-            if name in base:
-                x.append(0.0 if name == "steerOffsets" else 1.0)
+            neutral = 0.0 if name in _ADDITIVE else 1.0
+            if name in base or v is None:
+                x.append(neutral)
             else:
-                x.append((v[i] if i is not None else v) if v is not None else
-                         (0.0 if name == "steerOffsets" else 1.0))
+                x.append(v[i] if i is not None else v)
         self.x0 = np.array(x, dtype=np.float64)
 
     def config(self, x: np.ndarray, half: np.ndarray | None = None) -> dict[str, Any]:
@@ -141,7 +156,7 @@ class _Model:
             h = None if half is None else float(half[j])
             if name in self.base:
                 values, halves = self.base[name]
-                if name == "steerOffsets":
+                if name in _ADDITIVE:
                     out[name] = ([float(b + v) for b in values] if h is None else
                                  [math.hypot(h, hb) for hb in halves])
                 else:
@@ -154,25 +169,18 @@ class _Model:
         return out
 
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:
-        lo = [-math.pi / 2 if n == "steerOffsets" else 0.5 for n, _ in self.names]
-        hi = [math.pi / 2 if n == "steerOffsets" else 2.0 for n, _ in self.names]
+        lo = [-math.pi / 2 if n in _ADDITIVE else 0.5 for n, _ in self.names]
+        hi = [math.pi / 2 if n in _ADDITIVE else 2.0 for n, _ in self.names]
         return np.array(lo), np.array(hi)
 
     def replay(self, lg: _Log, x: np.ndarray) -> np.ndarray:
         c = self.config(x)
-        P = lg.r.positions.copy()
-        scale = np.asarray(c.get("wheelRadiusScale", 1.0))
-        if self.kind == "swerve":
-            P[:, :, 0] *= scale
-            P[:, :, 1] += np.asarray(c["steerOffsets"])
-        else:
-            P *= scale
+        P = self.model.correct(lg.r.positions, c)
         g = lg.r.gyroAngles[0] + (lg.r.gyroAngles - lg.r.gyroAngles[0]) * c["gyroScale"]
-        return replay._run(catalog.replay_spec(self.kind), lg.r.kinematics, g, P,
-                           lg.r.start or Pose2d())
+        return replay.replayAgain(lg.r, P, g, None).poses
 
 
-def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],
+def _joint_fit(logs: list[_Log], model: CalibrationModel, start: dict[str, Any],
                base: dict[str, tuple[list[float], list[float]]]
                ) -> tuple[dict[str, Any], dict[str, Any], int] | None:
     sp = _scipy()
@@ -180,12 +188,12 @@ def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],
     if not refs:
         return None
     width = refs[0].r.positions.shape[1]
-    model = _Model(kind, width, start, base)
+    fit_model = _Model(model, width, start, base)
 
     pairs = [_pairs(lg.ref[0]) for lg in refs]
     targets = [_relative(lg.ref[1], a, b)[:, :2] for lg, (a, b) in zip(refs, pairs)]
 
-    npar = len(model.x0)
+    npar = len(fit_model.x0)
 
     def blocks(x: np.ndarray) -> list[np.ndarray]:
         # One row per reference interval (from one sample to one INTERVAL later, sharing
@@ -200,7 +208,7 @@ def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],
         # gyro's and the reference's first samples): the last parameters.
         out = []
         for j, (lg, (a, b), want) in enumerate(zip(refs, pairs, targets)):
-            rep = _at(lg.r.t, model.replay(lg, x[:npar]), lg.ref[0])
+            rep = _at(lg.r.t, fit_model.replay(lg, x[:npar]), lg.ref[0])
             dh = np.angle(np.exp(1j * (rep[:, 2] + x[npar + j] - lg.ref[1][:, 2])))
             span = a[:, None] + np.arange(b[0] - a[0] + 1)[None, :]
             out.append(np.column_stack([_relative(rep, a, b)[:, :2] - want, dh[span]]))
@@ -215,10 +223,10 @@ def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],
                                 np.full(b_.shape[1] - 2, 1.0 / max(head, 1e-12))])
                 for b_ in bl]
 
-    lo, hi = model.bounds()
+    lo, hi = fit_model.bounds()
     lo = np.concatenate([lo, np.full(len(refs), -math.pi)])
     hi = np.concatenate([hi, np.full(len(refs), math.pi)])
-    x0 = np.clip(np.concatenate([model.x0, np.zeros(len(refs))]), lo, hi)
+    x0 = np.clip(np.concatenate([fit_model.x0, np.zeros(len(refs))]), lo, hi)
     w = weights(x0)
 
     def residuals(x: np.ndarray) -> np.ndarray:
@@ -252,7 +260,7 @@ def _joint_fit(logs: list[_Log], kind: str, start: dict[str, Any],
         return None
     cov = inv @ (sc.T @ sc) @ inv * (k / (k - p))
     dof = k - p
-    values = model.config(fit.x[:npar])
-    half = model.config(fit.x[:npar],
+    values = fit_model.config(fit.x[:npar])
+    half = fit_model.config(fit.x[:npar],
                         _t95(dof) * np.sqrt(np.maximum(np.diag(cov)[:npar], 0.0)))
     return values, half, k

@@ -14,6 +14,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from drivekin._core import calibrationmodels as models
+
 if TYPE_CHECKING:
     from drivekin._core.catalog import Entry
     from drivekin.datalog import LogData
@@ -34,7 +36,7 @@ class ReplaySpec:
     wheel = "wheel"                 # what one column is called in messages
     found_by_type = True            # positions found without --positions
     double_array = False            # a named double[] entry can hold these positions
-    calibration: Any = None         # its calibration model (drivekin.calibrate)
+    calibration: models.CalibrationModel    # its calibration model (drivekin.calibrate)
 
     # -- the catalog ----------------------------------------------------------------
     def _entry(self, kind: str) -> Entry:
@@ -143,6 +145,7 @@ class _Offsets(ReplaySpec):
 class SwerveSpec(_Offsets):
     """(N, M, 2) ``[distance m, angle rad]`` per module."""
 
+    calibration = models.SwerveCalibration()
     name = "swerve"
     wheel = "module"
 
@@ -173,6 +176,7 @@ class SwerveSpec(_Offsets):
 class MecanumSpec(_Offsets):
     """(N, 4) ``[fl, fr, rl, rr]`` m."""
 
+    calibration = models.MecanumCalibration()
     name = "mecanum"
     corners = "FL, FR, RL, RR"
     double_array = True
@@ -190,6 +194,7 @@ class MecanumSpec(_Offsets):
 class DifferentialSpec(ReplaySpec):
     """(N, 2) ``[left, right]`` m; its heading may come from the wheels."""
 
+    calibration = models.DifferentialCalibration()
     name = "differential"
     wheel = "side"
     double_array = True
@@ -216,6 +221,7 @@ class DifferentialSpec(ReplaySpec):
 class DeadWheelSpec(ReplaySpec):
     """(N, k) wheel distances of dead wheels at the poses ``--dead-wheel`` gives."""
 
+    calibration = models.DeadWheelCalibration()
     name = "deadwheel"
     wheel = "dead wheel"
     found_by_type = False

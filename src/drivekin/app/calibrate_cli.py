@@ -49,6 +49,9 @@ def build_parser() -> argparse.ArgumentParser:
                         'install "drivekin[plot]")')
     p.add_argument("--force", action="store_true",
                    help="overwrite --json and --plot files that exist")
+    p.add_argument("--list", action="store_true",
+                   help="list each log's entries as python -m drivekin replay LOG --list "
+                        "does (what the replay would use each for) and calibrate nothing")
     return p
 
 
@@ -56,12 +59,38 @@ def _progress(text: str) -> None:
     emit(text, sys.stderr)
 
 
+def _error(message: str) -> int:
+    print(f"python -m drivekin calibrate: error: {message}", file=sys.stderr)
+    return 1
+
+
+def _list(paths, config, allow_truncated: bool) -> int:
+    """What ``replay LOG --list`` prints, for each log."""
+    from drivekin import datalog, replay
+
+    for i, path in enumerate(paths):
+        try:
+            log = datalog.read(path, allowTruncated=allow_truncated)
+            text = replay.listing(log, config)
+        except (datalog.DataLogError, OSError, ValueError) as e:
+            return _error(str(e) if isinstance(e, datalog.DataLogError) or
+                          getattr(e, "filename", None) is None else f"{e.filename}: {e}")
+        print(("\n" if i else "") + text)
+    return 0
+
+
 def main(argv) -> int:
     parser = build_parser()
     args = parse(parser, argv)
     check_log_options(parser, args)
-    if importlib.util.find_spec("scipy") is None:
-        parser.error('calibrate needs scipy: pip install "drivekin[calibrate]"')
+    if args.list:
+        return _list(args.logs, log_config(args), args.allow_truncated)
+    try:
+        scipy = importlib.util.find_spec("scipy")
+    except (ImportError, ValueError):          # a broken installation
+        scipy = None
+    if scipy is None:
+        return _error('calibrate needs scipy: pip install "drivekin[calibrate]"')
     if args.plot and importlib.util.find_spec("matplotlib") is None:
         parser.error('--plot needs matplotlib: pip install "drivekin[plot]"')
     for out in (args.json, args.plot):
