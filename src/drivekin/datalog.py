@@ -97,9 +97,12 @@ All errors about a file's contents or a missing entry raise :class:`DataLogError
 """
 from __future__ import annotations
 
+import collections
+import difflib
 import mmap
 import operator
 import os
+import stat
 from collections.abc import Iterable
 from typing import Any, NamedTuple
 
@@ -210,6 +213,14 @@ class LogData:
         self._entries = entries
         self._schemas = schemas
         self._layouts: dict[str, structschema.Layout | DataLogError] = {}
+        # Read once: the entry table is built on first use and each entry's decoded
+        # arrays (read-only, so no caller can change what the next one gets) are kept,
+        # failures included, keyed by what changes the result.
+        self._infos: dict[str, EntryInfo] | None = None
+        self._decoded: dict[tuple[str, str, str], Any] = {}
+        self._stats: collections.Counter[Any] = collections.Counter()
+        """Private counters for tests: ``"entry_table"`` builds and ``(kind, name)``
+        decodes."""
         self.truncated = truncated
         """None, or why the file ended early (only with ``allowTruncated=True``)."""
         self.extraHeader = extraHeader
@@ -230,7 +241,13 @@ class LogData:
     @property
     def entries(self) -> dict[str, EntryInfo]:
         """Every entry by name, in order of first appearance (schema entries
-        ``/.schema/...`` included)."""
+        ``/.schema/...`` included); a new dict each time, of one table built once."""
+        if self._infos is None:
+            self._infos = self._entry_table()
+        return dict(self._infos)
+
+    def _entry_table(self) -> dict[str, EntryInfo]:
+        self._stats["entry_table"] += 1
         out = {}
         columns: dict[str, tuple[str, ...]] = {}
         for e in self._entries.values():
@@ -252,14 +269,24 @@ class LogData:
         """Struct schemas published in the log: type name (``"Pose2d"``) → schema."""
         return dict(self._schemas)
 
+    def _close_names(self, name: str) -> str:
+        """"; similar: ..." naming up to five entries close to ``name`` (same last path
+        part, or close spelling ignoring case), or ""."""
+        last = name.lower().rsplit("/", 1)[-1]
+        close = [n for n in self._entries if last and n.lower().endswith(last)]
+        lowered = {n.lower(): n for n in self._entries}
+        close += [lowered[n] for n in difflib.get_close_matches(name.lower()[:200],
+                                                                 lowered, 5, 0.6)]
+        close = list(dict.fromkeys(close))[:5]
+        return f"; similar: {', '.join(clip(n, 200) for n in close)}" if close else ""
+
     def _entry(self, name: str) -> _Entry:
         if not isinstance(name, str):
             raise TypeError(f"entry name must be a str, got {type_name(name)}")
         e = self._entries.get(name)
         if e is None:
-            close = [n for n in self._entries if n.lower().endswith(name.lower().rsplit("/", 1)[-1])]
-            hint = f"; similar: {', '.join(close[:5])}" if close else ""
-            raise DataLogError(f"{_shown(self.source)}: no entry named {clip(name, 200)}{hint}")
+            raise DataLogError(f"{_shown(self.source)}: no entry named {clip(name, 200)}"
+                               f"{self._close_names(name)}")
         if len(e.types) > 1:
             shown = ", ".join(cut(t) for t in e.types[:5])
             more = f", ... ({len(e.types)} types)" if len(e.types) > 5 else ""
@@ -282,6 +309,29 @@ class LogData:
         size of an element is known (structs, plain numbers)."""
         if ragged not in ("error", "drop"):
             raise ValueError(f"ragged must be 'error' or 'drop', got {ragged!r}")
+        return self._once("values", name, ragged, self._values)  # type: ignore[no-any-return]
+
+    def _once(self, kind: str, name: str, option: str, decode: Any) -> Any:
+        """``decode(name, option)``, computed once per (kind, name, option): its arrays
+        made read-only and kept, a DataLogError kept and raised again."""
+        self._entry(name)       # TypeError / DataLogError for a bad name, not cached
+        key = (kind, name, option)
+        got = self._decoded.get(key)
+        if got is None:
+            self._stats[kind, name] += 1
+            try:
+                got = decode(name, option)
+            except DataLogError as err:
+                got = err
+            else:
+                for a in got.values() if isinstance(got, dict) else got:
+                    a.flags.writeable = False
+            self._decoded[key] = got
+        if isinstance(got, DataLogError):
+            raise DataLogError(*got.args)
+        return got
+
+    def _values(self, name: str, ragged: str) -> tuple[np.ndarray, np.ndarray]:
         e = self._entry(name)
         type_string = e.types[0]
         what = f"{_shown(self.source)}: entry {clip(name, 200)} ({cut(type_string)})"
@@ -337,6 +387,9 @@ class LogData:
         int64 (N,) µs, ``counts`` int64 (N,) elements per record, and every record's
         elements concatenated in that order: float64 (sum of counts,) or
         (sum of counts, k) for structs of k doubles, as :meth:`values` shapes them."""
+        return self._once("concatenated", name, "", self._concatenated)  # type: ignore[no-any-return]
+
+    def _concatenated(self, name: str, _: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         e = self._entry(name)
         type_string = e.types[0]
         try:
@@ -366,15 +419,33 @@ class LogData:
 
 
 def _open(path: str | bytes) -> Any:
-    """The file's contents: a read-only memory map, or bytes where the file cannot be
-    mapped (empty files, pipes)."""
-    with open(path, "rb") as f:
+    """The contents of a regular file: a read-only memory map, or bytes where the file
+    cannot be mapped (empty files). Anything else (a directory, a FIFO, a device such as
+    /dev/zero, a socket) is refused before a byte is read: it is opened without
+    blocking (a FIFO with no writer would wait forever) and checked with fstat."""
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0))
+    st = os.fstat(fd)
+    if not stat.S_ISREG(st.st_mode):
+        os.close(fd)
+        raise DataLogError(f"{_shown(os.fsdecode(path))}: not a regular file "
+                           f"({_file_kind(st.st_mode)}); a .wpilog is read from a file on "
+                           f"disk")
+    with open(fd, "rb") as f:
         try:
-            if os.fstat(f.fileno()).st_size > 0:
-                return mmap.mmap(f.fileno(), 0, access=mmap.ACCESS_READ)
+            if st.st_size > 0:
+                return mmap.mmap(fd, 0, access=mmap.ACCESS_READ)
         except (OSError, ValueError):
             pass
         return f.read()
+
+
+def _file_kind(mode: int) -> str:
+    for test, kind in ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO or pipe"),
+                       (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+                       (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return kind
+    return "not a regular file"
 
 
 def read(source: str | os.PathLike[str] | bytes | bytearray | memoryview, *,
