@@ -112,6 +112,7 @@ from drivekin import wpistruct
 from drivekin._core.errors import clip, cut, type_name
 from drivekin._core import catalog
 from drivekin._core import wpilog as _wpilog
+from drivekin._core import logtable
 from drivekin._core import structschema
 
 __all__ = ["DataLogError", "EntryInfo", "LogData", "Writer", "listEntries", "read"]
@@ -293,6 +294,56 @@ class LogData:
             raise DataLogError(f"{_shown(self.source)}: entry {clip(name, 200)} was started "
                                f"with several types ({shown}{more})")
         return e
+
+    def table(self, name: str) -> dict[str, np.ndarray]:
+        """Any entry as named columns, one row per record, sorted by timestamp (stable):
+        ``"timestamp"`` int64 µs, then the entry's fields (see "Tables for analysis" in
+        the module documentation). The arrays are read-only and shared between calls:
+        copy one to change it. DataLogError for an unknown name (naming close ones), a
+        damaged record or a struct that cannot be decoded (no schema, bit fields)."""
+        return self._once("table", name, "", self._table)  # type: ignore[no-any-return]
+
+    def _table(self, name: str, _: str) -> dict[str, np.ndarray]:
+        e = self._entry(name)
+        what = f"{_shown(self.source)}: entry {clip(name, 200)} ({cut(e.types[0])})"
+
+        def typed_plan(base: str) -> Any:
+            got = self._layouts.get("typed " + base)
+            if got is None:
+                try:
+                    got = structschema.typed_plan(base[7:], self._schemas)
+                except DataLogError as err:
+                    got = err
+                self._layouts["typed " + base] = got
+            if isinstance(got, DataLogError):
+                raise DataLogError(f"{what}: {got}")
+            return got
+
+        return logtable.table(e, typed_plan, what)
+
+    def dataframe(self, name: str) -> Any:
+        """:meth:`table` as a pandas DataFrame (a writable copy): one column per
+        1-D column of the table; a 2-D column (arrays whose records agree in length) is
+        split into one column per element, ``"[i]"`` for a plain array and
+        ``"[i].<field>"`` for a struct array, element by element. Needs pandas:
+        ``pip install "drivekin[pandas]"``."""
+        try:
+            import pandas
+        except ImportError as e:
+            raise ImportError('LogData.dataframe needs pandas: pip install "drivekin[pandas]" '
+                              '(LogData.table gives the same columns as numpy arrays)') from e
+        columns = self.table(name)
+        out: dict[str, np.ndarray] = {}
+        wide = [k for k, v in columns.items() if v.ndim == 2]
+        for k, v in columns.items():
+            if v.ndim == 1:
+                out[k] = v
+        if wide:
+            plain = len(columns) == 2 and wide == ["value"]
+            for i in range(columns[wide[0]].shape[1]):
+                for k in wide:
+                    out[f"[{i}]" if plain else f"[{i}].{k}"] = columns[k][:, i]
+        return pandas.DataFrame(out, copy=True)
 
     def records(self, name: str) -> tuple[np.ndarray, list[bytes]]:
         """Timestamps (int64 µs) and raw payloads of an entry, in file order (unsorted)."""
