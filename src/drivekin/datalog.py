@@ -204,6 +204,10 @@ def _shown(name: str) -> str:
     return name
 
 
+# Decoded results a LogData keeps (the latest used): a replay decodes about ten entries.
+_KEEP = 256
+
+
 class LogData:
     """The contents of one ``.wpilog`` file (see :func:`read`)."""
 
@@ -216,9 +220,11 @@ class LogData:
         self._layouts: dict[str, structschema.Layout | DataLogError] = {}
         # Read once: the entry table is built on first use and each entry's decoded
         # arrays (read-only, so no caller can change what the next one gets) are kept,
-        # failures included, keyed by what changes the result.
+        # failures included, keyed by what changes the result: the latest _KEEP of them,
+        # so that decoding every entry of a log of 40,000 entries keeps no more.
         self._infos: dict[str, EntryInfo] | None = None
-        self._decoded: dict[tuple[str, str, str], Any] = {}
+        self._decoded: collections.OrderedDict[tuple[str, str, str], Any] = (
+            collections.OrderedDict())
         self._stats: collections.Counter[Any] = collections.Counter()
         """Private counters for tests: ``"entry_table"`` builds and ``(kind, name)``
         decodes."""
@@ -368,7 +374,9 @@ class LogData:
         self._entry(name)       # TypeError / DataLogError for a bad name, not cached
         key = (kind, name, option)
         got = self._decoded.get(key)
-        if got is None:
+        if got is not None:
+            self._decoded.move_to_end(key)
+        else:
             self._stats[kind, name] += 1
             try:
                 got = decode(name, option)
@@ -378,6 +386,8 @@ class LogData:
                 for a in got.values() if isinstance(got, dict) else got:
                     a.flags.writeable = False
             self._decoded[key] = got
+            if len(self._decoded) > _KEEP:
+                self._decoded.popitem(last=False)
         if isinstance(got, DataLogError):
             raise DataLogError(*got.args)
         return got
