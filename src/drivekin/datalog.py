@@ -62,6 +62,29 @@ names: ``ChassisSpeeds``, ``SwerveModuleState``, ``MecanumDriveWheelSpeeds``,
 ``DifferentialDriveWheelSpeeds``). Other member types (integers, enums, bit fields) are
 refused with :class:`DataLogError`; :meth:`LogData.records` still gives the raw bytes.
 
+Tables for analysis: :meth:`LogData.table` gives any entry as named columns, one row
+per record sorted by timestamp (stable): ``"timestamp"`` (int64 µs), then
+
+* ``double``, ``float``, ``int64``, ``boolean``: ``"value"`` float64, int64, bool (N,);
+  their arrays ``"value"`` (N, M) when every record holds M elements;
+* ``struct:T``: one column per field, named by its path in the log's schema with nested
+  structs flattened (``"translation.x"``, ``"rotation.value"`` for WPILib's Pose2d; a
+  schema listing plain members gives its own names); members of any scalar type
+  (integers in their width, ``float`` as float64, ``bool``, enums as integers, a ``char``
+  array as one str column), bit fields refused;
+* ``struct:T[]``: one (N, M) column per field;
+* an array entry whose records differ in length: object columns, one 1-D array per
+  record (refused beyond 4,194,304 such arrays, records times fields);
+* ``string``, ``json``, ``structschema``: str objects; ``string[]``: tuples of str;
+  other types: the record bytes.
+
+:meth:`LogData.dataframe` is the same as a pandas DataFrame (``pip install
+"drivekin[pandas]"``), (N, M) columns split into ``"[i].<field>"`` (struct arrays) or
+``"[i]"`` (plain arrays) columns. A LogData builds its entry table once and decodes each
+entry once (it keeps the latest 256 results): what :meth:`LogData.values`,
+:meth:`LogData.concatenated` and :meth:`LogData.table` return is read-only and shared
+between calls; copy an array to change it.
+
 Record order and damage:
 
 * **Out-of-order timestamps** (DataLog guarantees no order: several threads write, and
@@ -93,7 +116,9 @@ AdvantageScope shows them as poses and module states. Timestamps are integers in
 microseconds and must be >= 1: DataLog reads a timestamp of 0 as "now".
 
 All errors about a file's contents or a missing entry raise :class:`DataLogError`
-(a ValueError); wrong argument types raise TypeError.
+(a ValueError; a missing entry's message names close names); wrong argument types raise
+TypeError. Only regular files are read: a directory, a FIFO, a device (``/dev/zero``) or
+a socket is refused with :class:`DataLogError` before anything is read from it.
 """
 from __future__ import annotations
 
