@@ -124,6 +124,7 @@ from __future__ import annotations
 
 import collections
 import difflib
+import importlib
 import mmap
 import operator
 import os
@@ -243,6 +244,7 @@ class LogData:
         self._entries = entries
         self._schemas = schemas
         self._layouts: dict[str, structschema.Layout | DataLogError] = {}
+        self._typed_plans: dict[str, Any] = {}     # tables' struct plans, or their error
         # Read once: the entry table is built on first use and each entry's decoded
         # arrays (read-only, so no caller can change what the next one gets) are kept,
         # failures included, keyed by what changes the result: the latest _KEEP of them,
@@ -339,13 +341,13 @@ class LogData:
         what = f"{_shown(self.source)}: entry {clip(name, 200)} ({cut(e.types[0])})"
 
         def typed_plan(base: str) -> Any:
-            got = self._layouts.get("typed " + base)
+            got = self._typed_plans.get(base)
             if got is None:
                 try:
                     got = structschema.typed_plan(base[7:], self._schemas)
                 except DataLogError as err:
                     got = err
-                self._layouts["typed " + base] = got
+                self._typed_plans[base] = got
             if isinstance(got, DataLogError):
                 raise DataLogError(f"{what}: {got}")
             return got
@@ -359,7 +361,7 @@ class LogData:
         ``"[i].<field>"`` for a struct array, element by element. Needs pandas:
         ``pip install "drivekin[pandas]"``."""
         try:
-            import pandas
+            pandas = importlib.import_module("pandas")
         except ImportError as e:
             raise ImportError('LogData.dataframe needs pandas: pip install "drivekin[pandas]" '
                               '(LogData.table gives the same columns as numpy arrays)') from e
