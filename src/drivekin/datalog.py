@@ -62,6 +62,29 @@ names: ``ChassisSpeeds``, ``SwerveModuleState``, ``MecanumDriveWheelSpeeds``,
 ``DifferentialDriveWheelSpeeds``). Other member types (integers, enums, bit fields) are
 refused with :class:`DataLogError`; :meth:`LogData.records` still gives the raw bytes.
 
+Tables for analysis: :meth:`LogData.table` gives any entry as named columns, one row
+per record sorted by timestamp (stable): ``"timestamp"`` (int64 µs), then
+
+* ``double``, ``float``, ``int64``, ``boolean``: ``"value"`` float64, int64, bool (N,);
+  their arrays ``"value"`` (N, M) when every record holds M elements;
+* ``struct:T``: one column per field, named by its path in the log's schema with nested
+  structs flattened (``"translation.x"``, ``"rotation.value"`` for WPILib's Pose2d; a
+  schema listing plain members gives its own names); members of any scalar type
+  (integers in their width, ``float`` as float64, ``bool``, enums as integers, a ``char``
+  array as one str column), bit fields refused;
+* ``struct:T[]``: one (N, M) column per field;
+* an array entry whose records differ in length: object columns, one 1-D array per
+  record (refused beyond 4,194,304 such arrays, records times fields);
+* ``string``, ``json``, ``structschema``: str objects; ``string[]``: tuples of str;
+  other types: the record bytes.
+
+:meth:`LogData.dataframe` is the same as a pandas DataFrame (``pip install
+"drivekin[pandas]"``), (N, M) columns split into ``"[i].<field>"`` (struct arrays) or
+``"[i]"`` (plain arrays) columns. A LogData builds its entry table once and decodes each
+entry once (it keeps the latest 256 results): what :meth:`LogData.values`,
+:meth:`LogData.concatenated` and :meth:`LogData.table` return is read-only and shared
+between calls; copy an array to change it.
+
 Record order and damage:
 
 * **Out-of-order timestamps** (DataLog guarantees no order: several threads write, and
@@ -93,13 +116,19 @@ AdvantageScope shows them as poses and module states. Timestamps are integers in
 microseconds and must be >= 1: DataLog reads a timestamp of 0 as "now".
 
 All errors about a file's contents or a missing entry raise :class:`DataLogError`
-(a ValueError); wrong argument types raise TypeError.
+(a ValueError; a missing entry's message names close names); wrong argument types raise
+TypeError. Only regular files are read: a directory, a FIFO, a device (``/dev/zero``) or
+a socket is refused with :class:`DataLogError` before anything is read from it.
 """
 from __future__ import annotations
 
+import collections
+import difflib
+import importlib
 import mmap
 import operator
 import os
+import stat
 from collections.abc import Iterable
 from typing import Any, NamedTuple
 
@@ -110,6 +139,7 @@ from drivekin._core.display import escape
 from drivekin._core.errors import clip, cut, type_name
 from drivekin._core import catalog
 from drivekin._core import wpilog as _wpilog
+from drivekin._core import logtable
 from drivekin._core import structschema
 
 __all__ = ["DataLogError", "EntryInfo", "LogData", "Writer", "listEntries", "read"]
@@ -206,6 +236,10 @@ def _shown(name: str) -> str:
     return name
 
 
+# Decoded results a LogData keeps (the latest used): a replay decodes about ten entries.
+_KEEP = 256
+
+
 class LogData:
     """The contents of one ``.wpilog`` file (see :func:`read`)."""
 
@@ -216,6 +250,17 @@ class LogData:
         self._entries = entries
         self._schemas = schemas
         self._layouts: dict[str, structschema.Layout | DataLogError] = {}
+        self._typed_plans: dict[str, Any] = {}     # tables' struct plans, or their error
+        # Read once: the entry table is built on first use and each entry's decoded
+        # arrays (read-only, so no caller can change what the next one gets) are kept,
+        # failures included, keyed by what changes the result: the latest _KEEP of them,
+        # so that decoding every entry of a log of 40,000 entries keeps no more.
+        self._infos: dict[str, EntryInfo] | None = None
+        self._decoded: collections.OrderedDict[tuple[str, str, str], Any] = (
+            collections.OrderedDict())
+        self._stats: collections.Counter[Any] = collections.Counter()
+        """Private counters for tests: ``"entry_table"`` builds and ``(kind, name)``
+        decodes."""
         self.truncated = truncated
         """None, or why the file ended early (only with ``allowTruncated=True``)."""
         self.extraHeader = extraHeader
@@ -236,7 +281,13 @@ class LogData:
     @property
     def entries(self) -> dict[str, EntryInfo]:
         """Every entry by name, in order of first appearance (schema entries
-        ``/.schema/...`` included)."""
+        ``/.schema/...`` included); a new dict each time, of one table built once."""
+        if self._infos is None:
+            self._infos = self._entry_table()
+        return dict(self._infos)
+
+    def _entry_table(self) -> dict[str, EntryInfo]:
+        self._stats["entry_table"] += 1
         out = {}
         columns: dict[str, tuple[str, ...]] = {}
         for e in self._entries.values():
@@ -258,20 +309,80 @@ class LogData:
         """Struct schemas published in the log: type name (``"Pose2d"``) → schema."""
         return dict(self._schemas)
 
+    def _close_names(self, name: str) -> str:
+        """"; similar: ..." naming up to five entries close to ``name`` (same last path
+        part, or close spelling ignoring case), or ""."""
+        last = name.lower().rsplit("/", 1)[-1]
+        close = [n for n in self._entries if last and n.lower().endswith(last)]
+        lowered = {n.lower(): n for n in self._entries}
+        close += [lowered[n] for n in difflib.get_close_matches(name.lower()[:200],
+                                                                 lowered, 5, 0.6)]
+        close = list(dict.fromkeys(close))[:5]
+        return f"; similar: {', '.join(clip(n, 200) for n in close)}" if close else ""
+
     def _entry(self, name: str) -> _Entry:
         if not isinstance(name, str):
             raise TypeError(f"entry name must be a str, got {type_name(name)}")
         e = self._entries.get(name)
         if e is None:
-            close = [n for n in self._entries if n.lower().endswith(name.lower().rsplit("/", 1)[-1])]
-            hint = f"; similar: {', '.join(close[:5])}" if close else ""
-            raise DataLogError(f"{_shown(self.source)}: no entry named {clip(name, 200)}{hint}")
+            raise DataLogError(f"{_shown(self.source)}: no entry named {clip(name, 200)}"
+                               f"{self._close_names(name)}")
         if len(e.types) > 1:
             shown = ", ".join(cut(t) for t in e.types[:5])
             more = f", ... ({len(e.types)} types)" if len(e.types) > 5 else ""
             raise DataLogError(f"{_shown(self.source)}: entry {clip(name, 200)} was started "
                                f"with several types ({shown}{more})")
         return e
+
+    def table(self, name: str) -> dict[str, np.ndarray]:
+        """Any entry as named columns, one row per record, sorted by timestamp (stable):
+        ``"timestamp"`` int64 µs, then the entry's fields (see "Tables for analysis" in
+        the module documentation). The arrays are read-only and shared between calls:
+        copy one to change it. DataLogError for an unknown name (naming close ones), a
+        damaged record or a struct that cannot be decoded (no schema, bit fields)."""
+        return self._once("table", name, "", self._table)  # type: ignore[no-any-return]
+
+    def _table(self, name: str, _: str) -> dict[str, np.ndarray]:
+        e = self._entry(name)
+        what = f"{_shown(self.source)}: entry {clip(name, 200)} ({cut(e.types[0])})"
+
+        def typed_plan(base: str) -> Any:
+            got = self._typed_plans.get(base)
+            if got is None:
+                try:
+                    got = structschema.typed_plan(base[7:], self._schemas)
+                except DataLogError as err:
+                    got = err
+                self._typed_plans[base] = got
+            if isinstance(got, DataLogError):
+                raise DataLogError(f"{what}: {got}")
+            return got
+
+        return logtable.table(e, typed_plan, what)
+
+    def dataframe(self, name: str) -> Any:
+        """:meth:`table` as a pandas DataFrame (a writable copy): one column per
+        1-D column of the table; a 2-D column (arrays whose records agree in length) is
+        split into one column per element, ``"[i]"`` for a plain array and
+        ``"[i].<field>"`` for a struct array, element by element. Needs pandas:
+        ``pip install "drivekin[pandas]"``."""
+        try:
+            pandas = importlib.import_module("pandas")
+        except ImportError as e:
+            raise ImportError('LogData.dataframe needs pandas: pip install "drivekin[pandas]" '
+                              '(LogData.table gives the same columns as numpy arrays)') from e
+        columns = self.table(name)
+        out: dict[str, np.ndarray] = {}
+        wide = [k for k, v in columns.items() if v.ndim == 2]
+        for k, v in columns.items():
+            if v.ndim == 1:
+                out[k] = v
+        if wide:
+            plain = len(columns) == 2 and wide == ["value"]
+            for i in range(columns[wide[0]].shape[1]):
+                for k in wide:
+                    out[f"[{i}]" if plain else f"[{i}].{k}"] = columns[k][:, i]
+        return pandas.DataFrame(out, copy=True)
 
     def records(self, name: str) -> tuple[np.ndarray, list[bytes]]:
         """Timestamps (int64 µs) and raw payloads of an entry, in file order (unsorted)."""
@@ -288,6 +399,33 @@ class LogData:
         size of an element is known (structs, plain numbers)."""
         if ragged not in ("error", "drop"):
             raise ValueError(f"ragged must be 'error' or 'drop', got {ragged!r}")
+        return self._once("values", name, ragged, self._values)  # type: ignore[no-any-return]
+
+    def _once(self, kind: str, name: str, option: str, decode: Any) -> Any:
+        """``decode(name, option)``, computed once per (kind, name, option): its arrays
+        made read-only and kept, a DataLogError kept and raised again."""
+        self._entry(name)       # TypeError / DataLogError for a bad name, not cached
+        key = (kind, name, option)
+        got = self._decoded.get(key)
+        if got is not None:
+            self._decoded.move_to_end(key)
+        else:
+            self._stats[kind, name] += 1
+            try:
+                got = decode(name, option)
+            except DataLogError as err:
+                got = err
+            else:
+                for a in got.values() if isinstance(got, dict) else got:
+                    a.flags.writeable = False
+            self._decoded[key] = got
+            if len(self._decoded) > _KEEP:
+                self._decoded.popitem(last=False)
+        if isinstance(got, DataLogError):
+            raise DataLogError(*got.args)
+        return got
+
+    def _values(self, name: str, ragged: str) -> tuple[np.ndarray, np.ndarray]:
         e = self._entry(name)
         type_string = e.types[0]
         what = f"{_shown(self.source)}: entry {clip(name, 200)} ({cut(type_string)})"
@@ -343,6 +481,9 @@ class LogData:
         int64 (N,) µs, ``counts`` int64 (N,) elements per record, and every record's
         elements concatenated in that order: float64 (sum of counts,) or
         (sum of counts, k) for structs of k doubles, as :meth:`values` shapes them."""
+        return self._once("concatenated", name, "", self._concatenated)  # type: ignore[no-any-return]
+
+    def _concatenated(self, name: str, _: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         e = self._entry(name)
         type_string = e.types[0]
         try:
@@ -372,15 +513,33 @@ class LogData:
 
 
 def _open(path: str | bytes) -> Any:
-    """The file's contents: a read-only memory map, or bytes where the file cannot be
-    mapped (empty files, pipes)."""
-    with open(path, "rb") as f:
+    """The contents of a regular file: a read-only memory map, or bytes where the file
+    cannot be mapped (empty files). Anything else (a directory, a FIFO, a device such as
+    /dev/zero, a socket) is refused before a byte is read: it is opened without
+    blocking (a FIFO with no writer would wait forever) and checked with fstat."""
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_BINARY", 0))
+    st = os.fstat(fd)
+    if not stat.S_ISREG(st.st_mode):
+        os.close(fd)
+        raise DataLogError(f"{_shown(os.fsdecode(path))}: not a regular file "
+                           f"({_file_kind(st.st_mode)}); a .wpilog is read from a file on "
+                           f"disk")
+    with open(fd, "rb") as f:
         try:
-            if os.fstat(f.fileno()).st_size > 0:
-                return mmap.mmap(f.fileno(), 0, access=mmap.ACCESS_READ)
+            if st.st_size > 0:
+                return mmap.mmap(fd, 0, access=mmap.ACCESS_READ)
         except (OSError, ValueError):
             pass
         return f.read()
+
+
+def _file_kind(mode: int) -> str:
+    for test, kind in ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO, "a FIFO or pipe"),
+                       (stat.S_ISCHR, "a character device"), (stat.S_ISBLK, "a block device"),
+                       (stat.S_ISSOCK, "a socket")):
+        if test(mode):
+            return kind
+    return "not a regular file"
 
 
 def read(source: str | os.PathLike[str] | bytes | bytearray | memoryview, *,

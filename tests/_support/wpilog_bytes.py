@@ -150,7 +150,8 @@ _NUMERIC = ("double", "float", "int64", "boolean")
 
 
 def exercise(data: bytes, allowTruncated: bool = False) -> list[str]:
-    """Read ``data`` and decode every entry; the DataLogError messages met, in order."""
+    """Read ``data`` and decode every entry (as a table and as values); the DataLogError
+    messages met, in order."""
     from drivekin import datalog
     try:
         log = datalog.read(data, allowTruncated=allowTruncated)
@@ -161,6 +162,11 @@ def exercise(data: bytes, allowTruncated: bool = False) -> list[str]:
         assert info.records >= 0 and isinstance(info.columns, tuple)
         try:
             log.records(name)
+            if len(info.type.split("|")) == 1:
+                log.table(name)
+        except datalog.DataLogError as e:
+            errors.append(str(e))
+        try:
             if info.type.startswith("struct:") or info.type.rstrip("[]") in _NUMERIC:
                 log.values(name, ragged="drop")
                 if info.type.endswith("[]"):

@@ -307,3 +307,108 @@ def test_the_calibrate_command_line_reports_a_hostile_file_in_one_line(case, tmp
     assert "Traceback" not in err and out == "" and not out_json.exists()
     assert errors[0].startswith(f"python -m drivekin calibrate: error: {path}")
     assert len(errors[0]) < 1000, errors[0][:300]
+
+
+def _read_in_a_thread(path):
+    """datalog.read(path)'s outcome, or "blocked" after 5 s (a FIFO read would wait)."""
+    import threading
+    box: list = []
+
+    def run():
+        try:
+            box.append(datalog.read(path))
+        except Exception as e:           # noqa: BLE001 - the outcome is what is tested
+            box.append(e)
+
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    thread.join(5.0)
+    return box[0] if box else "blocked"
+
+
+@pytest.mark.parametrize("kind", ["/dev/zero", "/dev/null", "fifo", "directory"])
+def test_non_regular_files_are_refused_before_reading(kind, tmp_path):
+    # /dev/zero never ends, a FIFO with no writer blocks, a directory has no bytes.
+    if kind == "fifo":
+        if not hasattr(os, "mkfifo"):
+            pytest.skip("no FIFOs here")
+        path = tmp_path / "pipe.wpilog"
+        os.mkfifo(path)
+    elif kind == "directory":
+        path = tmp_path / "folder.wpilog"
+        path.mkdir()
+    else:
+        path = kind
+        if not os.path.exists(path):
+            pytest.skip(f"no {kind} here")
+    tracemalloc.start()
+    try:
+        got = _read_in_a_thread(path)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert isinstance(got, DataLogError), got
+    message = str(got)
+    assert message.startswith(f"{path}: not a regular file (") and "\n" not in message
+    assert peak < 1 << 20, peak
+
+
+def test_a_regular_file_is_still_read(tmp_path):
+    path = tmp_path / "small.wpilog"
+    path.write_bytes(W.small_log())
+    assert datalog.read(path).table("/d")["value"].tolist() == [0.5, 1.0, 1.5, 2.0, 2.5, 9.0]
+
+
+def test_the_replay_command_line_refuses_dev_zero_in_one_line(capsys):
+    from drivekin.app.cli import main
+    if not os.path.exists("/dev/zero"):
+        pytest.skip("no /dev/zero here")
+    code = main(["replay", "/dev/zero", "--no-write"])
+    err = capsys.readouterr().err
+    assert code == 1 and "Traceback" not in err
+    assert [line for line in err.splitlines() if "error" in line] == [
+        "python -m drivekin replay: error: /dev/zero: not a regular file (a character "
+        "device); a .wpilog is read from a file on disk"]
+
+
+def test_tables_of_hostile_structs_build_no_columns():
+    log = datalog.read(W.HOSTILE["struct double d[200000000]"][0]())
+    with pytest.raises(DataLogError, match=r"<buffer>: entry '/x' \(struct:Big\): struct:Big "
+                                           r"has more than 65536 doubles per element"):
+        log.table("/x")
+    deep = datalog.read(W.HOSTILE["chain of 3000 nested structs"][0]())
+    assert deep.table("/x") ["a." * 2999 + "x"].tolist() == [0.0]
+
+
+@pytest.mark.parametrize("schema, message", [
+    ("int32 b:3", "is a bit field"), ("double a[0]", "no members"),
+    ("char c[0]", "holds no bytes"), ("Nope n", "no schema for struct:Nope"),
+])
+def test_tables_refuse_what_they_cannot_decode(schema, message):
+    data = W.struct_log({"T": schema}, "struct:T", [bytes(8)])
+    with pytest.raises(DataLogError, match=message):
+        datalog.read(data).table("/x")
+
+
+def test_tables_decode_enums_integers_and_text():
+    schema = "enum {a=1,b=2} int8 e;uint16 u;char name[5];bool ok;float f"
+    payload = struct.pack("<bH5s?f", 2, 65535, b"ab\0\0\0", True, 0.5)
+    t = datalog.read(W.struct_log({"T": schema}, "struct:T", [payload])).table("/x")
+    assert {k: v.tolist() for k, v in t.items()} == {
+        "timestamp": [10], "e": [2], "u": [65535], "name": ["ab"], "ok": [True], "f": [0.5]}
+
+
+def test_a_wide_struct_array_that_changes_length_is_refused_before_building_cells():
+    # 40,000 empty records and one of 1,000 elements of a 65,536-column struct would be
+    # 2.6e9 per-record arrays; refused before any is built.
+    payloads = [b""] * 40_000 + [bytes(8 * 65_536)]
+    data = W.struct_log({"W": "double d[65536]"}, "struct:W[]", payloads)
+    tracemalloc.start()
+    try:
+        with pytest.raises(DataLogError, match=r"change length between records and 65536 "
+                                               r"columns of 40001 records"):
+            datalog.read(data).table("/x")
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert peak < 4 * len(data) + (16 << 20), peak

@@ -48,12 +48,17 @@ _MAX_COUNT_DIGITS = 9                   # an array count of more is beyond _MAX_
 _DOUBLE = ("double", "float64")
 _OTHER_SCALARS = frozenset(("bool", "char", "int8", "int16", "int32", "int64", "uint8",
                             "uint16", "uint32", "uint64", "float", "float32"))
+# Bytes of each scalar type (WPILib packs struct members without padding, little-endian).
+SCALAR_BYTES = {"double": 8, "float64": 8, "bool": 1, "char": 1, "int8": 1, "uint8": 1,
+                "int16": 2, "uint16": 2, "int32": 4, "uint32": 4, "int64": 8, "uint64": 8,
+                "float": 4, "float32": 4}
 
 
 class _Member(NamedTuple):
     name: str
     type: str
     count: int | None                   # None: not an array
+    special: str | None = None          # "enum" or "bit field": what only tables decode
 
 
 def _tokens(decl: str) -> list[str] | None:
@@ -125,13 +130,24 @@ def _parse_member(struct: str, decl: str) -> _Member:
         i += 2
     if i != len(toks):
         raise bad()
-    if enum or bits:
-        raise datalog.DataLogError(f"struct:{cut(struct)}: member {clip(mname)} is an enum or bit "
-                                   f"field; only structs of doubles are decoded")
-    if mtype in _OTHER_SCALARS:
-        raise datalog.DataLogError(f"struct:{cut(struct)}: member {clip(mname)} is {mtype}; only "
-                                   f"structs of doubles are decoded")
-    return _Member(mname, mtype, count)
+    return _Member(mname, mtype, count, "bit field" if bits else "enum" if enum else None)
+
+
+def _check_member(struct: str, m: _Member, typed: bool) -> None:
+    """Refuse what the decoder at hand cannot decode: anything but doubles for
+    :meth:`LogData.values` (``typed=False``), bit fields for tables."""
+    if typed:
+        if m.special == "bit field":
+            raise datalog.DataLogError(f"struct:{cut(struct)}: member {clip(m.name)} is a bit "
+                                       f"field, which drivekin does not decode; "
+                                       f"LogData.records gives the raw bytes")
+        return
+    if m.special is not None:
+        raise datalog.DataLogError(f"struct:{cut(struct)}: member {clip(m.name)} is an enum or "
+                                   f"bit field; only structs of doubles are decoded")
+    if m.type in _OTHER_SCALARS:
+        raise datalog.DataLogError(f"struct:{cut(struct)}: member {clip(m.name)} is {m.type}; "
+                                   f"only structs of doubles are decoded")
 
 
 def _members(name: str, schemas: dict[str, str]) -> list[_Member]:
@@ -161,19 +177,28 @@ def _digits_below(n: int) -> int:
 class _Plan(NamedTuple):
     root: str
     members: dict[str, list[_Member]]   # every struct reachable from root
-    columns: int                        # doubles per element of root
+    columns: int                        # columns per element of root (doubles, untyped)
+    nbytes: dict[str, int]              # bytes per element of each struct
 
 
-def _struct_plan(root: str, schemas: dict[str, str]) -> _Plan:
+def _struct_plan(root: str, schemas: dict[str, str], typed: bool = False) -> _Plan:
     """Parse struct ``root`` and every struct it nests (an explicit stack, so any depth
-    works; a cycle is an error), then count its doubles bottom-up, refusing a struct
-    beyond _MAX_COLUMNS / _MAX_COLUMN_CHARS before any column is built."""
-    members = {root: _members(root, schemas)}
+    works; a cycle is an error), then count its columns bottom-up, refusing a struct
+    beyond _MAX_COLUMNS / _MAX_COLUMN_CHARS before any column is built. Untyped, every
+    member must be a double (one column each); typed, any scalar but bit fields (a char
+    array is one text column)."""
+    def parsed(name: str) -> list[_Member]:
+        got = _members(name, schemas)
+        for m in got:
+            _check_member(name, m, typed)
+        return got
+
+    members = {root: parsed(root)}
     state = {root: 1}                   # 1: on the path, 2: done
     path, todo, order = [root], [iter(members[root])], []
     while todo:
         for m in todo[-1]:
-            if m.type in _DOUBLE or state.get(m.type) == 2:
+            if m.type in SCALAR_BYTES or state.get(m.type) == 2:
                 continue
             if state.get(m.type) == 1:
                 cycle = path[path.index(m.type):] + [m.type]
@@ -182,7 +207,7 @@ def _struct_plan(root: str, schemas: dict[str, str]) -> _Plan:
                          + " -> ".join(cycle[-3:]))
                 raise datalog.DataLogError(f"struct:{cut(m.type)} contains itself (schema cycle "
                                            f"{cut(shown, 300)})")
-            members[m.type] = _members(m.type, schemas)
+            members[m.type] = parsed(m.type)
             state[m.type] = 1
             path.append(m.type)
             todo.append(iter(members[m.type]))
@@ -194,18 +219,23 @@ def _struct_plan(root: str, schemas: dict[str, str]) -> _Plan:
             order.append(done)
     ncols: dict[str, int] = {}
     chars: dict[str, int] = {}
+    nbytes: dict[str, int] = {}
     for s in order:                     # nested structs before the structs holding them
-        n = c = 0
+        n = c = b = 0
         for m in members[s]:
             reps = 1 if m.count is None else m.count
-            elem = len(m.name) if m.count is None else reps * (len(m.name) + 2) + _digits_below(reps)
-            if m.type in _DOUBLE:
-                n += reps
+            text = m.type == "char"
+            elem = (len(m.name) if m.count is None or text
+                    else reps * (len(m.name) + 2) + _digits_below(reps))
+            if m.type in SCALAR_BYTES:
+                n += 1 if text else reps
                 c += elem
+                b += reps * SCALAR_BYTES[m.type]
             else:
                 sn = ncols[m.type]
                 n += reps * sn
                 c += elem * sn + reps * (sn + chars[m.type])
+                b += reps * nbytes[m.type]
             if n > _MAX_COLUMNS or c > _MAX_COLUMN_CHARS:
                 raise datalog.DataLogError(
                     f"struct:{cut(root)} has more than {_MAX_COLUMNS} doubles per element "
@@ -214,8 +244,8 @@ def _struct_plan(root: str, schemas: dict[str, str]) -> _Plan:
                     f"structs")
         if n == 0:
             raise datalog.DataLogError(f"struct:{cut(s)} has no members")
-        ncols[s], chars[s] = n, c
-    return _Plan(root, members, ncols[root])
+        ncols[s], chars[s], nbytes[s] = n, c, b
+    return _Plan(root, members, ncols[root], nbytes)
 
 
 def plan_columns(plan: _Plan) -> tuple[str, ...]:
@@ -237,6 +267,47 @@ def plan_columns(plan: _Plan) -> tuple[str, ...]:
                 items += [(prefix + e + ".", m.type) for e in elems]
         stack += reversed(items)
     return tuple(out)
+
+
+class Field(NamedTuple):
+    path: str                           # "translation.x", "modules[2].angle.value"
+    type: str                           # a SCALAR_BYTES type
+    offset: int                         # bytes into one element
+    chars: int | None                   # a char array's length (one text column)
+
+
+def plan_fields(plan: _Plan) -> list[Field]:
+    """The scalar fields of a typed plan in schema order, each with its byte offset in
+    one element (nested structs and scalar arrays inlined, a char array one field),
+    built top-down with an explicit stack."""
+    out: list[Field] = []
+    stack: list[Field | tuple[str, str, int]] = [("", plan.root, 0)]
+    while stack:
+        top = stack.pop()
+        if isinstance(top, Field):
+            out.append(top)
+            continue
+        prefix, s, offset = top
+        items: list[Field | tuple[str, str, int]] = []
+        for m in plan.members[s]:
+            if m.type == "char" and m.count is not None:
+                items.append(Field(prefix + m.name, "char", offset, m.count))
+                offset += m.count
+                continue
+            size = SCALAR_BYTES.get(m.type) or plan.nbytes[m.type]
+            elems = [m.name] if m.count is None else [f"{m.name}[{i}]" for i in range(m.count)]
+            for e in elems:
+                items.append(Field(prefix + e, m.type, offset, None) if m.type in SCALAR_BYTES
+                             else (prefix + e + ".", m.type, offset))
+                offset += size
+        stack += reversed(items)
+    return out
+
+
+def typed_plan(name: str, schemas: dict[str, str]) -> _Plan:
+    """The plan of struct ``name`` with members of any scalar type but bit fields (for
+    tables), resolving nested structs with the log's schemas first, then drivekin's."""
+    return _struct_plan(name, schemas, typed=True)
 
 
 def struct_columns(name: str, schemas: dict[str, str]) -> tuple[str, ...]:
