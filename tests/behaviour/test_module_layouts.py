@@ -118,3 +118,14 @@ def test_positions_naming_a_folder_no_layout_reads_points_to_module_entries(tmp_
     path = _corner_log(tmp_path, ("a", "b", "c", "d"))
     with pytest.raises(datalog.DataLogError, match="folder of 9 entries.*--module-entries"):
         replay.replayLog(path, replay.ReplayConfig(positions="/Robot"))
+
+
+def test_columns_are_integrated_as_each_alone():
+    rng = np.random.default_rng(3)
+    t = np.cumsum(rng.integers(5_000, 30_000, 300)).astype(np.int64)
+    t[150:] += 2_000_000                               # a gap the held rule applies to
+    v = rng.normal(size=(300, 4))
+    q = np.sort(rng.integers(int(t[0]), int(t[-1]) + 500_000, 500))
+    both = integral_at(t, v, q)
+    for k in range(4):
+        assert np.array_equal(both[:, k], integral_at(t, v[:, k], q))

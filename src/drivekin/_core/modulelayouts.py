@@ -36,24 +36,30 @@ def integral_at(t: np.ndarray, v: np.ndarray, at: np.ndarray) -> np.ndarray:
     linear. The error of a trapezoid over one interval h is h³·|a'|/12 for a jerk a' of the
     wheel speed, so the distance error grows linearly with time at h²·|a'|/12 per second
     (2e-5 m/s for 50 Hz records and 6 m/s³), plus whatever the writer's sampling hides.
+    ``v`` may be (N, k): k velocities on the same records, integrated column by column.
     """
     ts = t.astype(np.float64) / 1e6
     vs = np.asarray(v, dtype=np.float64)
     dt = np.diff(ts)
     if len(dt):
-        period = float(np.median(dt[dt > 0])) if (dt > 0).any() else 0.0
+        pos = dt[dt > 0]
+        period = float(np.median(pos)) if len(pos) else 0.0
         gap = np.flatnonzero(dt > HELD_GAP * period) if period > 0 else np.array([], int)
         if len(gap):
             ts = np.insert(ts, gap + 1, ts[gap + 1] - period)
-            vs = np.insert(vs, gap + 1, vs[gap])
+            vs = np.insert(vs, gap + 1, vs[gap], axis=0)
     h = np.diff(ts)
-    cum = np.concatenate([[0.0], np.cumsum(0.5 * (vs[1:] + vs[:-1]) * h)])
+    if vs.ndim == 2:
+        h = h[:, None]
+    cum = np.concatenate([np.zeros((1,) + vs.shape[1:]),
+                          np.cumsum(0.5 * (vs[1:] + vs[:-1]) * h, axis=0)])
     q = at.astype(np.float64) / 1e6
     j = np.clip(np.searchsorted(ts, q, side="right") - 1, 0, len(ts) - 1)
-    dq = q - ts[j]
     nxt = np.minimum(j + 1, len(ts) - 1)
-    span = ts[nxt] - ts[j]
-    slope = np.divide(vs[nxt] - vs[j], span, out=np.zeros_like(span), where=span > 0)
+    dq, span = q - ts[j], ts[nxt] - ts[j]
+    if vs.ndim == 2:
+        dq, span = dq[:, None], span[:, None]
+    slope = np.divide(vs[nxt] - vs[j], span, out=np.zeros(vs[j].shape), where=span > 0)
     return cum[j] + vs[j] * dq + 0.5 * slope * dq * dq
 
 
@@ -445,9 +451,8 @@ def _state_array(log: LogData, e: EntryInfo, units: Options) -> list[Signal]:
     if v.ndim != 3 or v.shape[1] < 2 or len(t) < 2:
         return []
     P = np.empty_like(v)
-    for j in range(v.shape[1]):
-        P[:, j, 0] = integral_at(t, v[:, j, 0], t)
-        P[:, j, 1] = v[:, j, 1]
+    P[:, :, 0] = integral_at(t, v[:, :, 0], t)
+    P[:, :, 1] = v[:, :, 1]
     return [Signal("positions", t, P, (e.name,), "module velocity states", "swerve",
                    "speed m/s, angle rad (SwerveModuleState)", integrated=True,
                    why="integrated from measured module states")]
