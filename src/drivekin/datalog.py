@@ -686,7 +686,7 @@ class Writer:
             self._schemas.add(name[len("/.schema/"):])
         else:
             self._schema_for(type_string, timestamp)
-        entry = log.start(name, type_string, metadata, timestamp)
+        entry: int = log.start(name, type_string, metadata, timestamp)
         self._entries[name] = (entry, type_string)
         return entry
 

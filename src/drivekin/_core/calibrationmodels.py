@@ -44,7 +44,8 @@ class CalibrationModel:
 
     def spin_distances(self, r: Any, s: slice, i: int) -> np.ndarray | None:
         """Wheel ``i``'s distances over a spin window ``s`` (None: not usable there)."""
-        return r.positions[s][:, i]
+        out: np.ndarray = r.positions[s][:, i]
+        return out
 
     def step_rotations(self, r: Any) -> np.ndarray | None:
         """The robot's rotation (rad) between consecutive samples that the wheels imply
@@ -54,7 +55,8 @@ class CalibrationModel:
 
     def correct(self, P: np.ndarray, values: dict[str, Any]) -> np.ndarray:
         """The wheel samples ``P`` corrected by ``values`` (a copy)."""
-        return P * np.asarray(values.get("wheelRadiusScale", 1.0))
+        out: np.ndarray = P * np.asarray(values.get("wheelRadiusScale", 1.0))
+        return out
 
     def kinematics(self, r: Any, params: dict[str, Any]) -> Any:
         """The geometry the fitted replay uses (``r``'s, unless the parameters are it)."""
@@ -89,10 +91,13 @@ class _Holonomic(CalibrationModel):
         raise NotImplementedError
 
     def per_rad(self, kin: Any) -> np.ndarray:
-        return np.abs(self.matrix(kin)[:, 2])
+        out: np.ndarray = np.abs(self.matrix(kin)[:, 2])
+        return out
 
     def step_rotations(self, r: Any) -> np.ndarray:
-        return self.increments(r.positions) @ np.linalg.pinv(self.matrix(r.kinematics))[2]
+        out: np.ndarray = (self.increments(r.positions)
+                           @ np.linalg.pinv(self.matrix(r.kinematics))[2])
+        return out
 
 
 class SwerveCalibration(_Holonomic):
@@ -128,7 +133,8 @@ class SwerveCalibration(_Holonomic):
         dev = np.angle(np.exp(2j * (P[:, i, 1] - tangent))) / 2     # mod π
         if abs(float(np.mean(dev))) > self.TANGENT_TOLERANCE:
             return None
-        return P[:, i, 0]
+        out: np.ndarray = P[:, i, 0]
+        return out
 
     def correct(self, P: np.ndarray, values: dict[str, Any]) -> np.ndarray:
         P = P.copy()

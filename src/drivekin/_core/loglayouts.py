@@ -334,7 +334,9 @@ def _module_positions(log: LogData, prefix: str, mods: dict[int, _Module], units
         need = ("hdrive", "hturn", "htime")
         if not all(all(r in mods[i].entries for r in need) for i in order):
             return None
-        dist, ang, times = [], [], []
+        dist: list[np.ndarray] = []
+        ang: list[np.ndarray] = []
+        times: list[np.ndarray] = []
         for i in order:
             e = mods[i].entries
             di, dsuf = e["hdrive"]
@@ -429,7 +431,8 @@ def _held(log: LogData, clock: str, name: str, where: str) -> np.ndarray:
     first = np.concatenate([[0], np.cumsum(cc)[:-1]]).astype(np.int64)
     total = int(cc.sum())
     idx = np.repeat(starts[k], cc) + (np.arange(total) - np.repeat(first, cc))
-    return vx[idx]
+    held: np.ndarray = vx[idx]
+    return held
 
 
 def rate(t: np.ndarray) -> float:

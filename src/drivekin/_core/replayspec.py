@@ -10,17 +10,19 @@ options or the log, whether a gyro can be replaced by the wheels, and how a bare
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeAlias
 
 import numpy as np
 
 from drivekin._core import calibrationmodels as models
 
 if TYPE_CHECKING:
+    # The catalog holds these specs, so a program that type-checks against drivekin's
+    # classes reaches this module: the log types stay out of its import graph (Any).
     from drivekin._core.catalog import Entry
-    from drivekin.datalog import LogData
-    from drivekin._core.loglayouts import Signal
-    from drivekin.replay import ReplayConfig
+LogData: TypeAlias = Any
+Signal: TypeAlias = Any
+ReplayConfig: TypeAlias = Any
 
 
 def _error(message: str) -> Exception:
@@ -209,7 +211,8 @@ class DifferentialSpec(ReplaySpec):
     def wheel_heading(self, P: np.ndarray, cfg: ReplayConfig) -> np.ndarray:
         if not cfg.trackwidth:
             raise _error("heading from the wheels needs --trackwidth")
-        return (P[:, 1] - P[:, 0]) / cfg.trackwidth
+        heading: np.ndarray = (P[:, 1] - P[:, 0]) / float(cfg.trackwidth)
+        return heading
 
     def geometry(self, log: LogData, width: int, cfg: ReplayConfig, pos: Signal
                  ) -> tuple[Any, str]:

@@ -57,7 +57,7 @@ SCALAR_BYTES = {"double": 8, "float64": 8, "bool": 1, "char": 1, "int8": 1, "uin
 class _Member(NamedTuple):
     name: str
     type: str
-    count: int | None                   # None: not an array
+    count: int | None  # type: ignore[assignment]  # (shadows tuple.count) None: not an array
     special: str | None = None          # "enum" or "bit field": what only tables decode
 
 
