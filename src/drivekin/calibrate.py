@@ -97,7 +97,6 @@ from drivekin._core.calibrationfit import (  # noqa: F401 (CONFIDENCE: calibrate
 from drivekin._core.calibrationmodels import CalibrationModel, model_for
 from drivekin._core.plotting import pyplot
 from drivekin.datalog import DataLogError, LogData
-from drivekin.geometry import Pose2d
 from drivekin.replay import DriftStats, ReplayConfig, ReplayResult
 
 __all__ = ["CalibrationError", "CalibrationResult", "Parameter", "Window", "calibrate",

@@ -70,7 +70,6 @@ from drivekin._core.plotting import pyplot
 from drivekin._core.replayspec import ReplaySpec
 from drivekin._core.replayinputs import _gyro, _named_pose, _pose, _positions
 from drivekin.datalog import DataLogError, LogData
-from drivekin.deadwheel import DeadWheelKinematics
 from drivekin.geometry import Pose2d, Rotation2d
 
 __all__ = ["DriftStats", "ReplayConfig", "ReplayResult", "listing", "plotReplay",
