@@ -11,6 +11,7 @@ import pytest
 
 from drivekin import datalog, replay
 from drivekin._core import loglayouts as layouts
+from drivekin._core.display import escape
 from drivekin._core.replayinputs import _pose
 
 LOGS = pathlib.Path(__file__).resolve().parents[2] / ".." / "shared" / "reallogs" / "logs"
@@ -56,7 +57,7 @@ def real():
 
 def _lines(text, log, entry):
     """The lines of ``entry``: its (printed) name, at least two spaces, its type."""
-    shown = entry if entry.isprintable() else repr(entry)
+    shown = escape(entry)
     kind = log.entries[entry].type[:30]
     return [x for x in text.splitlines() if x.startswith(shown + "  ")
             and x[len(shown):].lstrip(" ").startswith(kind + " ")]

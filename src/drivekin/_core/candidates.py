@@ -40,8 +40,8 @@ from typing import Callable
 import numpy as np
 
 from drivekin._core import catalog
-from drivekin._core.loglayouts import (_TO_RAD, _UNIT_WORDS, Options, Signal, _join, _live,
-                                       _module_index, fold, unit_of)
+from drivekin._core.loglayouts import (_TO_RAD, Options, Signal, _join, _live,
+                                       _module_index, fold, unit_of, unit_suffix)
 from drivekin.datalog import DataLogError, EntryInfo, LogData
 from drivekin.geometry3d import Pose3d
 
@@ -52,14 +52,6 @@ CONTINUOUS_SPAN_US = 1_000_000
 def continuous(t: np.ndarray) -> bool:
     """At least ``CONTINUOUS_RECORDS`` records spanning ``CONTINUOUS_SPAN_US`` or more."""
     return len(t) >= CONTINUOUS_RECORDS and int(t.max()) - int(t.min()) >= CONTINUOUS_SPAN_US
-
-
-def _unit_suffix(leaf: str) -> str:
-    """The unit word a folded leaf name ends with (``headingdegrees`` -> ``degrees``)."""
-    for u in sorted(_UNIT_WORDS, key=len, reverse=True):
-        if leaf.endswith(u) and len(leaf) > len(u):
-            return u
-    return ""
 
 
 # --------------------------------------------------------------------------------------
@@ -143,7 +135,7 @@ def find_double_gyro(log: LogData, units: Options) -> list[Signal]:
         named = (3, "a SmartDashboard Gyro widget's value") if widget else gyro_score(e.name)
         if named is None:
             continue
-        suffix = _unit_suffix(fold(e.name.rpartition("/")[2]))
+        suffix = unit_suffix(fold(e.name.rpartition("/")[2]))
         u, said = units.gyro, "--gyro-units"
         if u is None:
             u, said = unit_of(suffix, e.metadata), "the entry's name or metadata"
@@ -283,7 +275,7 @@ _ANGLE_WORDS = ("angle", "heading", "rotation", "theta", "yaw")
 
 def _pose_part(leaf: str) -> tuple[str, str, str] | None:
     """(stem, part, unit suffix) of a folded leaf naming a pose's x, y or angle."""
-    suffix = _unit_suffix(leaf)
+    suffix = unit_suffix(leaf)
     core = leaf[:len(leaf) - len(suffix)] if suffix else leaf
     for w in _ANGLE_WORDS:
         if core.endswith(w):

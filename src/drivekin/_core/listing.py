@@ -19,6 +19,7 @@ import numpy as np
 from drivekin._core import loglayouts as layouts
 from drivekin._core.candidates import (CONTINUOUS_RECORDS, CONTINUOUS_SPAN_US, gyro_rank,
                                        gyro_rejected, pose_rank, pose_score)
+from drivekin._core.display import escape
 from drivekin._core.loglayouts import Signal
 from drivekin._core.replayinputs import _POSITION_RANK, _gyro, _pose, _positions
 from drivekin.datalog import DataLogError, EntryInfo, LogData
@@ -31,12 +32,6 @@ MAX_RATE_HZ = 1000.0
 _ANGLES = ("double", "float", "struct:Rotation2d")      # what a refused heading could be
 
 
-def shown(name: str) -> str:
-    """An entry name as printed: as it is, or ``repr``-escaped when it holds a control or
-    other unprintable character (ESC, BEL, CR, NUL, C1 controls, U+202E, ...)."""
-    return name if name.isprintable() else repr(name)
-
-
 def listed_rate(t: np.ndarray) -> float | None:
     """The median-interval rate (Hz) of timestamps ``t`` (µs), or None for fewer than
     ``CONTINUOUS_RECORDS`` records, a span under ``CONTINUOUS_SPAN_US`` or above
@@ -46,16 +41,13 @@ def listed_rate(t: np.ndarray) -> float | None:
     t = np.sort(t)
     if int(t[-1]) - int(t[0]) < CONTINUOUS_SPAN_US:
         return None
-    d = np.diff(t)
-    d = d[d > 0]
-    rate = 1e6 / float(np.median(d))
-    return rate if rate <= MAX_RATE_HZ else None
+    rate = layouts.rate(t)
+    return rate if 0 < rate <= MAX_RATE_HZ else None
 
 
 def _word(role: str, s: Signal) -> str:
     if role == "positions":
-        moving = "velocit" in (s.layout + s.units).lower()
-        return "velocity" if moving else "position"
+        return "velocity" if s.integrated else "position"
     return role
 
 
@@ -109,14 +101,14 @@ def listing(log: LogData, config: ReplayConfig | None = None, showAll: bool = Fa
     stand_in = used.get("gyro") is not None and used["gyro"].layout == "pose heading"
 
     infos = {e.name: e for e in log.entries.values() if not layouts.is_schema(e.name)}
-    width = min(max((len(shown(n)) for n in infos), default=5), 60)
+    width = min(max((len(escape(n)) for n in infos), default=5), 60)
     tw = max((len(e.type) for e in infos.values()), default=4)
     tw = min(tw, 30)
 
     def row(e: EntryInfo, text: str) -> str:
         rate = listed_rate(log._entries[e.name].ts)
         hz = f"{rate:.0f} Hz" if rate is not None else "-"
-        return (f"{shown(e.name):<{width}}  {e.type[:30]:<{tw}}  {e.records:>7} rec  "
+        return (f"{escape(e.name):<{width}}  {e.type[:30]:<{tw}}  {e.records:>7} rec  "
                 f"{hz:>7}  {text}").rstrip()
 
     cand_rows: list[str] = []
@@ -155,7 +147,7 @@ def listing(log: LogData, config: ReplayConfig | None = None, showAll: bool = Fa
             listed.add(n)
             refused_rows.append(row(e, f"not used: {why}"))
     rest = [e for n, e in infos.items() if n not in listed]
-    head = (f"{shown(log.source)}: {len(infos)} entries (schemas not counted); drivetrain "
+    head = (f"{escape(log.source)}: {len(infos)} entries (schemas not counted); drivetrain "
             f"candidates first, best first")
     notes_rows = [f"note: {x}" for x in notes]
     if showAll:

@@ -104,6 +104,7 @@ _SPEED_WORDS = {
 }
 _TO_RAD = {"rad": 1.0, "deg": math.pi / 180.0, "rot": 2.0 * math.pi}
 _FOOT = 0.3048
+_SUFFIXES = sorted(_UNIT_WORDS, key=len, reverse=True)     # longest first: "degrees", "deg"
 
 
 def _metadata_unit(metadata: str) -> str | None:
@@ -145,6 +146,15 @@ def speed_unit_of(suffix: str, metadata: str) -> str | None:
 def is_speed_metadata(metadata: str) -> bool:
     unit = _metadata_unit(metadata)
     return unit is not None and ("persec" in unit or unit in _SPEED_WORDS)
+
+
+def unit_suffix(leaf: str) -> str:
+    """The unit word a folded leaf name ends with (``headingdegrees`` -> ``degrees``), or
+    ``""``."""
+    for u in _SUFFIXES:
+        if leaf.endswith(u) and len(leaf) > len(u):
+            return u
+    return ""
 
 
 def angle_scale(unit: str) -> float:

@@ -95,8 +95,7 @@ def module_input(label: str, drive: EntryInfo, angle: EntryInfo, units: Options,
                         or any(w in leaf for w in ("velocity", "speed"))
                         or L.is_speed_metadata(drive.metadata))
     if not drive_suffix:
-        drive_suffix = next((u for u in sorted(L._UNIT_WORDS, key=len, reverse=True)
-                             if leaf.endswith(u) and len(leaf) > len(u)), "")
+        drive_suffix = L.unit_suffix(leaf)
     unit = (L.speed_unit_of(drive_suffix, drive.metadata) if velocity
             else L.unit_of(drive_suffix, drive.metadata)) or drive_unit
     dscale, dunits = L._drive_scale(unit, drive.name, units)
