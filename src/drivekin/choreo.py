@@ -32,12 +32,15 @@ from typing import Any
 
 import numpy as np
 
+from drivekin._core import choreocheck as _choreocheck
+from drivekin._core.choreocheck import FeasibilityRecord, FeasibilityReport
 from drivekin._core.metadata import depth
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
 from drivekin.motor import DCMotor
 from drivekin.robotconfig import ModuleConfig, RobotConfig
 
-__all__ = ["ChoreoError", "ChoreoTrajectory", "load", "MAX_BYTES"]
+__all__ = ["ChoreoError", "ChoreoTrajectory", "FeasibilityRecord", "FeasibilityReport",
+           "load", "MAX_BYTES"]
 
 MAX_BYTES = 32 * 1024 * 1024   # the largest real trajectory is ~0.4 MB (1,619 samples)
 MAX_DEPTH = 64                 # events hold PathPlanner command trees; samples need 3
@@ -352,6 +355,46 @@ class ChoreoTrajectory:
             x, y, heading = FIELD_LENGTH - x, FIELD_WIDTH - y, math.pi + heading
         return Pose2d(x, y, Rotation2d(heading))
 
+
+    # -- Feasibility and feedforward (drivekin._core.choreocheck) --------------------------
+
+    def check(self, config: RobotConfig | None = None, *, maxSteerVelocity: float | None = None,
+              voltage: float = 12.0) -> FeasibilityReport:
+        """Check the samples against a robot's real limits (default: the embedded config):
+        per sample and module, the module speed against ``maxDriveVelocityMPS`` and the
+        motor's free speed at ``voltage``; the drive torque (the force along the wheel
+        times the radius) against the motor's torque–speed curve at ``voltage`` and the
+        current limit; the force against friction μ·m·g/N; with ``maxSteerVelocity``
+        (rad/s), the steering rate between samples (modulo π: a module may reverse its
+        drive instead of turning half a turn; modules under 1 cm/s skipped); and, per
+        sample, the torque balance Σ rᵢ×Fᵢ = J·α with the forces on the modules in
+        ``moduleOrder`` (the embedded config's MOI and positions). The config's modules
+        are matched to the force columns by position (one per corner). Comparisons allow
+        the file's 5-decimal rounding. Returns a :class:`FeasibilityReport`."""
+        config = self._require_config(config)
+        return _choreocheck.check(self._samples, self._kind, config,
+                                  self._config if self._config is not None else config,
+                                  maxSteerVelocity=maxSteerVelocity, voltage=voltage)
+
+    def moduleSetpoints(self, config: RobotConfig | None = None) -> dict[str, np.ndarray]:
+        """The feedforward per sample and module (arrays samples × modules, the config's
+        module order, default the embedded config): ``speed`` (m/s ≥ 0), ``angle`` (rad,
+        robot frame; a stopped module keeps its angle), ``acceleration`` (the contact
+        point's, along the wheel, m/s²) and ``current`` (A,
+        ``driveMotor.getCurrent(torque=(F·wheel direction)·radius)``)."""
+        return _choreocheck.moduleSetpoints(self._samples, self._kind,
+                                            self._require_config(config))
+
+    def _require_config(self, config: RobotConfig | None) -> RobotConfig:
+        if config is None:
+            if self._config is None:
+                raise ValueError(f"{self._path}: the trajectory carries no robot config; "
+                                 f"pass config=RobotConfig(...)")
+            return self._config
+        if not isinstance(config, RobotConfig):
+            raise TypeError(f"config must be a drivekin RobotConfig or None, got "
+                            f"{type(config).__name__}")
+        return config
 
 FIELD_LENGTH = 16.541          # m, choreolib's 2026 field (util/field_dimensions.py)
 FIELD_WIDTH = 8.0692
