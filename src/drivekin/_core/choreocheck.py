@@ -19,6 +19,12 @@ import numpy as np
 QUANTITIES = ("moduleSpeed", "driveTorque", "current", "friction", "steerRate",
               "moduleOrder")
 ROUNDING = 5e-6          # half a unit in the 5th decimal, Choreo's rounding of every value
+# Beyond the rounding, the torque balance allows this fraction of the moments in it and
+# this many N·m (real files balance to 3.2e-4 N·m; a file whose values were scaled after
+# rounding carries scaled rounding errors); forces on the wrong modules miss by a large
+# part of J·α, tens of N·m.
+BALANCE = 1e-4
+BALANCE_FLOOR = 1e-3
 STOPPED = 0.01           # m/s: a module this slow has no steering direction worth checking
 
 # Choreo's swerve force columns, FL, BL, BR, FR, by the signs of the module's (x, y).
@@ -30,7 +36,7 @@ class FeasibilityRecord(NamedTuple):
     module order, −1 for the whole robot), ``quantity`` (one of :data:`QUANTITIES`, or
     ``columnShift`` among warnings) had ``value`` against ``limit`` (SI units: m/s, N·m,
     A, N, rad/s; ``moduleOrder``: the torque-balance residual |Σ rᵢ×Fᵢ − J·α| in N·m
-    against what rounding explains)."""
+    against what rounding explains plus 1e-4 of Σ|rᵢ||Fᵢ| + J·|α| and 1e-3 N·m)."""
     time: float
     module: int
     quantity: str
@@ -235,21 +241,23 @@ def _balance(s: np.ndarray, kind: str, planned: Any, warnings: list[FeasibilityR
         fx, fy = s[:, 10:14][:, order], s[:, 14:18][:, order]
         residual = np.sum(rx * fy - ry * fx, axis=1) - J * s[:, 9]
         arm = np.hypot(loc[:, 0], loc[:, 1])
+        moment = np.sum(arm * np.hypot(fx, fy), axis=1) + J * np.abs(s[:, 9])
         tol = (np.sum(arm * (ROUNDING * math.sqrt(2) + ROUNDING * np.hypot(fx, fy)), axis=1)
                + J * ROUNDING)
-        return residual, tol + 1e-9
+        return residual, tol + BALANCE * moment + BALANCE_FLOOR
     _differential_columns(loc)
     half = 0.5 * _track(loc)
     fl, fr, alpha = s[:, 10], s[:, 11], s[:, 9]
     if _shifted(s, loc):
         fl, fr, alpha = s[:, 9], s[:, 10], (s[:, 8] - s[:, 7]) / (2 * half)
     residual = (fr - fl) * half - J * alpha
-    tol = 2 * half * ROUNDING + J * ROUNDING * (1 + 1 / half) + 1e-9
+    tol = (2 * half * ROUNDING + J * ROUNDING * (1 + 1 / half) + BALANCE_FLOOR
+           + BALANCE * (half * (np.abs(fl) + np.abs(fr)) + J * np.abs(alpha)))
     if _shifted(s, loc):
         written = (s[:, 11] - s[:, 10]) * half - J * s[:, 9]
         warnings.append(FeasibilityRecord(float(s[0, 0]), -1, "columnShift",
                                           float(np.max(np.abs(written))), tol))
-    return residual, np.full(len(s), tol)
+    return residual, tol
 
 
 def _report(checks, warnings: list[FeasibilityRecord]) -> FeasibilityReport:
