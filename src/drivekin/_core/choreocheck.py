@@ -56,10 +56,12 @@ class FeasibilityReport:
     ``margins``: per quantity checked, the least ``1 − value/limit`` (negative when over).
     """
 
-    __slots__ = ("ok", "violations", "warnings", "worst", "margins")
+    __slots__ = ("ok", "violations", "warnings", "worst", "margins", "_series")
 
     def __init__(self, violations: list[FeasibilityRecord], warnings: list[FeasibilityRecord],
-                 worst: FeasibilityRecord | None, margins: dict[str, float]):
+                 worst: FeasibilityRecord | None, margins: dict[str, float],
+                 series: dict[str, tuple[np.ndarray, np.ndarray]] | None = None):
+        self._series = {} if series is None else series   # quantity -> (t, least margin)
         self.ok = not violations
         self.violations = violations
         self.warnings = warnings
@@ -263,6 +265,7 @@ def _balance(s: np.ndarray, kind: str, planned: Any, warnings: list[FeasibilityR
 def _report(checks, warnings: list[FeasibilityRecord]) -> FeasibilityReport:
     violations: list[FeasibilityRecord] = []
     margins: dict[str, float] = {}
+    series: dict[str, tuple[np.ndarray, np.ndarray]] = {}
     worst = None
     worst_ratio = -math.inf
     for name, time, module, value, limit, tol in checks:
@@ -271,6 +274,8 @@ def _report(checks, warnings: list[FeasibilityRecord]) -> FeasibilityReport:
                              np.where(value > 0, math.inf, 0.0))
         k = np.unravel_index(int(np.argmax(ratio)), ratio.shape)
         margins[name] = float(1.0 - ratio[k])
+        rows = ratio if ratio.ndim == 1 else ratio.max(axis=1)
+        series[name] = (time if time.ndim == 1 else time[:, 0], 1.0 - rows)
         if ratio[k] > worst_ratio:
             worst_ratio = float(ratio[k])
             worst = _record(name, time, module, value, limit, k)
@@ -282,7 +287,30 @@ def _report(checks, warnings: list[FeasibilityRecord]) -> FeasibilityReport:
     key = (lambda rec: (rec.time, QUANTITIES.index(rec.quantity)
                         if rec.quantity in QUANTITIES else -1, rec.module))
     return FeasibilityReport(sorted(violations, key=key), sorted(warnings, key=key), worst,
-                             margins)
+                             margins, series)
+
+
+def plot(report: FeasibilityReport, path: str, title: str) -> None:
+    """Draw each limit's margin (1 − value/limit, the least over the modules) over time
+    into the PNG ``path``; below 0 is over the limit (clipped at −1)."""
+    from drivekin._core.plotting import pyplot
+    plt = pyplot()
+    names = [q for q in QUANTITIES if q in report._series]
+    fig, axes = plt.subplots(len(names), 1, sharex=True, squeeze=False,
+                             figsize=(8, 1.6 * len(names) + 0.8))
+    for ax, name in zip(axes[:, 0], names):
+        t, margin = report._series[name]
+        ax.plot(t, np.clip(margin, -1.0, 1.0), lw=1)
+        ax.axhline(0.0, color="red", lw=0.8)
+        ax.set_ylim(-1.05, 1.05)
+        ax.set_ylabel(name, fontsize=8)
+    axes[-1, 0].set_xlabel("time (s)")
+    fig.suptitle(title + ": margin 1 − value/limit (below 0: over the limit)", fontsize=9)
+    fig.tight_layout()
+    try:
+        fig.savefig(path, dpi=100)
+    finally:
+        plt.close(fig)
 
 
 def _record(name, time, module, value, limit, idx) -> FeasibilityRecord:
