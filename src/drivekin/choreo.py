@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 
+from drivekin._core.choreokernel import ChoreoSampler, DifferentialSample, SwerveSample
 from drivekin._core.metadata import depth
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
 from drivekin.motor import DCMotor
@@ -251,7 +252,7 @@ def _config(r: _Reader, raw: Any, kind: str) -> RobotConfig | None:
         raise r.error(f"{w} is not a usable robot: {e}") from None
 
 
-class ChoreoTrajectory:
+class ChoreoTrajectory(ChoreoSampler):
     """A Choreo trajectory as :func:`load` read it (immutable).
 
     ``samples`` holds one row per sample in ``columns`` order, exactly the file's values:
@@ -277,7 +278,7 @@ class ChoreoTrajectory:
                  config: RobotConfig | None, path: str = "<memory>"):
         self._name = name
         self._kind = kind
-        self._samples = samples
+        self._samples = self._bind(samples, kind == "swerve")
         self._events = events
         self._splits = splits
         self._config = config
