@@ -34,6 +34,7 @@ import numpy as np
 
 from drivekin._core import choreocheck as _choreocheck
 from drivekin._core.choreocheck import FeasibilityRecord, FeasibilityReport
+from drivekin._core.choreokernel import ChoreoSampler, DifferentialSample, SwerveSample
 from drivekin._core.metadata import depth
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
 from drivekin.motor import DCMotor
@@ -254,7 +255,7 @@ def _config(r: _Reader, raw: Any, kind: str) -> RobotConfig | None:
         raise r.error(f"{w} is not a usable robot: {e}") from None
 
 
-class ChoreoTrajectory:
+class ChoreoTrajectory(ChoreoSampler):
     """A Choreo trajectory as :func:`load` read it (immutable).
 
     ``samples`` holds one row per sample in ``columns`` order, exactly the file's values:
@@ -280,7 +281,7 @@ class ChoreoTrajectory:
                  config: RobotConfig | None, path: str = "<memory>"):
         self._name = name
         self._kind = kind
-        self._samples = samples
+        self._samples = self._bind(samples, kind == "swerve")
         self._events = events
         self._splits = splits
         self._config = config
