@@ -80,6 +80,10 @@ class FeasibilityReport:
                 "margins": dict(self.margins)}
 
 
+# (quantity, time, module, value, limit, tolerance), arrays of one shape
+_Check = tuple[str, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]
+
+
 class _Modules:
     """Per sample × module (config order): position (field frame), velocity, contact-point
     acceleration and force, and the rounding error of the speed."""
@@ -186,9 +190,10 @@ def check(samples: np.ndarray, kind: str, config: Any, planned: Any, *,
     motor = mc.driveMotor
     r = mc.wheelRadiusMeters
     n_t, n_m = m.speed.shape
-    checks: list[tuple[str, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]] = []
+    checks: list[_Check] = []
 
-    def add(name, time, module, value, limit, tol):
+    def add(name: str, time: Any, module: Any, value: np.ndarray, limit: Any,
+            tol: Any) -> None:
         checks.append((name, np.broadcast_to(time, value.shape),
                        np.broadcast_to(module, value.shape), value,
                        np.broadcast_to(limit, value.shape), np.broadcast_to(tol, value.shape)))
@@ -229,7 +234,8 @@ def check(samples: np.ndarray, kind: str, config: Any, planned: Any, *,
     return _report(checks, warnings)
 
 
-def _balance(s: np.ndarray, kind: str, planned: Any, warnings: list[FeasibilityRecord]):
+def _balance(s: np.ndarray, kind: str, planned: Any,
+             warnings: list[FeasibilityRecord]) -> tuple[np.ndarray, np.ndarray]:
     """Σ rᵢ×Fᵢ − J·α per sample (the module order decides which rᵢ goes with which Fᵢ)
     and what the rounding of the values can make of it, N·m."""
     loc = np.array([(p.x, p.y) for p in planned.moduleLocations])
@@ -262,7 +268,7 @@ def _balance(s: np.ndarray, kind: str, planned: Any, warnings: list[FeasibilityR
     return residual, tol
 
 
-def _report(checks, warnings: list[FeasibilityRecord]) -> FeasibilityReport:
+def _report(checks: list[_Check], warnings: list[FeasibilityRecord]) -> FeasibilityReport:
     violations: list[FeasibilityRecord] = []
     margins: dict[str, float] = {}
     series: dict[str, tuple[np.ndarray, np.ndarray]] = {}
@@ -313,7 +319,8 @@ def plot(report: FeasibilityReport, path: str, title: str) -> None:
         plt.close(fig)
 
 
-def _record(name, time, module, value, limit, idx) -> FeasibilityRecord:
+def _record(name: str, time: np.ndarray, module: np.ndarray, value: np.ndarray,
+            limit: np.ndarray, idx: Any) -> FeasibilityRecord:
     return FeasibilityRecord(float(time[idx]), int(module[idx]), name, float(value[idx]),
                              float(limit[idx]))
 

@@ -56,7 +56,7 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
-def _project_config(path: str, kind: str):
+def _project_config(path: str, kind: str) -> Any:
     """The RobotConfig of a ``.chor`` project: its expressions' SI values in the form the
     trajectory's embedded config has."""
     from drivekin import choreo
@@ -77,7 +77,7 @@ def _project_config(path: str, kind: str):
     return choreo._config(choreo._Reader(path), values(raw, 0), kind)
 
 
-def _line(quantity: str, records: list) -> str:
+def _line(quantity: str, records: list[Any]) -> str:
     worst = max(records, key=lambda r: r.value / r.limit if r.limit > 0 else float("inf"))
     unit = UNITS[quantity]
     where = "the whole robot" if worst.module < 0 else f"module {worst.module}"
@@ -87,7 +87,7 @@ def _line(quantity: str, records: list) -> str:
             f"{unit} at t = {worst.time:.3f} s, {where}")
 
 
-def main(argv) -> int:
+def main(argv: Any) -> int:
     parser = build_parser()
     args = parser.parse_args(list(argv))
     need_extras(parser, False, args.plot is not None, "", "--plot")
@@ -119,7 +119,7 @@ def main(argv) -> int:
              f"{len(report.warnings)} warnings within the file's rounding); least margin "
              f"1 - value/limit: {margins}")
         return 0
-    by_quantity: dict[str, list] = {}
+    by_quantity: dict[str, list[Any]] = {}
     for r in report.violations:
         by_quantity.setdefault(r.quantity, []).append(r)
     lines = [f"{name}: infeasible, {len(report.violations)} violations"]
