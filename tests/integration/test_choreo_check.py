@@ -247,3 +247,38 @@ def test_bad_arguments(tmp_path):
     data["trajectory"]["config"] = None
     with pytest.raises(ValueError, match="no robot config"):
         _load(tmp_path, data).check()
+
+
+def test_a_config_in_another_module_order_gets_the_forces_of_its_corners():
+    if not REAL:
+        pytest.skip("no trajs")
+    from drivekin import RobotConfig
+    traj = choreo.load(TRAJS / "titanware_FirstSweep.traj")
+    c = traj.config
+    fl, bl, br, fr = c.moduleLocations                        # Choreo's order
+    wpilib = RobotConfig(c.massKG, c.MOI, c.moduleConfig, [fl, fr, bl, br])
+    mine, theirs = traj.moduleSetpoints(wpilib), traj.moduleSetpoints()
+    for key in mine:
+        assert np.array_equal(mine[key], theirs[key][:, [0, 3, 1, 2]]), key
+    assert traj.check(wpilib).margins == traj.check().margins
+
+
+def test_differential_setpoints():
+    path = TRAJS / "synthetic" / "differential_scurve.traj"
+    if not path.is_file():
+        pytest.skip(f"{path} is not here")
+    traj = choreo.load(path)
+    data = json.loads(path.read_text())
+    mc = traj.config.moduleConfig
+    sp = traj.moduleSetpoints()
+    for k, s in enumerate(data["trajectory"]["samples"]):
+        for i, side in enumerate("lr"):
+            v, a, f = s["v" + side], s["a" + side], s["f" + side]
+            if abs(v) < STOPPED:
+                continue
+            sign = math.copysign(1.0, v)
+            assert sp["speed"][k, i] == pytest.approx(abs(v), abs=1e-12)
+            assert sp["angle"][k, i] == pytest.approx(0.0 if v > 0 else math.pi, abs=1e-9)
+            assert sp["acceleration"][k, i] == pytest.approx(sign * a, abs=1e-9)
+            assert sp["current"][k, i] == pytest.approx(
+                mc.driveMotor.getCurrent(torque=sign * f * mc.wheelRadiusMeters), abs=1e-9)

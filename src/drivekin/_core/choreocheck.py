@@ -73,11 +73,13 @@ class FeasibilityReport:
                 f"{len(self.warnings)} warnings, worst={self.worst})")
 
     def asdict(self) -> dict[str, Any]:
-        """The report as plain JSON-ready data."""
+        """The report as plain JSON-ready data (a margin of −inf, a value against a limit
+        of 0, becomes None)."""
         return {"ok": self.ok, "violations": [r._asdict() for r in self.violations],
                 "warnings": [r._asdict() for r in self.warnings],
                 "worst": None if self.worst is None else self.worst._asdict(),
-                "margins": dict(self.margins)}
+                "margins": {q: m if math.isfinite(m) else None
+                            for q, m in self.margins.items()}}
 
 
 # (quantity, time, module, value, limit, tolerance), arrays of one shape
