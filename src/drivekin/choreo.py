@@ -368,11 +368,10 @@ class ChoreoTrajectory(ChoreoSampler):
         current limit; the force against friction μ·m·g/N; with ``maxSteerVelocity``
         (rad/s), the steering rate between samples k−1 and k, reported at k (modulo π: a
         module may reverse its drive instead of turning half a turn; modules under 1 cm/s
-        skipped); and, per
-        sample, the torque balance Σ rᵢ×Fᵢ = J·α with the forces on the modules in
-        ``moduleOrder`` (the embedded config's MOI and positions). The config's modules
-        are matched to the force columns by position (one per corner). Comparisons allow
-        the file's 5-decimal rounding. Returns a :class:`FeasibilityReport`; ValueError
+        skipped); and, per sample, the torque balance Σ rᵢ×Fᵢ = J·α with the forces on
+        the modules in ``moduleOrder`` (the embedded config's MOI and positions). The
+        config's modules are matched to the force columns by position (one per corner).
+        Comparisons allow the file's 5-decimal rounding. Returns a :class:`FeasibilityReport`; ValueError
         for a bad ``voltage`` or ``maxSteerVelocity``, a config whose modules do not sit
         one on each corner, or no config at all; TypeError for a config that is not a
         RobotConfig."""
