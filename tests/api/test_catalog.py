@@ -45,7 +45,8 @@ KINDS = {"value", "kinematics", "odometry", "estimator", "odometry3d", "estimato
 # and its records (drivekin.datalog), replay's configuration and results (drivekin.replay),
 # the calibration's results (drivekin.calibrate), Choreo trajectories and their samples
 # (drivekin.choreo). Their re-exports of catalogued classes are still checked.
-LOG_TOOLS = {"drivekin.datalog", "drivekin.replay", "drivekin.calibrate", "drivekin.choreo"}
+LOG_TOOLS = {"drivekin.datalog", "drivekin.replay", "drivekin.calibrate", "drivekin.choreo",
+             "drivekin._core.choreocheck"}       # choreo's report classes live there
 # The modules the issue names: discovery must find every one of them.
 EXPECTED_MODULES = {"chassis", "swervemodule", "swerve", "geometry", "mecanum", "differential",
                     "deadwheel", "diffswerve", "odometry", "estimator", "odometry3d",
