@@ -241,10 +241,9 @@ def _config(r: _Reader, raw: Any, kind: str) -> RobotConfig | None:
         offsets = [Translation2d(0.0, half), Translation2d(0.0, -half)]
     # Choreo names no motor: a Kraken X60 (enough of them for tmax) behind the file's
     # gearing, current-limited so that its low-speed torque is exactly Choreo's tmax.
-    count = math.floor(tmax / 7.09) + 1
-    motor = DCMotor.getKrakenX60(count)
-    limit = tmax / motor.Kt
     try:
+        motor = DCMotor.getKrakenX60(math.floor(tmax / 7.09) + 1)
+        limit = tmax / motor.Kt
         module = ModuleConfig(radius, radius * vmax / gearing, cof,
                               motor.withReduction(gearing), limit)
         return RobotConfig(mass, inertia, module, offsets)
@@ -276,6 +275,8 @@ class ChoreoTrajectory(ChoreoSampler):
     def __init__(self, name: str, kind: str, samples: np.ndarray,
                  events: list[tuple[float, str]], splits: tuple[int, ...],
                  config: RobotConfig | None, path: str = "<memory>"):
+        if kind not in _MODULE_ORDER:
+            raise ValueError(f"kind must be 'swerve' or 'differential', got {kind!r}")
         self._name = name
         self._kind = kind
         self._samples = self._bind(samples, kind == "swerve")

@@ -115,6 +115,10 @@ HOSTILE = {
     "config mass negative": (_set(("trajectory", "config", "mass"), -60.0),
                              "config.mass must be positive"),
     "config gearing missing": (_delete(("trajectory", "config", "gearing")), "no 'gearing'"),
+    "config torque enormous": (_set(("trajectory", "config", "tmax"), 1e300),
+                               "not a usable robot"),
+    "config mass enormous": (_set(("trajectory", "config", "mass"), 1e200),
+                             "not a usable robot"),
     "config module at centre": (_set(("trajectory", "config", "frontLeft"), {"x": 0, "y": 0}),
                                 "not a usable robot"),
 }
