@@ -13,6 +13,18 @@ for differential drives, 2026's rotate-around flip for the red alliance)::
     s = traj.sampleAt(0.02)                # s.x, s.y, s.heading, s.vx, ..., s.getPose()
     rows = traj.sampleAtMany(times)        # (len(times), len(traj.columns))
 
+The samples :meth:`~ChoreoTrajectory.sampleAt` returns are ``SwerveSample`` or
+``DifferentialSample`` (``drivekin.choreo.SwerveSample``, ...): choreolib's fields, with
+``t`` for its ``timestamp`` (swerve ``t x y heading vx vy omega ax ay alpha fx fy``, ``fx``
+and ``fy`` 4-tuples in Choreo's module order; differential ``t x y heading vl vr omega al
+ar alpha fl fr``), ``getPose()`` (a drivekin Pose2d) and ``getChassisVelocities()``, which
+returns what choreolib's ``get_chassis_speeds`` does: the field-frame ``(vx, vy, omega)``
+for swerve, ``((vl + vr) / 2, 0, omega)`` for differential (along the robot's heading,
+though choreolib calls it field-relative). In a robot loop, ``traj.sampleInto(t, out)``
+writes into a sample from ``traj.newSample()`` without allocating. Times exactly on a
+sample and the last sample's time are integrated from the previous sample, as choreolib
+does, so they differ from the stored values by the file's rounding (about 1e-5).
+
 Only version 3 loads: Choreo's own upgrader discards the samples of older files when it
 upgrades them, and choreolib 2026 refuses them too, so an older file raises
 :class:`ChoreoError` asking to regenerate it in Choreo 2026. A file without samples (a
