@@ -7,11 +7,25 @@ robot config Choreo planned it with (as a drivekin :class:`~drivekin.RobotConfig
 (constant-acceleration swerve interpolation, the same adaptive Dormand–Prince integrator
 for differential drives, 2026's rotate-around flip for the red alliance)::
 
+    import json
     from drivekin import choreo
-    traj = choreo.load("deploy/choreo/Center.traj")
-    start = traj.getInitialPose()
-    s = traj.sampleAt(0.02)                # s.x, s.y, s.heading, s.vx, ..., s.getPose()
-    rows = traj.sampleAtMany(times)        # (len(times), len(traj.columns))
+    # Choreo writes these files; here a 1 s swerve line from rest at 2 m/s², by hand.
+    row = {"t": 0.0, "x": 1.0, "y": 1.0, "heading": 0.0, "vx": 0.0, "vy": 0.0,
+           "omega": 0.0, "ax": 2.0, "ay": 0.0, "alpha": 0.0, "fx": [30.0] * 4,
+           "fy": [0.0] * 4}
+    with open("Line.traj", "w") as f:
+        json.dump({"name": "Line", "version": 3, "events": [], "trajectory": {
+            "sampleType": "Swerve", "config": None, "splits": [0],
+            "samples": [row, dict(row, t=1.0, x=2.0, vx=2.0)]}}, f)
+
+    traj = choreo.load("Line.traj")
+    start = traj.getInitialPose()              # Pose2d(1, 1, 0)
+    s = traj.sampleAt(0.5)                     # s.x == 1.25, s.vx == 1.0, s.getPose()
+    red = traj.sampleAt(0.5, mirrorForRedAlliance=True)
+    out = traj.newSample()
+    traj.sampleInto(0.52, out)                 # the 20 ms loop's form: no allocation
+    rows = traj.sampleAtMany([0.0, 0.5, 1.0])  # (3, len(traj.columns)), traj.columns order
+    assert s.x == 1.25 and rows[1, 1] == 1.25
 
 The samples :meth:`~ChoreoTrajectory.sampleAt` returns are ``SwerveSample`` or
 ``DifferentialSample`` (``drivekin.choreo.SwerveSample``, ...): choreolib's fields, with
