@@ -7,11 +7,37 @@ robot config Choreo planned it with (as a drivekin :class:`~drivekin.RobotConfig
 (constant-acceleration swerve interpolation, the same adaptive Dormand–Prince integrator
 for differential drives, 2026's rotate-around flip for the red alliance)::
 
+    import json
     from drivekin import choreo
-    traj = choreo.load("deploy/choreo/Center.traj")
-    start = traj.getInitialPose()
-    s = traj.sampleAt(0.02)                # s.x, s.y, s.heading, s.vx, ..., s.getPose()
-    rows = traj.sampleAtMany(times)        # (len(times), len(traj.columns))
+    # Choreo writes these files; here a 1 s swerve line from rest at 2 m/s², by hand.
+    row = {"t": 0.0, "x": 1.0, "y": 1.0, "heading": 0.0, "vx": 0.0, "vy": 0.0,
+           "omega": 0.0, "ax": 2.0, "ay": 0.0, "alpha": 0.0, "fx": [30.0] * 4,
+           "fy": [0.0] * 4}
+    with open("Line.traj", "w") as f:
+        json.dump({"name": "Line", "version": 3, "events": [], "trajectory": {
+            "sampleType": "Swerve", "config": None, "splits": [0],
+            "samples": [row, dict(row, t=1.0, x=2.0, vx=2.0)]}}, f)
+
+    traj = choreo.load("Line.traj")
+    start = traj.getInitialPose()              # Pose2d(1, 1, 0)
+    s = traj.sampleAt(0.5)                     # s.x == 1.25, s.vx == 1.0, s.getPose()
+    red = traj.sampleAt(0.5, mirrorForRedAlliance=True)
+    out = traj.newSample()
+    traj.sampleInto(0.52, out)                 # the 20 ms loop's form: no allocation
+    rows = traj.sampleAtMany([0.0, 0.5, 1.0])  # (3, len(traj.columns)), traj.columns order
+    assert s.x == 1.25 and rows[1, 1] == 1.25
+
+The samples :meth:`~ChoreoTrajectory.sampleAt` returns are ``SwerveSample`` or
+``DifferentialSample`` (``drivekin.choreo.SwerveSample``, ...): choreolib's fields, with
+``t`` for its ``timestamp`` (swerve ``t x y heading vx vy omega ax ay alpha fx fy``, ``fx``
+and ``fy`` 4-tuples in Choreo's module order; differential ``t x y heading vl vr omega al
+ar alpha fl fr``), ``getPose()`` (a drivekin Pose2d) and ``getChassisVelocities()``, which
+returns what choreolib's ``get_chassis_speeds`` does: the field-frame ``(vx, vy, omega)``
+for swerve, ``((vl + vr) / 2, 0, omega)`` for differential (along the robot's heading,
+though choreolib calls it field-relative). In a robot loop, ``traj.sampleInto(t, out)``
+writes into a sample from ``traj.newSample()`` without allocating. Times exactly on a
+sample and the last sample's time are integrated from the previous sample, as choreolib
+does, so they differ from the stored values by the file's rounding (about 1e-5).
 
 Only version 3 loads: Choreo's own upgrader discards the samples of older files when it
 upgrades them, and choreolib 2026 refuses them too, so an older file raises
@@ -244,10 +270,9 @@ def _config(r: _Reader, raw: Any, kind: str) -> RobotConfig | None:
         offsets = [Translation2d(0.0, half), Translation2d(0.0, -half)]
     # Choreo names no motor: a Kraken X60 (enough of them for tmax) behind the file's
     # gearing, current-limited so that its low-speed torque is exactly Choreo's tmax.
-    count = math.floor(tmax / 7.09) + 1
-    motor = DCMotor.getKrakenX60(count)
-    limit = tmax / motor.Kt
     try:
+        motor = DCMotor.getKrakenX60(math.floor(tmax / 7.09) + 1)
+        limit = tmax / motor.Kt
         module = ModuleConfig(radius, radius * vmax / gearing, cof,
                               motor.withReduction(gearing), limit)
         return RobotConfig(mass, inertia, module, offsets)
@@ -279,6 +304,8 @@ class ChoreoTrajectory(ChoreoSampler):
     def __init__(self, name: str, kind: str, samples: np.ndarray,
                  events: list[tuple[float, str]], splits: tuple[int, ...],
                  config: RobotConfig | None, path: str = "<memory>"):
+        if kind not in _MODULE_ORDER:
+            raise ValueError(f"kind must be 'swerve' or 'differential', got {kind!r}")
         self._name = name
         self._kind = kind
         self._samples = self._bind(samples, kind == "swerve")

@@ -1,0 +1,61 @@
+"""drivekin.choreo.load on the real trajectories: the properties say what the file says.
+
+Pinned, against the file read with the json module in the test: ``config`` carries the
+embedded robot (mass, MOI, wheel radius, μ, module positions in Choreo's force order FL,
+BL, BR, FR, or left/right at ±track/2), ``maxDriveVelocityMPS = radius · vmax / gearing``,
+and the chosen drive motor's low-speed wheel torque ``min(stallTorque,
+getTorque(limit))`` equals Choreo's ``tmax · gearing``; ``samples`` is read-only and
+``times``/``columns``/``moduleOrder``/``totalTime`` agree with the file."""
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from drivekin import choreo
+from tests._support.choreo_files import CURRENT, params
+
+
+@pytest.mark.parametrize("path", params(CURRENT))
+def test_properties_say_what_the_file_says(path):
+    doc = json.loads(path.read_text(encoding="utf-8"))
+    traj = choreo.load(path)
+    raw = doc["trajectory"]["samples"]
+    assert traj.kind == doc["trajectory"]["sampleType"].lower()
+    assert traj.samples.shape == (len(raw), len(traj.columns))
+    assert not traj.samples.flags.writeable
+    with pytest.raises(ValueError):
+        traj.samples[0, 0] = 1.0
+    for j, c in enumerate(traj.columns):
+        if c[:2] in ("fx", "fy") and traj.kind == "swerve":
+            want = [s[c[:2]][int(c[2])] for s in raw]
+        else:
+            want = [s[c] for s in raw]
+        assert np.array_equal(traj.samples[:, j], want), c
+    assert np.array_equal(traj.times, [s["t"] for s in raw])
+    assert traj.totalTime == raw[-1]["t"]
+    assert traj.moduleOrder == (("FL", "BL", "BR", "FR") if traj.kind == "swerve"
+                                else ("left", "right"))
+
+
+@pytest.mark.parametrize("path", params(CURRENT))
+def test_config_is_the_embedded_robot(path):
+    c = json.loads(path.read_text(encoding="utf-8"))["trajectory"]["config"]
+    config = choreo.load(path).config
+    module = config.moduleConfig
+    assert config.massKG == c["mass"] and config.MOI == c["inertia"]
+    assert module.wheelRadiusMeters == c["radius"] and module.wheelCOF == c["cof"]
+    assert module.maxDriveVelocityMPS == pytest.approx(c["radius"] * c["vmax"] / c["gearing"],
+                                                       rel=1e-15)
+    motor = module.driveMotor
+    low_speed = min(motor.stallTorque, motor.getTorque(module.driveCurrentLimit))
+    assert low_speed == pytest.approx(c["tmax"] * c["gearing"], rel=1e-12)
+    where = [(t.getX(), t.getY()) for t in config.moduleLocations]
+    if len(where) == 4:
+        fl, bl = c["frontLeft"], c["backLeft"]
+        assert where == [(fl["x"], fl["y"]), (bl["x"], bl["y"]), (bl["x"], -bl["y"]),
+                         (fl["x"], -fl["y"])]
+    else:
+        half = c["differentialTrackWidth"] / 2
+        assert where == [(0.0, half), (0.0, -half)]
