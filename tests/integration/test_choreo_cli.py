@@ -100,3 +100,24 @@ def test_bad_usage(trajs, tmp_path, capsys, argv, message):
     code, out, err = _run(capsys, *(a.format(**fill) for a in argv))
     assert code == 2
     assert out == "" and message in err
+
+
+def test_the_json_is_strict_when_a_module_outruns_its_motor(trajs, tmp_path, capsys):
+    data = json.loads((trajs / "gwhs_B_Cycle2.traj").read_text())
+    k = 1.6                                 # 1.6 times faster: past the motor's free speed
+    for s in data["trajectory"]["samples"]:
+        s["t"] /= k
+        for key in ("vx", "vy", "omega"):
+            s[key] *= k
+    path = tmp_path / "fast.traj"
+    path.write_text(json.dumps(data))
+    out_json = tmp_path / "r.json"
+    code, out, _ = _run(capsys, "check", path, "--json", out_json)
+    assert code == 1 and out.splitlines()[0].endswith("violations")
+
+    def refuse(name):
+        raise AssertionError(f"{name} in the JSON")
+    report = json.loads(out_json.read_text(), parse_constant=refuse)
+    assert report["ok"] is False
+    assert report["margins"]["driveTorque"] is None          # a torque where the curve is 0
+    assert report["margins"]["moduleSpeed"] < 0
