@@ -87,8 +87,8 @@ _Check = tuple[str, np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]
 
 
 class _Modules:
-    """Per sample × module (config order): position (field frame), velocity, contact-point
-    acceleration and force, and the rounding error of the speed."""
+    """Per sample × module (config order), field frame: the contact point's velocity and
+    acceleration, the force, the wheel direction, and the rounding error of the speed."""
 
     def __init__(self, samples: np.ndarray, kind: str, config: Any):
         s = samples
