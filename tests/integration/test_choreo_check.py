@@ -10,14 +10,13 @@ import cmath
 import copy
 import json
 import math
-import pathlib
 
 import numpy as np
 import pytest
 
 from drivekin import choreo
+from tests._support.choreo_files import TRAJS, params
 
-TRAJS = pathlib.Path(__file__).resolve().parents[2] / ".." / "shared" / "choreo" / "trajs"
 REAL = sorted(TRAJS.glob("*.traj")) if TRAJS.is_dir() else []
 ROTATING = ["choreo_test_swerve", "icrobotics_Center", "steelhawks_FourMeterSpinTest",
             "titanware_FirstSweep"]
@@ -102,7 +101,7 @@ def _expected(w: dict) -> set[str]:
 DEFAULT_ROBOT = {"choreo_test_swerve", "choreolib_swerve_test"}
 
 
-@pytest.mark.parametrize("path", REAL, ids=[p.stem for p in REAL])
+@pytest.mark.parametrize("path", params(REAL))
 def test_real_trajectories_are_feasible_under_their_own_config(path):
     traj = choreo.load(path)
     report = traj.check()

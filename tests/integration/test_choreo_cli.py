@@ -3,14 +3,13 @@ it writes, on the real trajectories of ../shared/choreo/trajs."""
 from __future__ import annotations
 
 import json
-import pathlib
 
 import pytest
 
 from drivekin import choreo
 from drivekin.app import cli
+from tests._support.choreo_files import TRAJS
 
-TRAJS = pathlib.Path(__file__).resolve().parents[2] / ".." / "shared" / "choreo" / "trajs"
 QUANTITIES = ("moduleSpeed", "driveTorque", "current", "friction", "steerRate", "moduleOrder")
 
 
