@@ -111,7 +111,6 @@ HOSTILE = {
     "event without from": (_delete(("events", 0, "from")), r"events\[0\] has no 'from'"),
     "event offset a string": (_set(("events", 0, "from", "offset", "val"), "1"),
                               "offset.val must be a finite number or null"),
-    "event name a number": (_set(("events", 0, "name"), 3), "name must be a string"),
     "config mass negative": (_set(("trajectory", "config", "mass"), -60.0),
                              "config.mass must be positive"),
     "config gearing missing": (_delete(("trajectory", "config", "gearing")), "no 'gearing'"),
