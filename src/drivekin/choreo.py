@@ -64,7 +64,8 @@ from drivekin.geometry import Pose2d, Rotation2d, Translation2d
 from drivekin.motor import DCMotor
 from drivekin.robotconfig import ModuleConfig, RobotConfig
 
-__all__ = ["ChoreoError", "ChoreoTrajectory", "load", "MAX_BYTES"]
+__all__ = ["ChoreoError", "ChoreoTrajectory", "DifferentialSample", "MAX_BYTES",
+           "SwerveSample", "load"]
 
 MAX_BYTES = 32 * 1024 * 1024   # the largest real trajectory is ~0.4 MB (1,619 samples)
 MAX_DEPTH = 64                 # events hold PathPlanner command trees; samples need 3
