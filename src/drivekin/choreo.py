@@ -67,7 +67,9 @@ from drivekin.robotconfig import ModuleConfig, RobotConfig
 __all__ = ["ChoreoError", "ChoreoTrajectory", "DifferentialSample", "MAX_BYTES",
            "SwerveSample", "load"]
 
-MAX_BYTES = 32 * 1024 * 1024   # the largest real trajectory is ~0.4 MB (1,619 samples)
+# The largest real trajectory is 0.4 MB (1,619 samples, 23 s). The cap bounds memory: the
+# densest JSON, "[0.5,0.5,...]", becomes one 32-byte float object per 4 bytes (64 MB).
+MAX_BYTES = 8 * 1024 * 1024
 MAX_DEPTH = 64                 # events hold PathPlanner command trees; samples need 3
 
 SCHEMA_VERSION = 3
