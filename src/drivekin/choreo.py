@@ -66,10 +66,12 @@ from drivekin.geometry import Pose2d, Rotation2d, Translation2d
 from drivekin.motor import DCMotor
 from drivekin.robotconfig import ModuleConfig, RobotConfig
 
-__all__ = ["ChoreoError", "ChoreoTrajectory", "FeasibilityRecord", "FeasibilityReport",
-           "load", "MAX_BYTES"]
+__all__ = ["ChoreoError", "ChoreoTrajectory", "DifferentialSample", "FeasibilityRecord",
+           "FeasibilityReport", "MAX_BYTES", "SwerveSample", "load"]
 
-MAX_BYTES = 32 * 1024 * 1024   # the largest real trajectory is ~0.4 MB (1,619 samples)
+# The largest real trajectory is 0.4 MB (1,619 samples, 23 s). The cap bounds memory: the
+# densest JSON, "[0.5,0.5,...]", becomes one 32-byte float object per 4 bytes (64 MB).
+MAX_BYTES = 8 * 1024 * 1024
 MAX_DEPTH = 64                 # events hold PathPlanner command trees; samples need 3
 
 SCHEMA_VERSION = 3
@@ -222,7 +224,8 @@ def _splits(r: _Reader, raw: Any, n: int) -> tuple[int, ...]:
 
 def _events(r: _Reader, raw: Any) -> list[tuple[float, str]]:
     """choreolib's rules: time = targetTimestamp + offset.val; dropped when either is null,
-    the time is negative or the name empty; a missing key is an error."""
+    the name is not a string (choreolib's len() raises TypeError, which it catches), the
+    time is negative or the name empty; a missing key is an error."""
     if not isinstance(raw, list):
         raise r.error(f"events must be an array, got {_kind(raw)}")
     events = []
@@ -232,13 +235,11 @@ def _events(r: _Reader, raw: Any) -> list[tuple[float, str]]:
         offset = r.get(r.get(source, "offset", where + ".from"), "val", where + ".from.offset")
         target = r.get(source, "targetTimestamp", where + ".from")
         name = r.get(e, "name", where)
-        if offset is None or target is None:
+        if offset is None or target is None or not isinstance(name, str):
             continue
         for key, v in (("from.offset.val", offset), ("from.targetTimestamp", target)):
             if not _finite(v):
                 raise r.error(f"{where}.{key} must be a finite number or null, got {v!r:.40}")
-        if not isinstance(name, str):
-            raise r.error(f"{where}.name must be a string, got {_kind(name)}")
         time = float(target) + float(offset)
         if time < 0.0 or not name:
             continue

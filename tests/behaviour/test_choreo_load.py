@@ -5,7 +5,8 @@ embedded robot (mass, MOI, wheel radius, μ, module positions in Choreo's force 
 BL, BR, FR, or left/right at ±track/2), ``maxDriveVelocityMPS = radius · vmax / gearing``,
 and the chosen drive motor's low-speed wheel torque ``min(stallTorque,
 getTorque(limit))`` equals Choreo's ``tmax · gearing``; ``samples`` is read-only and
-``times``/``columns``/``moduleOrder``/``totalTime`` agree with the file."""
+``times``/``columns``/``moduleOrder``/``totalTime`` agree with the file; events are kept and
+dropped as choreolib's ``load_event_marker`` keeps and drops them."""
 from __future__ import annotations
 
 import json
@@ -59,3 +60,29 @@ def test_config_is_the_embedded_robot(path):
     else:
         half = c["differentialTrackWidth"] / 2
         assert where == [(0.0, half), (0.0, -half)]
+
+
+def _event(name, target, offset):
+    return {"name": name, "from": {"target": 0, "targetTimestamp": target,
+                                   "offset": {"exp": "", "val": offset}}, "event": None}
+
+
+EVENTS = [_event("kept", 1.0, 0.25), _event("shifted", 1.0, -1.0), _event("early", 0.5, -1.0),
+          _event("", 1.0, 0.0), _event(None, 1.0, 0.0), _event(3, 1.0, 0.0),
+          _event("untimed", None, 0.0), _event("unoffset", 1.0, None), _event("last", 2, 0)]
+
+
+def test_events_follow_choreolib(tmp_path):
+    # choreolib's own rule is the oracle.
+    load_event_marker = pytest.importorskip("choreo.trajectory").load_event_marker
+    doc = {"name": "events", "version": 3, "events": EVENTS, "trajectory": {
+        "config": None, "sampleType": "Differential", "splits": [], "samples": [
+            {"t": t, "x": 0.0, "y": 0.0, "heading": 0.0, "vl": 0.0, "vr": 0.0,
+             "omega": 0.0, "al": 0.0, "ar": 0.0, "alpha": 0.0, "fl": 0.0, "fr": 0.0}
+            for t in (0.0, 1.0)]}}
+    path = tmp_path / "events.traj"
+    path.write_text(json.dumps(doc))
+    traj = choreo.load(path)
+    want = [(m.timestamp, m.event) for m in map(load_event_marker, EVENTS) if m is not None]
+    assert traj.events == want == [(1.25, "kept"), (0.0, "shifted"), (2.0, "last")]
+    assert traj.splits == (0,)                 # choreolib puts 0 first when it is missing

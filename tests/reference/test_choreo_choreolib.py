@@ -70,7 +70,8 @@ def _times(t):
     samples spread over the trajectory, before the start and after the end."""
     n = len(t)
     picks = sorted({1, 2, n // 3, n // 2, (2 * n) // 3, n - 1} & set(range(1, n)))
-    between = [t[k - 1] + f * (t[k] - t[k - 1]) for k, f in zip(picks, (0.5, 0.13, 0.77, 0.5, 0.31, 0.99))]
+    fractions = (0.5, 0.13, 0.77, 0.5, 0.31, 0.99)
+    between = [t[k - 1] + f * (t[k] - t[k - 1]) for k, f in zip(picks, fractions)]
     exact = [t[0], t[1] if n > 1 else t[0], t[n // 2], t[-1]]
     return [float(x) for x in exact + between + [t[0] - 0.5, t[-1] + 0.02, t[-1] + 100.0]]
 

@@ -446,9 +446,10 @@ cdef class ChoreoSampler:
         self.ready()
         if t != t:
             raise ValueError("t must be a time in s, got nan")
-        if type(out) is not (SwerveSample if self.w == SWERVE_WIDTH else DifferentialSample):
-            raise TypeError(f"out must be a {'SwerveSample' if self.w == SWERVE_WIDTH else 'DifferentialSample'} "
-                            f"(trajectory.newSample()), got {type(out).__name__}")
+        kind = SwerveSample if self.w == SWERVE_WIDTH else DifferentialSample
+        if type(out) is not kind:
+            raise TypeError(f"out must be a {kind.__name__} (trajectory.newSample()), got "
+                            f"{type(out).__name__}")
         if sample(self.d, self.n, self.w, t, mirrorForRedAlliance, buf) != 0:
             integrator_failed(t)
         memcpy((<_ChoreoSample>out).v, buf, self.w * sizeof(double))
