@@ -247,6 +247,11 @@ def _events(r: _Reader, raw: Any) -> list[tuple[float, str]]:
     return events
 
 
+#: The embedded robot's motor turns freely at vmax / FREE_SPEED_FRACTION (Choreo's docs:
+#: "Motor Max Speed" is about 80 % of the free speed).
+FREE_SPEED_FRACTION = 0.8
+
+
 def _config(r: _Reader, raw: Any, kind: str) -> RobotConfig | None:
     if raw is None:
         return None
@@ -269,10 +274,16 @@ def _config(r: _Reader, raw: Any, kind: str) -> RobotConfig | None:
     else:
         half = 0.5 * r.positive(raw, "differentialTrackWidth", w)
         offsets = [Translation2d(0.0, half), Translation2d(0.0, -half)]
-    # Choreo names no motor: a Kraken X60 (enough of them for tmax) behind the file's
-    # gearing, current-limited so that its low-speed torque is exactly Choreo's tmax.
+    # Choreo names no motor: Kraken X60s (enough of them for tmax) behind the file's
+    # gearing, current-limited so that their low-speed torque is exactly Choreo's tmax,
+    # turning freely at vmax / 0.8: Choreo's guidance is that "Motor Max Speed" is about
+    # 80 % of the free speed, and a free speed of vmax itself leaves no torque at the top
+    # speed Choreo plans to (its own default robot would be infeasible).
     try:
-        motor = DCMotor.getKrakenX60(math.floor(tmax / 7.09) + 1)
+        kraken = DCMotor.getKrakenX60()
+        motor = DCMotor(kraken.nominalVoltage, kraken.stallTorque, kraken.stallCurrent,
+                        kraken.freeCurrent, vmax / FREE_SPEED_FRACTION,
+                        math.floor(tmax / 7.09) + 1)
         limit = tmax / motor.Kt
         module = ModuleConfig(radius, radius * vmax / gearing, cof,
                               motor.withReduction(gearing), limit)
@@ -292,8 +303,10 @@ class ChoreoTrajectory(ChoreoSampler):
 
     ``config`` is the robot Choreo planned with, as a drivekin RobotConfig, or None when
     the file carries none. Choreo names no motor, so drivekin picks one: Kraken X60
-    motors (one, or as many as a torque above 7.09 N·m needs) behind the file's
-    ``gearing``, with a current limit ``tmax / Kt`` so that the low-speed wheel torque
+    motors (one, or as many as a torque above 7.09 N·m needs; a Kraken's stall torque,
+    stall and free current) behind the file's ``gearing``, with a free speed of
+    ``vmax / 0.8`` (Choreo's guidance: its "Motor Max Speed" is about 80 % of the free
+    speed) and a current limit ``tmax / Kt`` so that the low-speed wheel torque
     ``min(stallTorque, getTorque(limit))`` equals Choreo's ``tmax · gearing``; wheel
     radius and ``cof`` as given, ``maxDriveVelocityMPS = radius · vmax / gearing``; the
     modules in the force columns' order (FL, BL, BR, FR; differential: left at

@@ -4,8 +4,8 @@ Pinned, against the file read with the json module in the test: ``config`` carri
 embedded robot (mass, MOI, wheel radius, μ, module positions in Choreo's force order FL,
 BL, BR, FR, or left/right at ±track/2), ``maxDriveVelocityMPS = radius · vmax / gearing``,
 and the chosen drive motor's low-speed wheel torque ``min(stallTorque,
-getTorque(limit))`` equals Choreo's ``tmax · gearing``; ``samples`` is read-only and
-``times``/``columns``/``moduleOrder``/``totalTime`` agree with the file; events are kept and
+getTorque(limit))`` equals Choreo's ``tmax · gearing``, its free speed vmax / 0.8;
+``samples`` is read-only and ``times``/``columns``/``moduleOrder``/``totalTime`` agree with the file; events are kept and
 dropped as choreolib's ``load_event_marker`` keeps and drops them."""
 from __future__ import annotations
 
@@ -52,6 +52,8 @@ def test_config_is_the_embedded_robot(path):
     motor = module.driveMotor
     low_speed = min(motor.stallTorque, motor.getTorque(module.driveCurrentLimit))
     assert low_speed == pytest.approx(c["tmax"] * c["gearing"], rel=1e-12)
+    # Choreo's "Motor Max Speed" is about 80 % of the free speed (the wheel's, geared)
+    assert motor.freeSpeed == pytest.approx(c["vmax"] / 0.8 / c["gearing"], rel=1e-12)
     where = [(t.getX(), t.getY()) for t in config.moduleLocations]
     if len(where) == 4:
         fl, bl = c["frontLeft"], c["backLeft"]

@@ -103,7 +103,7 @@ def test_bad_usage(trajs, tmp_path, capsys, argv, message):
 
 def test_the_json_is_strict_when_a_module_outruns_its_motor(trajs, tmp_path, capsys):
     data = json.loads((trajs / "gwhs_B_Cycle2.traj").read_text())
-    k = 1.6                                 # 1.6 times faster: past the motor's free speed
+    k = 2.0                                 # twice as fast: past the motor's free speed
     for s in data["trajectory"]["samples"]:
         s["t"] /= k
         for key in ("vx", "vy", "omega"):
