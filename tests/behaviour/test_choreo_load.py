@@ -5,8 +5,9 @@ embedded robot (mass, MOI, wheel radius, μ, module positions in Choreo's force 
 BL, BR, FR, or left/right at ±track/2), ``maxDriveVelocityMPS = radius · vmax / gearing``,
 and the chosen drive motor's low-speed wheel torque ``min(stallTorque,
 getTorque(limit))`` equals Choreo's ``tmax · gearing``, its free speed vmax / 0.8;
-``samples`` is read-only and ``times``/``columns``/``moduleOrder``/``totalTime`` agree with the file; events are kept and
-dropped as choreolib's ``load_event_marker`` keeps and drops them."""
+``samples`` is read-only and ``times``/``columns``/``moduleOrder``/``totalTime`` agree
+with the file; events are kept and dropped as choreolib's ``load_event_marker`` keeps and
+drops them."""
 from __future__ import annotations
 
 import json
