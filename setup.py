@@ -57,7 +57,7 @@ modules = ["geometry", "geometry3d", "chassis", "swervemodule", "swerve", "_core
            "differential", "mecanum", "deadwheel", "diffswerve", "odometry", "estimator", "odometry3d",
            "estimator3d", "_core.stacks", "_core.batch3d", "batch",
            "_core.alloccount", "_core.wpilog", "motor", "robotconfig", "_core.setpointkernel",
-           "setpoint"]
+           "setpoint", "_core.choreokernel"]
 
 
 def link_args(system=sys.platform, machine=platform.machine()):

@@ -43,9 +43,12 @@ KINDS = {"value", "kinematics", "odometry", "estimator", "odometry3d", "estimato
 
 # Public submodules whose classes are not the catalog's kinds: the .wpilog reader/writer
 # and its records (drivekin.datalog), replay's configuration and results (drivekin.replay),
-# the calibration's results (drivekin.calibrate). Their re-exports of catalogued classes
-# are still checked.
-LOG_TOOLS = {"drivekin.datalog", "drivekin.replay", "drivekin.calibrate"}
+# the calibration's results (drivekin.calibrate), Choreo trajectories and their samples
+# (drivekin.choreo, its sample classes compiled in drivekin._core.choreokernel, its
+# feasibility report in drivekin._core.choreocheck). Their re-exports of catalogued
+# classes are still checked.
+LOG_TOOLS = {"drivekin.datalog", "drivekin.replay", "drivekin.calibrate", "drivekin.choreo",
+             "drivekin._core.choreokernel", "drivekin._core.choreocheck"}
 # The modules the issue names: discovery must find every one of them.
 EXPECTED_MODULES = {"chassis", "swervemodule", "swerve", "geometry", "mecanum", "differential",
                     "deadwheel", "diffswerve", "odometry", "estimator", "odometry3d",

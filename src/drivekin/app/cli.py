@@ -1,6 +1,7 @@
 """``python -m drivekin``: the entry point. ``python -m drivekin replay ...`` goes to the
 replay's command line (:mod:`drivekin.app.replay_cli`), ``python -m drivekin calibrate
-...`` to the calibration's (:mod:`drivekin.app.calibrate_cli`); anything else is the command line
+...`` to the calibration's (:mod:`drivekin.app.calibrate_cli`), ``python -m drivekin
+choreo check ...`` to the Choreo trajectory check's (:mod:`drivekin.app.choreo_cli`); anything else is the command line
 of the drivetrain demo in :mod:`drivekin.app.demo`, which this module holds.
 
 This module only parses and validates the demo's arguments and prints its reports; the
@@ -12,7 +13,7 @@ import json
 import math
 import sys
 
-from drivekin.app import calibrate_cli, replay_cli
+from drivekin.app import calibrate_cli, choreo_cli, replay_cli
 from drivekin.app.demo import (DRIVETRAINS, DT, SETPOINT_DRIVETRAINS, VISION_DRIVETRAINS,
                                 header, run, table)
 from drivekin.app.options import Parser, docs_url, need_extras, new_file, number_option
@@ -52,7 +53,8 @@ def parse_args(argv=None):
         epilog="Example: python -m drivekin --drivetrain mecanum --seconds 60 --max-speed 4. "
                "Replay a WPILib DataLog: python -m drivekin replay LOG.wpilog (see "
                "python -m drivekin replay --help); find the robot's true geometry from its "
-               "logs: python -m drivekin calibrate LOG.wpilog. "
+               "logs: python -m drivekin calibrate LOG.wpilog; check a Choreo trajectory "
+               "against the robot's limits: python -m drivekin choreo check FILE.traj. "
                f"Documentation: {docs_url()}",
     )
     parser.add_argument("--seconds", type=number_option(*SECONDS_RANGE, "s", True),
@@ -108,6 +110,8 @@ def main(argv=None) -> int:
         return replay_cli.main(argv[1:])
     if argv[:1] == ["calibrate"]:
         return calibrate_cli.main(argv[1:])
+    if argv[:1] == ["choreo"]:
+        return choreo_cli.main(argv[1:])
     args = parse_args(argv)
     if args.vision and args.drivetrain not in VISION_DRIVETRAINS:
         print(f"python -m drivekin: error: --vision is simulated for "
