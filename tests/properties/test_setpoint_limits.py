@@ -49,7 +49,7 @@ import math
 import random
 
 import pytest
-from hypothesis import Phase, given, settings
+from hypothesis import Phase, example, given, settings
 from hypothesis import strategies as st
 
 import drivekin as dk
@@ -592,12 +592,20 @@ def test_pinned_a_nearly_parallel_step_near_the_top_speed():
 # (c) and (d): held targets are reached
 
 
-def reach(gen, robot, prev, desired, dt, volts, check, target, max_steps=1500):
+# Robot time a held target may take. The slowest draw (2 modules, 75 kg, 30 A, a NEO on
+# 12.5 V, where only 0.5 V / R = 4.4 A is left above the torque loss near the top speed)
+# needs at most about 33 s if it never had more; over 1,500 draws the longest took 14.8 s
+# (2,827 steps of 5 ms). A budget in steps would fail the slow robots at small dt.
+REACH_SECONDS = 60.0
+
+
+def reach(gen, robot, prev, desired, dt, volts, check, target):
     """Hold ``desired`` until the output equals ``target`` (chassis velocities, and the
     module velocity vectors their IK) within 1e-9, then 20 steps more; returns the last
     output."""
     want = ik(robot, *target)
     settled = 0
+    max_steps = math.ceil(REACH_SECONDS / dt)
     for k in range(max_steps):
         out = step(gen, prev, desired, dt, volts, None)
         check.check(prev, out, desired, dt, volts, None)
@@ -667,6 +675,14 @@ def target_of(robot, desired, dt, volts):
 
 @settings(max_examples=40, **HEAVY)
 @given(robots(), held_targets(), st.floats(-math.pi, math.pi))
+# a heavy 2-module robot on a 30 A limit accelerates at 0.42 m/s^2: 11.5 s to its top speed
+@example(Robot(offsets=[(-0.012596201446777255, -0.5206352638988522),
+                        (0.2944839766201589, 0.4040781948014242)],
+               mass=73.0189977458615, moi=2.0, radius=0.042802804630485865,
+               vmax=4.785897086056344, cof=1.5583583095376965, motor="getKrakenX60Foc",
+               gearing=5.229634114967105, ilim=30.0, nmotors=1, max_steer=26.524683283336415),
+         (0.0625, 2.438139872665743, 5.3935485498036924e-46, True, 13.941289375920084, 0.005),
+         0.0625)
 def test_a_held_target_is_reached(robot, t, angle):
     desired = scaled_target(robot, t)
     volts, dt = t[4], t[5]
