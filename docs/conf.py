@@ -42,10 +42,15 @@ html_title = f"drivekin {release}"
 autoapi_type = "python"
 autoapi_dirs = [str(ROOT / "src" / "drivekin")]
 autoapi_file_patterns = ["*.pyi", "*.py"]
-# Private packages and the programs (documented by their --help) are not API.
-autoapi_ignore = ["*/_core/*", "*/app/*", "*/__main__.py"]
+# Private packages and the programs (documented by their --help) are not API, except the
+# private modules whose names a public module re-exports (drivekin.choreo's samples and
+# report, the sampler its trajectory inherits from; drivekin.replay.listing): autoapi reads
+# those so the names are documented under the public module, with no page of their own.
+REEXPORTED = {"choreokernel.pyi", "choreocheck.py", "listing.py"}
+autoapi_ignore = [str(p) for p in sorted((ROOT / "src" / "drivekin" / "_core").iterdir())
+                  if p.name not in REEXPORTED] + ["*/app/*", "*/__main__.py"]
 autoapi_options = ["members", "undoc-members", "inherited-members", "show-inheritance",
-                   "show-module-summary", "special-members"]
+                   "show-module-summary", "special-members", "imported-members"]
 autoapi_member_order = "groupwise"
 autoapi_keep_files = True     # docs/api/ (ignored by git): to read what was generated
 autoapi_root = "api"
@@ -172,7 +177,36 @@ def _robotpy_spellings(app, what, name, obj, skip, options):
     return None
 
 
+def _stubs_for_astroid():
+    """autoapi finds a class's inherited members through astroid, which resolves a base
+    imported from a compiled module to the extension (or nothing) and cannot read it:
+    give it the stub of each re-exported compiled module (ChoreoTrajectory's sampling
+    methods are ChoreoSampler's)."""
+    import astroid
+
+    for name in REEXPORTED:
+        stub = ROOT / "src" / "drivekin" / "_core" / name
+        if stub.suffix == ".pyi":
+            module = f"drivekin._core.{stub.stem}"
+            astroid.MANAGER.astroid_cache[module] = astroid.MANAGER.ast_from_file(
+                str(stub), module, source=True)
+
+
+def _private_and_reexported(app, what, name, obj, skip, options):
+    """autoapi-skip-member: no page for a private module (only REEXPORTED ones are read);
+    a name a module imports is documented where it is defined, unless that is private
+    (drivekin.choreo's SwerveSample is documented there)."""
+    if what == "module" and any(part.startswith("_") for part in name.split(".")):
+        return True
+    original = obj.obj.get("original_path")
+    if original is not None and not any(p.startswith("_") for p in original.split(".")):
+        return True
+    return None
+
+
 def setup(app):
+    _stubs_for_astroid()         # here, not at import: the tests run this file without astroid
+    app.connect("autoapi-skip-member", _private_and_reexported)
     app.connect("autoapi-skip-member", _robotpy_spellings)
     app.connect("source-read", _site_links)
     app.connect("include-read", lambda app, path, parent, content: _site_links(app, parent, content))

@@ -1,10 +1,13 @@
 """The docs site's API reference names robotpy 2027's spellings (docs/conf.py): what it
 reads from the stubs' text is what drivekin installs at import (drivekin._core.pynames),
 its autoapi hook hides the aliases and labels their Java members, and every robotpy class
-name is named in the entry of the class it builds."""
+name is named in the entry of the class it builds. What public modules export from
+private ones is documented under the public module, and each imported name only once."""
 from __future__ import annotations
 
+import importlib
 import pathlib
+import pkgutil
 import runpy
 
 import pytest
@@ -81,3 +84,34 @@ def test_every_robotpy_class_name_is_in_its_class_entry(conf):
         first, line, rest = entry.docstring.split("\n\n")
         assert (first, rest) == ("First paragraph.", "More.\n")
         assert f"``{name}``" in line, (name, line)
+
+
+def test_what_a_public_module_exports_from_a_private_one_is_read_by_the_docs(conf):
+    """The site reads no private module but those in REEXPORTED: a name in a public
+    module's ``__all__`` defined in one of the others would have no entry at all."""
+    read = {f"drivekin._core.{name.rsplit('.', 1)[0]}" for name in conf["REEXPORTED"]}
+    homes = {}
+    for info in pkgutil.iter_modules(drivekin.__path__):
+        if info.name.startswith("_") or info.name == "app":
+            continue
+        module = importlib.import_module(f"drivekin.{info.name}")
+        for name in getattr(module, "__all__", ()):
+            home = getattr(getattr(module, name), "__module__", "")
+            if home.startswith("drivekin._core"):
+                homes[f"drivekin.{info.name}.{name}"] = home
+    assert "drivekin.choreo.SwerveSample" in homes
+    assert {name: home for name, home in homes.items() if home not in read} == {}
+
+
+@pytest.mark.parametrize("what, name, original, skipped", [
+    ("module", "drivekin._core.choreokernel", None, True),
+    ("module", "drivekin.choreo", None, None),
+    ("class", "drivekin.choreo.SwerveSample", "drivekin._core.choreokernel.SwerveSample", None),
+    ("class", "drivekin.choreo.Pose2d", "drivekin.geometry.Pose2d", True),
+    ("class", "drivekin.Pose2d", "drivekin.geometry.Pose2d", True),
+])
+def test_imported_names_are_documented_once(conf, what, name, original, skipped):
+    entry = _Documented("Text.\n")
+    if original:
+        entry.obj["original_path"] = original
+    assert conf["_private_and_reexported"](None, what, name, entry, False, []) is skipped

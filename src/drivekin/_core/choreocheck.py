@@ -35,8 +35,8 @@ class FeasibilityRecord(NamedTuple):
     """One comparison: at sample time ``time`` (s), ``module`` (index in the config's
     module order, −1 for the whole robot), ``quantity`` (one of :data:`QUANTITIES`, or
     ``columnShift`` among warnings) had ``value`` against ``limit`` (SI units: m/s, N·m,
-    A, N, rad/s; ``moduleOrder``: the torque-balance residual |Σ rᵢ×Fᵢ − J·α| in N·m
-    against what rounding explains plus 1e-4 of Σ|rᵢ||Fᵢ| + J·|α| and 1e-3 N·m)."""
+    A, N, rad/s; ``moduleOrder``: the torque-balance residual ``|Σ rᵢ×Fᵢ − J·α|`` in
+    N·m against what rounding explains plus 1e-4 of ``Σ|rᵢ||Fᵢ| + J·|α|`` and 1e-3 N·m)."""
     time: float
     module: int
     quantity: str
