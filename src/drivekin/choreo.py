@@ -60,7 +60,8 @@ import numpy as np
 
 from drivekin._core import choreocheck as _choreocheck
 from drivekin._core.choreocheck import FeasibilityRecord, FeasibilityReport
-from drivekin._core.choreokernel import ChoreoSampler, DifferentialSample, SwerveSample
+from drivekin._core.choreokernel import (FIELD_SIZE, ChoreoSampler, DifferentialSample,
+                                         SwerveSample)
 from drivekin._core.metadata import depth
 from drivekin.geometry import Pose2d, Rotation2d, Translation2d
 from drivekin.motor import DCMotor
@@ -283,7 +284,7 @@ def _config(r: _Reader, raw: Any, kind: str) -> RobotConfig | None:
         kraken = DCMotor.getKrakenX60()
         motor = DCMotor(kraken.nominalVoltage, kraken.stallTorque, kraken.stallCurrent,
                         kraken.freeCurrent, vmax / FREE_SPEED_FRACTION,
-                        math.floor(tmax / 7.09) + 1)
+                        math.floor(tmax / kraken.stallTorque) + 1)
         limit = tmax / motor.Kt
         module = ModuleConfig(radius, radius * vmax / gearing, cof,
                               motor.withReduction(gearing), limit)
@@ -394,9 +395,8 @@ class ChoreoTrajectory(ChoreoSampler):
     def _pose(self, k: int, flip: bool) -> Pose2d:
         x, y, heading = (float(v) for v in self._samples[k, 1:4])
         if flip:
-            x, y, heading = FIELD_LENGTH - x, FIELD_WIDTH - y, math.pi + heading
+            x, y, heading = FIELD_SIZE[0] - x, FIELD_SIZE[1] - y, math.pi + heading
         return Pose2d(x, y, Rotation2d(heading))
-
 
     # -- Feasibility and feedforward (drivekin._core.choreocheck) --------------------------
 
@@ -412,10 +412,10 @@ class ChoreoTrajectory(ChoreoSampler):
         skipped); and, per sample, the torque balance Σ rᵢ×Fᵢ = J·α with the forces on
         the modules in ``moduleOrder`` (the embedded config's MOI and positions). The
         config's modules are matched to the force columns by position (one per corner).
-        Comparisons allow the file's 5-decimal rounding. Returns a :class:`FeasibilityReport`; ValueError
-        for a bad ``voltage`` or ``maxSteerVelocity``, a config whose modules do not sit
-        one on each corner, or no config at all; TypeError for a config that is not a
-        RobotConfig."""
+        Comparisons allow the file's 5-decimal rounding. Returns a
+        :class:`FeasibilityReport`; ValueError for a bad ``voltage`` or
+        ``maxSteerVelocity``, a config whose modules do not sit one on each corner, or no
+        config at all; TypeError for a config that is not a RobotConfig."""
         config = self._require_config(config)
         return _choreocheck.check(self._samples, self._kind, config,
                                   self._config if self._config is not None else config,
@@ -440,9 +440,6 @@ class ChoreoTrajectory(ChoreoSampler):
             raise TypeError(f"config must be a drivekin RobotConfig or None, got "
                             f"{type(config).__name__}")
         return config
-
-FIELD_LENGTH = 16.541          # m, choreolib's 2026 field (util/field_dimensions.py)
-FIELD_WIDTH = 8.0692
 
 
 def load(path: str | os.PathLike[str]) -> ChoreoTrajectory:

@@ -30,6 +30,8 @@ from typing_extensions import disjoint_base
 from drivekin.chassis import ChassisVelocities
 from drivekin.geometry import Pose2d
 
+FIELD_SIZE: tuple[float, float]
+
 @disjoint_base
 class _ChoreoSample:
     """A trajectory's state at one time (choreolib's sample fields)."""

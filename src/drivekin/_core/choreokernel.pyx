@@ -35,10 +35,12 @@ cdef enum:
     # for hours), so the sample is refused instead.
     MAX_RKDP_STEPS = 100000
 
-# choreolib's 2026 field (choreo/util/field_dimensions.py) and math.pi.
-cdef double FIELD_LENGTH = 16.541
-cdef double FIELD_WIDTH = 8.0692
-cdef double PI = 3.141592653589793
+#: choreolib's 2026 field, length and width in m (choreo/util/field_dimensions.py): the
+#: red alliance's flip rotates about its centre.
+FIELD_SIZE = (16.541, 8.0692)
+cdef double FIELD_LENGTH = FIELD_SIZE[0]
+cdef double FIELD_WIDTH = FIELD_SIZE[1]
+cdef double PI = 3.141592653589793      # math.pi
 cdef double RKDP_MAX_ERROR = 1e-6
 
 
