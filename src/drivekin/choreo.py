@@ -199,14 +199,26 @@ def _samples(r: _Reader, raw: Any, kind: str) -> np.ndarray:
                                       f"finite number, got {v!r:.40}")
                     row[j + i] = v
         out[k] = row
-    t = out[:, 0]
+    problem = _rows_problem(out)
+    if problem:
+        raise r.error(problem)
+    out.flags.writeable = False
+    return out
+
+
+def _rows_problem(rows: np.ndarray) -> str | None:
+    """What makes a float64 sample array (n, w) no trajectory: a value that is not finite,
+    or sample times that do not increase (sampling's binary search needs them sorted)."""
+    bad = np.flatnonzero(~np.isfinite(rows).all(axis=1))
+    if bad.size:
+        return f"samples[{int(bad[0])}] holds a value that is not finite"
+    t = rows[:, 0]
     bad = np.flatnonzero(np.diff(t) <= 0.0)
     if bad.size:
         k = int(bad[0]) + 1
-        raise r.error(f"sample times must increase: samples[{k}].t = {t[k]!r} after "
-                      f"{t[k - 1]!r}")
-    out.flags.writeable = False
-    return out
+        return (f"sample times must increase: samples[{k}].t = {float(t[k])!r} after "
+                f"{float(t[k - 1])!r}")
+    return None
 
 
 def _splits(r: _Reader, raw: Any, n: int) -> tuple[int, ...]:
@@ -323,7 +335,11 @@ class ChoreoTrajectory(ChoreoSampler):
             raise ValueError(f"kind must be 'swerve' or 'differential', got {kind!r}")
         self._name = name
         self._kind = kind
-        self._samples = self._bind(samples, kind == "swerve")
+        rows = self._bind(samples, kind == "swerve")
+        problem = _rows_problem(rows)
+        if problem:
+            raise ValueError(problem)
+        self._samples = rows
         self._events = events
         self._splits = splits
         self._config = config
@@ -332,6 +348,10 @@ class ChoreoTrajectory(ChoreoSampler):
     def __repr__(self) -> str:
         return (f"ChoreoTrajectory({self._name!r}, {self._kind}, {len(self._samples)} "
                 f"samples, {self.totalTime:g} s)")
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (ChoreoTrajectory, (self._name, self._kind, self._samples,
+                                   self._events, self._splits, self._config, self._path))
 
     @property
     def name(self) -> str:

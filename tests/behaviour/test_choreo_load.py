@@ -7,10 +7,11 @@ and the chosen drive motor's low-speed wheel torque ``min(stallTorque,
 getTorque(limit))`` equals Choreo's ``tmax · gearing``, its free speed vmax / 0.8;
 ``samples`` is read-only and ``times``/``columns``/``moduleOrder``/``totalTime`` agree
 with the file; events are kept and dropped as choreolib's ``load_event_marker`` keeps and
-drops them."""
+drops them. Trajectories and samples pickle to equal values."""
 from __future__ import annotations
 
 import json
+import pickle
 
 import numpy as np
 import pytest
@@ -89,3 +90,23 @@ def test_events_follow_choreolib(tmp_path):
     want = [(m.timestamp, m.event) for m in map(load_event_marker, EVENTS) if m is not None]
     assert traj.events == want == [(1.25, "kept"), (0.0, "shifted"), (2.0, "last")]
     assert traj.splits == (0,)                 # choreolib puts 0 first when it is missing
+
+
+@pytest.mark.parametrize("path", params(CURRENT))
+def test_a_trajectory_and_its_samples_pickle(path):
+    traj = choreo.load(path)
+    back = pickle.loads(pickle.dumps(traj))
+    assert type(back) is choreo.ChoreoTrajectory
+    assert np.array_equal(back.samples, traj.samples) and not back.samples.flags.writeable
+    assert (back.name, back.kind, back.events, back.splits) == (
+        traj.name, traj.kind, traj.events, traj.splits)
+    if traj.config is not None:
+        assert back.check().margins == traj.check().margins
+    t = 0.37 * traj.totalTime
+    assert np.array_equal(back.sampleAtMany([t], True), traj.sampleAtMany([t], True))
+    sample = traj.sampleAt(t, True)
+    copy = pickle.loads(pickle.dumps(sample))
+    assert type(copy) is type(sample)
+    assert repr(copy) == repr(sample) and copy.getPose() == sample.getPose()
+    fields = ("alpha", "fx", "fy") if traj.kind == "swerve" else ("alpha", "fl", "fr")
+    assert all(getattr(copy, f) == getattr(sample, f) for f in fields)

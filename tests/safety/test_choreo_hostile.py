@@ -3,7 +3,8 @@ with a one-line ChoreoError (a ValueError) naming the file and the fault, in bou
 time and memory; nothing crashes, recurses without bound or raises another exception.
 Sampling a trajectory whose values no robot has (the differential integrator's step
 shrinking towards zero) is refused too, in bounded time, and a sampling call that fails
-leaves ``sampleInto``'s output untouched."""
+leaves ``sampleInto``'s output untouched. Forged pickles of samples and trajectories are
+refused before anything is built."""
 from __future__ import annotations
 
 import copy
@@ -15,6 +16,7 @@ import tracemalloc
 import pytest
 
 from drivekin import choreo
+from drivekin._core import choreokernel
 
 
 def _swerve_sample(t, x=0.0):
@@ -216,3 +218,30 @@ def test_the_densest_file_under_the_cap_stays_in_bounded_memory(tmp_path, monkey
     finally:
         tracemalloc.stop()
     assert peak < 12 * choreo.MAX_BYTES
+
+
+@pytest.mark.parametrize("swerve, values, error", [
+    (True, (1.0,) * 12, ValueError),           # a differential's width for a swerve sample
+    (False, [0.5] * 12, ValueError),           # a list, not the tuple a pickle holds
+    (True, ("0.5",) * 18, TypeError),
+    (False, (None,) * 12, TypeError),
+    (True, None, ValueError),
+])
+def test_a_forged_pickled_sample_is_refused(swerve, values, error):
+    with pytest.raises(error):
+        choreokernel._sample_from_values(swerve, values)
+
+
+@pytest.mark.parametrize("damage, message", [
+    (lambda rows: rows.__setitem__((2, 5), math.nan), "not finite"),
+    (lambda rows: rows.__setitem__((1, 0), math.inf), "not finite"),
+    (lambda rows: rows.__setitem__((2, 0), rows[0, 0]), "times must increase"),
+])
+def test_a_forged_pickled_trajectory_is_refused(tmp_path, damage, message):
+    path = tmp_path / "valid.traj"
+    path.write_bytes(_valid_text())
+    func, args = choreo.load(path).__reduce__()
+    rows = args[2].copy()
+    damage(rows)
+    with pytest.raises(ValueError, match=message):
+        func(*args[:2], rows, *args[3:])

@@ -16,6 +16,8 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from drivekin._core import fieldchecks
+
 QUANTITIES = ("moduleSpeed", "driveTorque", "current", "friction", "steerRate",
               "moduleOrder")
 ROUNDING = 5e-6          # half a unit in the 5th decimal, Choreo's rounding of every value
@@ -179,14 +181,10 @@ def check(samples: np.ndarray, kind: str, config: Any, planned: Any, *,
           maxSteerVelocity: float | None = None, voltage: float = 12.0) -> FeasibilityReport:
     """The report of ``samples`` against ``config``; the torque balance uses ``planned``
     (the config the trajectory was planned with: its MOI and module positions)."""
-    if not (isinstance(voltage, (int, float)) and not isinstance(voltage, bool)
-            and 0.0 < voltage <= 1000.0):
-        raise ValueError(f"voltage must be a number of volts in (0, 1000], got {voltage!r:.40}")
-    if maxSteerVelocity is not None and not (
-            isinstance(maxSteerVelocity, (int, float)) and not isinstance(maxSteerVelocity, bool)
-            and 0.0 < maxSteerVelocity < math.inf):
-        raise ValueError(f"maxSteerVelocity must be a positive finite number of rad/s or "
-                         f"None, got {maxSteerVelocity!r:.40}")
+    fieldchecks.positive(False)("voltage (V)", voltage)
+    if voltage > 1000.0:
+        raise ValueError(f"voltage (V) must be at most 1000, got {voltage!r}")
+    fieldchecks.positive(True)("maxSteerVelocity (rad/s)", maxSteerVelocity)
     m = _Modules(samples, kind, config)
     mc = config.moduleConfig
     motor = mc.driveMotor
@@ -257,13 +255,14 @@ def _balance(s: np.ndarray, kind: str, planned: Any,
         return residual, tol + BALANCE * moment + BALANCE_FLOOR
     _differential_columns(loc)
     half = 0.5 * _track(loc)
+    shifted = _shifted(s, loc)
     fl, fr, alpha = s[:, 10], s[:, 11], s[:, 9]
-    if _shifted(s, loc):
+    if shifted:
         fl, fr, alpha = s[:, 9], s[:, 10], (s[:, 8] - s[:, 7]) / (2 * half)
     residual = (fr - fl) * half - J * alpha
     tol = (2 * half * ROUNDING + J * ROUNDING * (1 + 1 / half) + BALANCE_FLOOR
            + BALANCE * (half * (np.abs(fl) + np.abs(fr)) + J * np.abs(alpha)))
-    if _shifted(s, loc):
+    if shifted:
         written = (s[:, 11] - s[:, 10]) * half - J * s[:, 9]
         warnings.append(FeasibilityRecord(float(s[0, 0]), -1, "columnShift",
                                           float(np.max(np.abs(written))), tol))

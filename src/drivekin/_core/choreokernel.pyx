@@ -14,7 +14,7 @@ ChoreoSampler is the base class of drivekin.choreo.ChoreoTrajectory: it owns a C
 read-only copy of the samples, and every method reads only that copy."""
 
 cimport cython
-from libc.math cimport cos, pow, sin, sqrt
+from libc.math cimport M_PI, cos, pow, sin, sqrt
 from libc.string cimport memcpy
 
 import numpy as np
@@ -40,7 +40,6 @@ cdef enum:
 FIELD_SIZE = (16.541, 8.0692)
 cdef double FIELD_LENGTH = FIELD_SIZE[0]
 cdef double FIELD_WIDTH = FIELD_SIZE[1]
-cdef double PI = 3.141592653589793      # math.pi
 cdef double RKDP_MAX_ERROR = 1e-6
 
 
@@ -212,7 +211,7 @@ cdef int sample(const double* d, Py_ssize_t n, Py_ssize_t w, double t, bint flip
         # robot and keep their sign; swerve's field-frame vectors and forces turn over.
         out[1] = FIELD_LENGTH - out[1]
         out[2] = FIELD_WIDTH - out[2]
-        out[3] = PI + out[3]
+        out[3] = M_PI + out[3]
         if w == SWERVE_WIDTH:
             out[4] = -out[4]
             out[5] = -out[5]
@@ -267,6 +266,11 @@ cdef class _ChoreoSample:
     def alpha(self):
         """Angular acceleration, rad/s²."""
         return self.v[9]
+
+    def __reduce__(self):
+        cdef bint swerve = type(self) is SwerveSample
+        cdef Py_ssize_t i, w = SWERVE_WIDTH if swerve else DIFFERENTIAL_WIDTH
+        return _sample_from_values, (swerve, tuple([self.v[i] for i in range(w)]))
 
     def getPose(self):
         """The pose (x, y, heading) as a drivekin Pose2d."""
@@ -378,6 +382,24 @@ cdef class DifferentialSample(_ChoreoSample):
         return (f"DifferentialSample(t={self.v[0]!r}, x={self.v[1]!r}, y={self.v[2]!r}, "
                 f"heading={self.v[3]!r}, vl={self.v[4]!r}, vr={self.v[5]!r}, "
                 f"omega={self.v[6]!r})")
+
+
+def _sample_from_values(bint swerve, values):
+    """The sample a pickle holds: a SwerveSample (18 floats) or DifferentialSample (12) in
+    the trajectory's column order."""
+    cdef Py_ssize_t i, w = SWERVE_WIDTH if swerve else DIFFERENTIAL_WIDTH
+    cdef double buf[SWERVE_WIDTH]
+    if type(values) is not tuple or len(<tuple>values) != w:
+        got = (f"{len(<tuple>values)} values" if type(values) is tuple
+               else type(values).__name__)
+        raise ValueError(f"a pickled {'Swerve' if swerve else 'Differential'}Sample holds a "
+                         f"tuple of {w} floats, got {got}")
+    for i in range(w):
+        buf[i] = (<tuple>values)[i]
+    cdef _ChoreoSample s = (SwerveSample.__new__(SwerveSample) if swerve
+                            else DifferentialSample.__new__(DifferentialSample))
+    memcpy(s.v, buf, w * sizeof(double))
+    return s
 
 
 cdef class ChoreoSampler:

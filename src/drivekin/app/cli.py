@@ -1,8 +1,9 @@
 """``python -m drivekin``: the entry point. ``python -m drivekin replay ...`` goes to the
 replay's command line (:mod:`drivekin.app.replay_cli`), ``python -m drivekin calibrate
 ...`` to the calibration's (:mod:`drivekin.app.calibrate_cli`), ``python -m drivekin
-choreo check ...`` to the Choreo trajectory check's (:mod:`drivekin.app.choreo_cli`); anything else is the command line
-of the drivetrain demo in :mod:`drivekin.app.demo`, which this module holds.
+choreo check ...`` to the Choreo trajectory check's (:mod:`drivekin.app.choreo_cli`);
+anything else is the command line of the drivetrain demo in :mod:`drivekin.app.demo`,
+which this module holds.
 
 This module only parses and validates the demo's arguments and prints its reports; the
 simulation and the measurements live in :mod:`drivekin.app.demo`.
